@@ -1,0 +1,246 @@
+// Exact expected pixels of vtkImageMLAA on small synthetic images: a straight step edge, the
+// L, U and Z patterns of the GPU Pro 2 chapter, a line longer than the search distance, and
+// one-pixel-wide images. The expected blending weights were worked out by hand from sections
+// 4.3.1-4.3.3 (search, crossing edges, areas); see the comments at each case.
+#include "vtkMLAATestUtilities.h"
+
+#include <vector>
+
+using namespace vtkMLAATest;
+
+namespace
+{
+const double White = 255.0;
+
+// Round a weight to the 8 bits it is stored with, as 0..255.
+int Q(double area)
+{
+  return static_cast<int>(std::lround(255.0 * area));
+}
+
+// Area of an L shape for the p-th pixel from its crossing edge on a line of `length` pixels.
+double LArea(int p, int length)
+{
+  if (2 * p + 2 <= length)
+  {
+    return 0.5 * (1.0 - (2.0 * p + 1.0) / length);
+  }
+  return (2 * p + 1 == length) ? 1.0 / (8.0 * length) : 0.0;
+}
+
+vtkSmartPointer<vtkImageData> Grey(int w, int h, const std::function<bool(int, int)>& white)
+{
+  auto image = MakeImage(w, h, 1);
+  FillImage(image, [&](int x, int y, int, int) { return white(x, y) ? White : 0.0; });
+  return image;
+}
+
+vtkSmartPointer<vtkImageData> Weights(vtkImageData* input, int searchSteps = 8)
+{
+  vtkNew<vtkMLAAOptions> options;
+  options->SetDebugOutputToBlendingWeights();
+  options->SetMaxSearchSteps(searchSteps);
+  return RunMLAA(input, options);
+}
+
+// Every pixel other than the listed ones is unchanged.
+bool OthersUnchanged(vtkImageData* in, vtkImageData* out, const std::vector<std::pair<int, int>>& changed)
+{
+  int dims[3];
+  in->GetDimensions(dims);
+  for (int y = 0; y < dims[1]; ++y)
+  {
+    for (int x = 0; x < dims[0]; ++x)
+    {
+      if (std::find(changed.begin(), changed.end(), std::make_pair(x, y)) != changed.end())
+      {
+        continue;
+      }
+      if (GetValue(in, x, y) != GetValue(out, x, y))
+      {
+        std::cerr << "pixel (" << x << ", " << y << ") changed from " << GetValue(in, x, y)
+                  << " to " << GetValue(out, x, y) << std::endl;
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+void StraightEdges()
+{
+  // A vertical and a horizontal edge across the whole image: no crossing edges, no pattern,
+  // nothing to blend (MLAA never blurs straight edges).
+  for (auto white : { std::function<bool(int, int)>([](int x, int) { return x >= 5; }),
+         std::function<bool(int, int)>([](int, int y) { return y >= 3; }) })
+  {
+    auto in = Grey(11, 7, white);
+    auto out = RunMLAA(in);
+    MLAA_CHECK(Compare(in, out).Count == 0);
+  }
+}
+
+void LShape()
+{
+  // The corner of a white rectangle (x >= 6, y >= 4) in a 16 x 8 black image. The bottom side
+  // is a line of top edgels on row 3 that starts at x = 6 with a crossing edge on the white
+  // side (code 1 seen from row 3) and runs into the right border (no crossing edge, distance
+  // clamped to 16). Pixel (6 + p, 4) is p from the crossing edge on a line of p + 17, so it takes
+  // the black below it with the L area 1/2 (1 - (2p + 1)/(p + 17)). The left side is the same
+  // by symmetry. Black pixels stay black: the areas fall on the white side.
+  auto in = Grey(16, 8, [](int x, int y) { return x >= 6 && y >= 4; });
+  auto weights = Weights(in);
+  MLAA_CHECK(GetValue(weights, 6, 3, 1) == Q(8.0 / 17.0)); // 120
+  MLAA_CHECK(GetValue(weights, 6, 3, 0) == 0.0);
+  MLAA_CHECK(GetValue(weights, 6, 4, 2) == Q(8.0 / 17.0));
+  MLAA_CHECK(GetValue(weights, 6, 4, 3) == 0.0);
+
+  auto out = RunMLAA(in);
+  std::vector<std::pair<int, int>> changed;
+  // The corner pixel takes black from below and from the left with equal weights.
+  MLAA_CHECK(GetValue(out, 6, 4) == White - Q(8.0 / 17.0)); // 135
+  changed.emplace_back(6, 4);
+  for (int p = 1; p <= 9; ++p)
+  {
+    const double expected = White - Q(LArea(p, p + 17));
+    MLAA_CHECK(GetValue(weights, 6 + p, 3, 1) == Q(LArea(p, p + 17)));
+    MLAA_CHECK(GetValue(out, 6 + p, 4) == expected);
+    changed.emplace_back(6 + p, 4);
+  }
+  // The left side, column 6 from row 5 up to the top border (p = 1..3), by symmetry.
+  for (int p = 1; p <= 3; ++p)
+  {
+    MLAA_CHECK(GetValue(weights, 6, 4 + p, 2) == Q(LArea(p, p + 17)));
+    MLAA_CHECK(GetValue(out, 6, 4 + p) == White - Q(LArea(p, p + 17)));
+    changed.emplace_back(6, 4 + p);
+  }
+  MLAA_CHECK(OthersUnchanged(in, out, changed));
+}
+
+void UShape()
+{
+  // A white bar of 4 x 1 pixels (x = 4..7, y = 2) on black. Above and below it, lines of
+  // 4 edgels end in crossing edges on the bar's side at both ends: U shapes. Areas 3/8 at the
+  // ends, 1/8 inside (L = 4). The bar's left and right edgels are lines of 1 with crossing
+  // edges on the bar's side at both ends: area 1/4. Only the bar darkens.
+  auto in = Grey(12, 6, [](int x, int y) { return y == 2 && x >= 4 && x <= 7; });
+  auto weights = Weights(in);
+  // Lower line (top edgels of row 1): the bar is the opposite side (green).
+  MLAA_CHECK(GetValue(weights, 4, 1, 1) == Q(3.0 / 8.0));
+  MLAA_CHECK(GetValue(weights, 5, 1, 1) == Q(1.0 / 8.0));
+  MLAA_CHECK(GetValue(weights, 6, 1, 1) == Q(1.0 / 8.0));
+  MLAA_CHECK(GetValue(weights, 7, 1, 1) == Q(3.0 / 8.0));
+  // Upper line (top edgels of row 2): the bar owns them (red).
+  MLAA_CHECK(GetValue(weights, 4, 2, 0) == Q(3.0 / 8.0));
+  MLAA_CHECK(GetValue(weights, 5, 2, 0) == Q(1.0 / 8.0));
+  MLAA_CHECK(GetValue(weights, 7, 2, 0) == Q(3.0 / 8.0));
+  // Left side: owned by the bar (blue); right side: owned by the black pixel (8, 2), so the
+  // bar's pixel (7, 2) gets the opposite weight (alpha).
+  MLAA_CHECK(GetValue(weights, 4, 2, 2) == Q(1.0 / 4.0));
+  MLAA_CHECK(GetValue(weights, 8, 2, 3) == Q(1.0 / 4.0));
+  MLAA_CHECK(GetValue(weights, 8, 2, 2) == 0.0);
+
+  auto out = RunMLAA(in);
+  // End pixels: weights 96, 96 (above, below) and 64 (side); c' = 255 sum a(1 - a) / sum a,
+  // which is 42752 / 256 = 167 exactly.
+  MLAA_CHECK(GetValue(out, 4, 2) == 167.0);
+  MLAA_CHECK(GetValue(out, 7, 2) == 167.0);
+  // Inner pixels: 32 above and below: 255 - 32.
+  MLAA_CHECK(GetValue(out, 5, 2) == 223.0);
+  MLAA_CHECK(GetValue(out, 6, 2) == 223.0);
+  MLAA_CHECK(OthersUnchanged(in, out, { { 4, 2 }, { 5, 2 }, { 6, 2 }, { 7, 2 } }));
+}
+
+void ZShape()
+{
+  // A staircase: white below height h(x) = 2, 3, 4 for x < 4, 4 <= x < 8, x >= 8. The middle
+  // step (top edgels of row 2, x = 4..7) has a crossing edge on its own (white, lower) side at
+  // the left end and on the opposite side at the right end: a Z. Its pixels get 3/8, 1/8 on the
+  // white side and 1/8, 3/8 on the black side. The one-pixel risers are Z shapes of length 1:
+  // 1/8 on each side.
+  auto in = Grey(12, 6, [](int x, int y) { return y < (x < 4 ? 2 : (x < 8 ? 3 : 4)); });
+  auto weights = Weights(in);
+  MLAA_CHECK(GetValue(weights, 4, 2, 0) == Q(3.0 / 8.0));
+  MLAA_CHECK(GetValue(weights, 5, 2, 0) == Q(1.0 / 8.0));
+  MLAA_CHECK(GetValue(weights, 6, 2, 0) == 0.0);
+  MLAA_CHECK(GetValue(weights, 6, 2, 1) == Q(1.0 / 8.0));
+  MLAA_CHECK(GetValue(weights, 7, 2, 1) == Q(3.0 / 8.0));
+  MLAA_CHECK(GetValue(weights, 4, 2, 2) == Q(1.0 / 8.0));
+  MLAA_CHECK(GetValue(weights, 4, 2, 3) == Q(1.0 / 8.0));
+  MLAA_CHECK(GetValue(weights, 8, 3, 2) == Q(1.0 / 8.0));
+  MLAA_CHECK(GetValue(weights, 8, 3, 3) == Q(1.0 / 8.0));
+  // The outer steps run into the border: L shapes of 17 + p pixels.
+  MLAA_CHECK(GetValue(weights, 3, 1, 1) == Q(LArea(0, 17)));
+  MLAA_CHECK(GetValue(weights, 2, 1, 1) == Q(LArea(1, 18)));
+  MLAA_CHECK(GetValue(weights, 8, 3, 0) == Q(LArea(0, 17)));
+  MLAA_CHECK(GetValue(weights, 9, 3, 0) == Q(LArea(1, 18)));
+
+  auto out = RunMLAA(in);
+  // (3, 2) is black: it takes white from below (120/255) and from the right (32/255):
+  // 255 (a1^2 + a2^2) / (a1 + a2) = (120^2 + 32^2) / 152 = 101.47.
+  MLAA_CHECK(GetValue(out, 3, 2) == 101.0);
+  // (5, 2) is white and takes black from above only: 255 - 32.
+  MLAA_CHECK(GetValue(out, 5, 2) == 223.0);
+  // (6, 3) is black and takes white from below only: 32.
+  MLAA_CHECK(GetValue(out, 6, 3) == 32.0);
+}
+
+void LongLine(int searchSteps)
+{
+  // A single step at x = 20 in a 64 x 4 image: the line of top edgels on row 0 (x < 20) ends
+  // at x = 19 with a crossing edge on the opposite side. The search follows lines for at most
+  // 2 * steps pixels each way, so pixel 19 - k sees its left end at 2 * steps (the line runs into
+  // the border) and the crossing edge at k only while k <= 2 * steps: its area is the L area of
+  // the k-th pixel of a line of 2 * steps + k + 1. Farther pixels cannot see the crossing edge
+  // and are left alone.
+  const int reach = 2 * searchSteps;
+  auto in = Grey(64, 4, [](int x, int y) { return y <= (x < 20 ? 0 : 1); });
+  auto weights = Weights(in, searchSteps);
+  bool all = true;
+  for (int k = 0; k < 20; ++k)
+  {
+    const int expected = k <= reach ? Q(LArea(k, reach + k + 1)) : 0;
+    if (GetValue(weights, 19 - k, 0, 1) != expected || GetValue(weights, 19 - k, 0, 0) != 0.0)
+    {
+      std::cerr << "steps " << searchSteps << ", pixel " << 19 - k << ": weight "
+                << GetValue(weights, 19 - k, 0, 1) << ", expected " << expected << std::endl;
+      all = false;
+    }
+  }
+  MLAA_CHECK(all);
+}
+
+void ThinImages()
+{
+  // 1 x 1, 1 x N and N x 1 images: any edgels form lines of one pixel running into the border
+  // on both sides, so nothing is blended; the output equals the input.
+  for (auto size : { std::make_pair(1, 1), std::make_pair(1, 9), std::make_pair(9, 1),
+         std::make_pair(2, 1), std::make_pair(1, 2) })
+  {
+    auto in = MakeImage(size.first, size.second, 3);
+    FillImage(in, [](int x, int y, int, int k) { return ((x * 7 + y * 13 + k * 5) % 4) * 80.0; });
+    auto out = RunMLAA(in);
+    MLAA_CHECK(Compare(in, out).Count == 0);
+    vtkNew<vtkMLAAOptions> options;
+    options->SetDebugOutputToEdges();
+    auto edges = RunMLAA(in, options);
+    int dims[3];
+    edges->GetDimensions(dims);
+    MLAA_CHECK(dims[0] == size.first && dims[1] == size.second);
+  }
+}
+}
+
+int TestImageMLAAPatterns(int, char*[])
+{
+  StraightEdges();
+  LShape();
+  UShape();
+  ZShape();
+  for (int steps : { 1, 2, 4, 8, 16 })
+  {
+    LongLine(steps);
+  }
+  ThinImages();
+  return Result();
+}

@@ -1,0 +1,224 @@
+// Tests of vtkMLAAAreaTexture: the layout of Figure 4.2 (GPU Pro 2, section 4.3.3), mirror
+// symmetry, the trapeze formula of the topological-reconstruction paper (section 3.4) for
+// L shapes, hand-computed texels of the L, U and Z shapes, and the 8-bit image.
+#include "vtkImageData.h"
+#include "vtkMLAAAreaTexture.h"
+#include "vtkNew.h"
+
+#include <cmath>
+#include <iostream>
+
+namespace
+{
+int Failures = 0;
+
+void Expect(bool ok, const char* what, int line)
+{
+  if (!ok)
+  {
+    std::cerr << "line " << line << ": " << what << std::endl;
+    ++Failures;
+  }
+}
+#define EXPECT(cond) Expect((cond), #cond, __LINE__)
+
+bool Near(double a, double b, double tolerance = 1e-6)
+{
+  return std::abs(a - b) <= tolerance;
+}
+
+// Owning-pixel (channel 0) and opposite-pixel (channel 1) areas of one texel.
+void ExpectAreas(vtkMLAAAreaTexture* texture, int e1, int e2, int left, int right, double own,
+  double opposite, int line)
+{
+  const double a0 = texture->GetArea(e1, e2, left, right, 0);
+  const double a1 = texture->GetArea(e1, e2, left, right, 1);
+  if (!Near(a0, own) || !Near(a1, opposite))
+  {
+    std::cerr << "line " << line << ": texel e1=" << e1 << " e2=" << e2 << " left=" << left
+              << " right=" << right << " holds (" << a0 << ", " << a1 << "), expected (" << own
+              << ", " << opposite << ")" << std::endl;
+    ++Failures;
+  }
+}
+#define EXPECT_AREAS(e1, e2, l, r, own, opp) ExpectAreas(texture, e1, e2, l, r, own, opp, __LINE__)
+}
+
+int TestMLAAAreaTexture(int, char*[])
+{
+  vtkNew<vtkMLAAAreaTexture> texture;
+  vtkMLAAAreaTexture* t = texture;
+
+  // Layout: 5 x 5 cells of D x D texels, D = maximum distance + 1.
+  EXPECT(texture->GetMaxDistance() == 16);
+  EXPECT(texture->GetCellSize() == 17);
+  EXPECT(texture->GetTextureSize() == 85);
+  for (int maxDistance : { 8, 16, 32, 64, 128 })
+  {
+    texture->SetMaxDistance(maxDistance);
+    EXPECT(texture->GetTextureSize() == 5 * (maxDistance + 1));
+  }
+  texture->SetMaxDistance(8); // the chapter's 9 x 9 cells
+  const int d = texture->GetCellSize();
+  const int size = texture->GetTextureSize();
+  const float* table = texture->GetTable();
+
+  // Texel (D e1 + left, D e2 + right) of the table is what GetArea reports.
+  EXPECT(table[2 * ((d * 3 + 2) * size + (d * 1 + 5)) + 0] == texture->GetArea(1, 3, 5, 2, 0));
+  EXPECT(table[2 * ((d * 3 + 2) * size + (d * 1 + 5)) + 1] == texture->GetArea(1, 3, 5, 2, 1));
+
+  // Code 2 cannot occur: its row and column of cells are empty. No crossing edges (code 0)
+  // and crossing edges on both sides (code 4, a + junction) give no slope: nothing to blend.
+  for (int e = 0; e < 5; ++e)
+  {
+    for (int l = 0; l < d; ++l)
+    {
+      for (int r = 0; r < d; ++r)
+      {
+        for (int c = 0; c < 2; ++c)
+        {
+          EXPECT(texture->GetArea(2, e, l, r, c) == 0.0f);
+          EXPECT(texture->GetArea(e, 2, l, r, c) == 0.0f);
+          EXPECT(texture->GetArea(0, 0, l, r, c) == 0.0f);
+          EXPECT(texture->GetArea(4, 4, l, r, c) == 0.0f);
+          EXPECT(texture->GetArea(0, 4, l, r, c) == 0.0f);
+          // A + junction at one end behaves like an open end.
+          EXPECT(texture->GetArea(4, e, l, r, c) == texture->GetArea(0, e, l, r, c));
+          EXPECT(texture->GetArea(e, 4, l, r, c) == texture->GetArea(e, 0, l, r, c));
+        }
+      }
+    }
+  }
+
+  // Mirror symmetry: swapping the ends (e1, left) <-> (e2, right) mirrors the pattern, and the
+  // pixel at `left` becomes the pixel at `right`: same areas. Checked for every texel of several
+  // sizes.
+  for (int maxDistance : { 4, 8, 16, 31, 64 })
+  {
+    texture->SetMaxDistance(maxDistance);
+    const int cell = texture->GetCellSize();
+    for (int e1 = 0; e1 < 5; ++e1)
+    {
+      for (int e2 = 0; e2 < 5; ++e2)
+      {
+        for (int l = 0; l < cell; ++l)
+        {
+          for (int r = 0; r < cell; ++r)
+          {
+            for (int c = 0; c < 2; ++c)
+            {
+              EXPECT(texture->GetArea(e1, e2, l, r, c) == texture->GetArea(e2, e1, r, l, c));
+            }
+          }
+        }
+      }
+    }
+  }
+
+  // L shapes follow the trapeze formula A = 1/2 (1 - (2p + 1) / L) for every pixel p that lies
+  // wholly before the middle of the line (2 p + 2 <= L), p counted from the crossing edge; the
+  // pixel that holds the middle of an odd line gets the triangle 1/(8 L); pixels past the
+  // middle get nothing. Code 3 (crossing edge on the owning side) fills channel 0, code 1
+  // (opposite side) channel 1.
+  texture->SetMaxDistance(32);
+  for (int l = 0; l <= 32; ++l)
+  {
+    for (int r = 0; r <= 32; ++r)
+    {
+      const int length = l + r + 1;
+      double expected = 0.0;
+      if (2 * l + 2 <= length)
+      {
+        expected = 0.5 * (1.0 - (2.0 * l + 1.0) / length);
+      }
+      else if (2 * l + 1 == length)
+      {
+        expected = 1.0 / (8.0 * length);
+      }
+      // Crossing edge at the left end, p = l.
+      ExpectAreas(t, 3, 0, l, r, expected, 0.0, __LINE__);
+      ExpectAreas(t, 1, 0, l, r, 0.0, expected, __LINE__);
+      // Crossing edge at the right end: the same with p = r.
+      ExpectAreas(t, 0, 3, r, l, expected, 0.0, __LINE__);
+      ExpectAreas(t, 0, 1, r, l, 0.0, expected, __LINE__);
+      // And the double-precision function agrees with the float table.
+      double areas[2];
+      vtkMLAAAreaTexture::ComputeAreas(3, 0, l, r, areas);
+      EXPECT(Near(areas[0], expected, 1e-12) && areas[1] == 0.0);
+    }
+  }
+
+  // Hand-computed texels (D = 17).
+  texture->SetMaxDistance(16);
+  // L: crossing edge on the owning side at the left end, line of 4 pixels:
+  // the line falls from -1/2 at x = 0 to 0 at x = 2.
+  EXPECT_AREAS(3, 0, 0, 3, 3.0 / 8.0, 0.0);  // mean height over [0, 1]: 3/8
+  EXPECT_AREAS(3, 0, 1, 2, 1.0 / 8.0, 0.0);  // over [1, 2]: 1/8
+  EXPECT_AREAS(3, 0, 2, 1, 0.0, 0.0);        // past the middle
+  EXPECT_AREAS(3, 0, 2, 2, 1.0 / 40.0, 0.0); // line of 5: triangle of width 1/2, height 1/10
+  EXPECT_AREAS(1, 0, 0, 0, 0.0, 1.0 / 8.0);  // line of 1: triangle 1/2 x 1/2 / 2
+  // U: crossing edges on the owning side at both ends.
+  EXPECT_AREAS(3, 3, 0, 0, 1.0 / 4.0, 0.0);  // line of 1: two triangles of 1/8
+  EXPECT_AREAS(3, 3, 2, 2, 1.0 / 20.0, 0.0); // middle of a line of 5: two triangles of 1/40
+  EXPECT_AREAS(3, 3, 0, 4, 2.0 / 5.0, 0.0);  // first pixel of a line of 5: 1/2 (1 - 1/5)
+  EXPECT_AREAS(3, 3, 4, 0, 2.0 / 5.0, 0.0);  // last pixel, by symmetry
+  EXPECT_AREAS(1, 1, 1, 2, 0.0, 1.0 / 8.0);  // U opening the other way, line of 4, p = 1
+  // Z: owning side at the left end, opposite side at the right end: one straight line from
+  // -1/2 to +1/2, crossing the edge in the middle.
+  EXPECT_AREAS(3, 1, 0, 4, 2.0 / 5.0, 0.0);         // first pixel of 5
+  EXPECT_AREAS(3, 1, 4, 0, 0.0, 2.0 / 5.0);         // last pixel of 5: on the other side
+  EXPECT_AREAS(3, 1, 2, 2, 1.0 / 40.0, 1.0 / 40.0); // middle pixel: a triangle each side
+  EXPECT_AREAS(1, 3, 1, 1, 1.0 / 24.0, 1.0 / 24.0); // line of 3, middle: 1/(8*3) each
+  EXPECT_AREAS(3, 1, 1, 2, 1.0 / 8.0, 0.0);         // line of 4, second pixel
+  EXPECT_AREAS(3, 1, 2, 1, 0.0, 1.0 / 8.0);         // line of 4, third pixel
+
+  // Areas never exceed one half (a pixel is never more than half covered by a neighbour).
+  texture->SetMaxDistance(64);
+  const int fullSize = texture->GetTextureSize();
+  const float* fullTable = texture->GetTable();
+  for (int i = 0; i < fullSize * fullSize * 2; ++i)
+  {
+    if (!(fullTable[i] >= 0.0f && fullTable[i] <= 0.5f))
+    {
+      EXPECT(!"area within [0, 1/2]");
+      break;
+    }
+  }
+
+  // The 8-bit image: 3 components, red/green = round(255 area), blue 0; texel row t is image
+  // row size - 1 - t, so that it reads as Figure 4.2 once written to a file.
+  texture->SetMaxDistance(8);
+  vtkImageData* image = texture->GetImage();
+  int dims[3];
+  image->GetDimensions(dims);
+  EXPECT(dims[0] == 45 && dims[1] == 45 && dims[2] == 1);
+  EXPECT(image->GetScalarType() == VTK_UNSIGNED_CHAR);
+  EXPECT(image->GetNumberOfScalarComponents() == 3);
+  bool imageMatches = true;
+  for (int tRow = 0; tRow < 45; ++tRow)
+  {
+    for (int s = 0; s < 45; ++s)
+    {
+      const auto* px = static_cast<unsigned char*>(image->GetScalarPointer(s, 44 - tRow, 0));
+      const float* areas = texture->GetTable() + 2 * (tRow * 45 + s);
+      imageMatches = imageMatches && px[0] == std::lround(255.0 * areas[0]) &&
+        px[1] == std::lround(255.0 * areas[1]) && px[2] == 0;
+    }
+  }
+  EXPECT(imageMatches);
+  // A texel known by hand: L, owning side, line of 4, first pixel: 3/8 -> 96.
+  const auto* lTexel =
+    static_cast<unsigned char*>(image->GetScalarPointer(9 * 3 + 0, 44 - (9 * 0 + 3), 0));
+  EXPECT(lTexel[0] == 96 && lTexel[1] == 0);
+
+  // Tables are shared per size.
+  EXPECT(vtkMLAAAreaTexture::GetSharedTable(8) == vtkMLAAAreaTexture::GetSharedTable(8));
+  EXPECT(vtkMLAAAreaTexture::GetSharedTable(8) != vtkMLAAAreaTexture::GetSharedTable(16));
+
+  if (Failures)
+  {
+    std::cerr << Failures << " failure(s)" << std::endl;
+    return EXIT_FAILURE;
+  }
+  return EXIT_SUCCESS;
+}

@@ -1,0 +1,78 @@
+// Tests of vtkMLAAOptions: defaults, clamping, names, sharing with the filter.
+#include "vtkImageMLAA.h"
+#include "vtkMLAAOptions.h"
+#include "vtkNew.h"
+
+#include <cstring>
+#include <iostream>
+
+#define CHECK(cond)                                                                                \
+  do                                                                                               \
+  {                                                                                                \
+    if (!(cond))                                                                                   \
+    {                                                                                              \
+      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #cond << std::endl;           \
+      return EXIT_FAILURE;                                                                         \
+    }                                                                                              \
+  } while (false)
+
+int TestMLAAOptions(int, char*[])
+{
+  vtkNew<vtkMLAAOptions> options;
+  // Defaults of the chapter: luma threshold 0.1, distances up to 16 pixels.
+  CHECK(options->GetThreshold() == 0.1);
+  CHECK(options->GetEdgeDetection() == vtkMLAAOptions::LUMA);
+  CHECK(options->GetMaxSearchSteps() == 8);
+  CHECK(options->GetMaxDistance() == 16);
+  CHECK(options->GetDebugOutput() == vtkMLAAOptions::NO_DEBUG_OUTPUT);
+
+  // Clamping to the documented ranges.
+  options->SetThreshold(-1.0);
+  CHECK(options->GetThreshold() == 0.0);
+  options->SetThreshold(3.0);
+  CHECK(options->GetThreshold() == 1.0);
+  options->SetMaxSearchSteps(0);
+  CHECK(options->GetMaxSearchSteps() == 1);
+  options->SetMaxSearchSteps(1000);
+  CHECK(options->GetMaxSearchSteps() == 64);
+  options->SetEdgeDetection(17);
+  CHECK(options->GetEdgeDetection() == vtkMLAAOptions::DEPTH);
+
+  // Names used by the command-line tool, both ways.
+  for (int mode = vtkMLAAOptions::LUMA; mode <= vtkMLAAOptions::DEPTH; ++mode)
+  {
+    CHECK(vtkMLAAOptions::GetEdgeDetectionFromString(
+            vtkMLAAOptions::GetEdgeDetectionAsString(mode)) == mode);
+  }
+  for (int out = vtkMLAAOptions::NO_DEBUG_OUTPUT; out <= vtkMLAAOptions::BLENDING_WEIGHTS; ++out)
+  {
+    CHECK(vtkMLAAOptions::GetDebugOutputFromString(vtkMLAAOptions::GetDebugOutputAsString(out)) ==
+      out);
+  }
+  CHECK(vtkMLAAOptions::GetEdgeDetectionFromString("lab") == -1);
+  CHECK(vtkMLAAOptions::GetEdgeDetectionFromString(nullptr) == -1);
+  CHECK(std::strcmp(vtkMLAAOptions::GetDebugOutputAsString(2), "weights") == 0);
+
+  // DeepCopy copies every setting.
+  vtkNew<vtkMLAAOptions> copy;
+  options->SetThreshold(0.25);
+  options->SetDebugOutputToEdges();
+  copy->DeepCopy(options);
+  CHECK(copy->GetThreshold() == 0.25);
+  CHECK(copy->GetEdgeDetection() == vtkMLAAOptions::DEPTH);
+  CHECK(copy->GetMaxSearchSteps() == 64);
+  CHECK(copy->GetDebugOutput() == vtkMLAAOptions::EDGES);
+
+  // A filter owns default options, can share an object, and sees its changes.
+  vtkNew<vtkImageMLAA> filter;
+  CHECK(filter->GetOptions() != nullptr);
+  filter->SetOptions(options);
+  CHECK(filter->GetOptions() == options.GetPointer());
+  const vtkMTimeType before = filter->GetMTime();
+  options->SetThreshold(0.3);
+  CHECK(filter->GetMTime() > before);
+  filter->SetOptions(nullptr);
+  CHECK(filter->GetOptions() != nullptr && filter->GetOptions() != options.GetPointer());
+  CHECK(filter->GetOptions()->GetThreshold() == 0.1);
+  return EXIT_SUCCESS;
+}

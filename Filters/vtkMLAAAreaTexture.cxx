@@ -1,0 +1,205 @@
+#include "vtkMLAAAreaTexture.h"
+
+#include "vtkImageData.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <mutex>
+
+vtkStandardNewMacro(vtkMLAAAreaTexture);
+
+namespace
+{
+// Height, in pixels, of the revectorised line at an end with crossing-edge code `code`
+// (section 4.3.2): positive towards the pixel opposite the owning one, negative into the owning
+// pixel, zero where no slope can be told (no crossing edge, or crossing edges on both sides).
+double EndHeight(int code)
+{
+  switch (code)
+  {
+    case 1:
+      return 0.5; // crossing edge on the opposite side only
+    case 3:
+      return -0.5; // crossing edge on the owning pixel's side only
+    default:
+      return 0.0;
+  }
+}
+
+// Integral over [a, b] of the linear function h * (1 - x / m), which falls from h at x = 0 to 0
+// at x = m. Its sign is that of h over the whole interval.
+double IntegrateFallingRamp(double h, double m, double a, double b)
+{
+  return h * ((b - a) - (b * b - a * a) / (2.0 * m));
+}
+}
+
+//------------------------------------------------------------------------------
+void vtkMLAAAreaTexture::ComputeAreas(int e1, int e2, int left, int right, double areas[2])
+{
+  areas[0] = areas[1] = 0.0;
+  if (left < 0 || right < 0)
+  {
+    return;
+  }
+  // The line runs along the edge from x = 0 (its left or top end) to x = L; the pixel covers
+  // [left, left + 1]. The first half of the line goes from height h1 at x = 0 to 0 at x = L / 2,
+  // the second half from 0 at L / 2 to h2 at x = L (L, U and Z shapes alike).
+  const double length = left + right + 1.0;
+  const double middle = 0.5 * length;
+  const double x0 = left;
+  const double x1 = left + 1.0;
+  const double h1 = EndHeight(e1);
+  const double h2 = EndHeight(e2);
+
+  double signedAreas[2] = { 0.0, 0.0 }; // first half, second half
+  if (h1 != 0.0 && x0 < middle)
+  {
+    signedAreas[0] = IntegrateFallingRamp(h1, middle, x0, std::min(x1, middle));
+  }
+  if (h2 != 0.0 && x1 > middle)
+  {
+    // Mirror the second half onto the first: x -> L - x.
+    signedAreas[1] = IntegrateFallingRamp(h2, middle, length - x1, length - std::max(x0, middle));
+  }
+  for (double a : signedAreas)
+  {
+    if (a < 0.0)
+    {
+      areas[0] -= a; // below the edge: the owning pixel takes the opposite colour
+    }
+    else
+    {
+      areas[1] += a; // above the edge: the opposite pixel takes the owning pixel's colour
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+std::shared_ptr<const std::vector<float>> vtkMLAAAreaTexture::GetSharedTable(int maxDistance)
+{
+  static std::mutex cacheMutex;
+  static std::map<int, std::shared_ptr<const std::vector<float>>> cache;
+
+  maxDistance = std::max(1, maxDistance);
+  std::lock_guard<std::mutex> lock(cacheMutex);
+  auto found = cache.find(maxDistance);
+  if (found != cache.end())
+  {
+    return found->second;
+  }
+
+  const int d = maxDistance + 1;
+  const int size = NumberOfCodes * d;
+  auto table = std::make_shared<std::vector<float>>(static_cast<size_t>(size) * size * 2, 0.0f);
+  for (int e2 = 0; e2 < NumberOfCodes; ++e2)
+  {
+    for (int e1 = 0; e1 < NumberOfCodes; ++e1)
+    {
+      if (e1 == 2 || e2 == 2)
+      {
+        continue; // code 2 cannot occur: its cells stay empty
+      }
+      for (int right = 0; right < d; ++right)
+      {
+        for (int left = 0; left < d; ++left)
+        {
+          double areas[2];
+          ComputeAreas(e1, e2, left, right, areas);
+          const size_t texel = static_cast<size_t>(d * e2 + right) * size + (d * e1 + left);
+          (*table)[2 * texel] = static_cast<float>(areas[0]);
+          (*table)[2 * texel + 1] = static_cast<float>(areas[1]);
+        }
+      }
+    }
+  }
+  cache[maxDistance] = table;
+  return table;
+}
+
+//------------------------------------------------------------------------------
+vtkMLAAAreaTexture::vtkMLAAAreaTexture() = default;
+
+//------------------------------------------------------------------------------
+vtkMLAAAreaTexture::~vtkMLAAAreaTexture()
+{
+  if (this->Image)
+  {
+    this->Image->Delete();
+  }
+}
+
+//------------------------------------------------------------------------------
+const float* vtkMLAAAreaTexture::GetTable()
+{
+  if (!this->Table || this->TableMaxDistance != this->MaxDistance)
+  {
+    this->Table = GetSharedTable(this->MaxDistance);
+    this->TableMaxDistance = this->MaxDistance;
+  }
+  return this->Table->data();
+}
+
+//------------------------------------------------------------------------------
+float vtkMLAAAreaTexture::GetArea(int e1, int e2, int left, int right, int channel)
+{
+  const int d = this->GetCellSize();
+  if (e1 < 0 || e1 >= NumberOfCodes || e2 < 0 || e2 >= NumberOfCodes || left < 0 || left >= d ||
+    right < 0 || right >= d || channel < 0 || channel > 1)
+  {
+    return 0.0f;
+  }
+  const size_t texel =
+    static_cast<size_t>(d * e2 + right) * this->GetTextureSize() + (d * e1 + left);
+  return this->GetTable()[2 * texel + channel];
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkMLAAAreaTexture::GetImage()
+{
+  if (this->Image && this->ImageMaxDistance == this->MaxDistance)
+  {
+    return this->Image;
+  }
+  const int size = this->GetTextureSize();
+  const float* table = this->GetTable();
+  if (!this->Image)
+  {
+    this->Image = vtkImageData::New();
+  }
+  this->Image->Initialize();
+  this->Image->SetDimensions(size, size, 1);
+  this->Image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  this->Image->GetPointData()->GetScalars()->SetName("Areas");
+  auto* pixels = static_cast<unsigned char*>(this->Image->GetScalarPointer());
+  for (int t = 0; t < size; ++t)
+  {
+    const int row = size - 1 - t; // texel row 0 is the top of the picture
+    for (int s = 0; s < size; ++s)
+    {
+      const float* areas = table + 2 * (static_cast<size_t>(t) * size + s);
+      unsigned char* out = pixels + 3 * (static_cast<size_t>(row) * size + s);
+      for (int c = 0; c < 2; ++c)
+      {
+        const long v = std::lround(255.0 * areas[c]);
+        out[c] = static_cast<unsigned char>(std::min(255L, std::max(0L, v)));
+      }
+      out[2] = 0;
+    }
+  }
+  this->ImageMaxDistance = this->MaxDistance;
+  return this->Image;
+}
+
+//------------------------------------------------------------------------------
+void vtkMLAAAreaTexture::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "MaxDistance: " << this->MaxDistance << "\n";
+  os << indent << "CellSize: " << this->GetCellSize() << "\n";
+  os << indent << "TextureSize: " << this->GetTextureSize() << "\n";
+}

@@ -1,0 +1,153 @@
+/**
+ * @class   vtkMLAAOptions
+ * @brief   The settings of morphological antialiasing, shared by the CPU filter and the GPU pass.
+ *
+ * vtkMLAAOptions holds every setting of the MLAA algorithm of Jimenez et al., "Practical
+ * Morphological Antialiasing" (GPU Pro 2, chapter 4). The CPU filter vtkImageMLAA and the GPU
+ * render pass vtkOpenGLMLAAPass both read their settings from an instance of this class, so the
+ * names, defaults, ranges and meanings are defined once, here. One instance may be shared by a
+ * filter and a pass (SetOptions on both): they then produce the same image, within the rounding
+ * of the GPU's arithmetic.
+ *
+ * The settings:
+ * - Threshold (default 0.1, range [0, 1]): the smallest difference between two neighbouring
+ *   pixels that is an edge, in normalised units (the whole value range of the image is 1).
+ *   The chapter (section 4.2.1) found 0.1 adequate for luma. Lower values find more, fainter
+ *   edges (and more noise); higher values leave faint edges aliased.
+ * - EdgeDetection (default Luma): what is compared across each pixel boundary.
+ *   - Luma: the Rec. 709 luminance 0.2126 R + 0.7152 G + 0.0722 B (the chapter's section 4.2.1;
+ *     one- and two-component images use their first component). Cheapest and perceptual.
+ *   - Color: the largest difference of any colour channel. Finds edges between colours of equal
+ *     luma (pure red against pure green, say) at a small extra cost.
+ *   - Depth: the difference of depth values (section 4.2): the filter's second input or the
+ *     pass's depth buffer. Shading edges are then left alone. Depth buffers are non-linear,
+ *     so this mode usually wants a far smaller threshold (1e-3 to 1e-2).
+ *   With an alpha channel (2 or 4 components), a change in alpha alone is also an edge, in
+ *   every mode.
+ * - MaxSearchSteps (default 8, range [1, 64]): the distance search of section 4.3.1 reads two
+ *   edgels per step, so lines are followed for up to 2 * MaxSearchSteps pixels on each side of
+ *   a pixel (16 by default, as in the chapter). The area texture then has cells of
+ *   2 * MaxSearchSteps + 1 texels (vtkMLAAAreaTexture). Longer searches smooth longer, flatter
+ *   staircases, at a cost that grows with the number of steps.
+ * - DebugOutput (default None): instead of the antialiased image, output one of the
+ *   intermediate textures of Figure 4.1, as 8-bit RGBA:
+ *   - Edges: red = 255 where the pixel has an edge at its left boundary, green = 255 where it
+ *     has one at its top boundary (so both is yellow); blue = 0, alpha = 255.
+ *   - BlendingWeights: the blending-weights texture of section 4.3 scaled to 0..255. Red: weight
+ *     with which this pixel takes the colour of the pixel above it; green: weight with which the
+ *     pixel above takes this pixel's colour; blue: weight with which this pixel takes the colour
+ *     of its left neighbour; alpha: weight with which the left neighbour takes this pixel's.
+ *     Weights are at most 0.5, so values are at most 128.
+ *
+ * "Top" and "above" mean towards the top of the displayed image: higher row index in a
+ * vtkImageData and in an OpenGL texture.
+ *
+ * @sa vtkImageMLAA vtkOpenGLMLAAPass vtkMLAAAreaTexture
+ */
+
+#ifndef vtkMLAAOptions_h
+#define vtkMLAAOptions_h
+
+#include "vtkFiltersMLAAModule.h" // For export macro
+#include "vtkObject.h"
+
+class VTKFILTERSMLAA_EXPORT vtkMLAAOptions : public vtkObject
+{
+public:
+  static vtkMLAAOptions* New();
+  vtkTypeMacro(vtkMLAAOptions, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** What edge detection compares across each pixel boundary. */
+  enum EdgeDetectionModes
+  {
+    LUMA = 0,
+    COLOR = 1,
+    DEPTH = 2
+  };
+
+  /** Which image the filter or pass outputs. */
+  enum DebugOutputs
+  {
+    NO_DEBUG_OUTPUT = 0,
+    EDGES = 1,
+    BLENDING_WEIGHTS = 2
+  };
+
+  ///@{
+  /**
+   * Smallest normalised difference that is an edge. Default 0.1, range [0, 1].
+   */
+  vtkSetClampMacro(Threshold, double, 0.0, 1.0);
+  vtkGetMacro(Threshold, double);
+  ///@}
+
+  ///@{
+  /**
+   * What edge detection compares: LUMA (default), COLOR or DEPTH.
+   */
+  vtkSetClampMacro(EdgeDetection, int, LUMA, DEPTH);
+  vtkGetMacro(EdgeDetection, int);
+  void SetEdgeDetectionToLuma() { this->SetEdgeDetection(LUMA); }
+  void SetEdgeDetectionToColor() { this->SetEdgeDetection(COLOR); }
+  void SetEdgeDetectionToDepth() { this->SetEdgeDetection(DEPTH); }
+  ///@}
+
+  ///@{
+  /**
+   * Number of steps of the distance search, two pixels per step. Default 8 (lines followed for
+   * up to 16 pixels each way), range [1, 64].
+   */
+  vtkSetClampMacro(MaxSearchSteps, int, 1, 64);
+  vtkGetMacro(MaxSearchSteps, int);
+  ///@}
+
+  /**
+   * Longest distance, in pixels, from a pixel to either end of its line that the search
+   * reports: 2 * MaxSearchSteps. The area texture has MaxDistance + 1 texels per cell side.
+   */
+  int GetMaxDistance() const { return 2 * this->MaxSearchSteps; }
+
+  ///@{
+  /**
+   * The image to output: NO_DEBUG_OUTPUT (default: the antialiased image), EDGES or
+   * BLENDING_WEIGHTS.
+   */
+  vtkSetClampMacro(DebugOutput, int, NO_DEBUG_OUTPUT, BLENDING_WEIGHTS);
+  vtkGetMacro(DebugOutput, int);
+  void SetDebugOutputToNone() { this->SetDebugOutput(NO_DEBUG_OUTPUT); }
+  void SetDebugOutputToEdges() { this->SetDebugOutput(EDGES); }
+  void SetDebugOutputToBlendingWeights() { this->SetDebugOutput(BLENDING_WEIGHTS); }
+  ///@}
+
+  ///@{
+  /**
+   * Names of the modes, as the `mlaa` tool spells them: "luma", "color", "depth"; "none",
+   * "edges", "weights". The parsing functions return -1 for an unknown name.
+   */
+  static const char* GetEdgeDetectionAsString(int mode);
+  static int GetEdgeDetectionFromString(const char* name);
+  static const char* GetDebugOutputAsString(int output);
+  static int GetDebugOutputFromString(const char* name);
+  ///@}
+
+  /**
+   * Copy every setting of another instance.
+   */
+  void DeepCopy(vtkMLAAOptions* other);
+
+protected:
+  vtkMLAAOptions() = default;
+  ~vtkMLAAOptions() override = default;
+
+  double Threshold = 0.1;
+  int EdgeDetection = LUMA;
+  int MaxSearchSteps = 8;
+  int DebugOutput = NO_DEBUG_OUTPUT;
+
+private:
+  vtkMLAAOptions(const vtkMLAAOptions&) = delete;
+  void operator=(const vtkMLAAOptions&) = delete;
+};
+
+#endif

@@ -1,0 +1,184 @@
+// Helpers shared by the vtkMLAA tests: building small images, running the filter, and strict
+// image comparisons (VTK's regression comparison is too loose to show that antialiasing ran; see
+// the project's ENVIRONMENT notes).
+#ifndef vtkMLAATestUtilities_h
+#define vtkMLAATestUtilities_h
+
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkImageMLAA.h"
+#include "vtkMLAAOptions.h"
+#include "vtkNew.h"
+#include "vtkPNGReader.h"
+#include "vtkPNGWriter.h"
+#include "vtkPointData.h"
+#include "vtkSmartPointer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <initializer_list>
+#include <iostream>
+#include <string>
+
+namespace vtkMLAATest
+{
+// Counts failed checks; a test returns Result() at the end.
+inline int& Failures()
+{
+  static int failures = 0;
+  return failures;
+}
+
+inline bool Check(bool ok, const char* what, const char* file, int line)
+{
+  if (!ok)
+  {
+    std::cerr << file << ":" << line << ": check failed: " << what << std::endl;
+    ++Failures();
+  }
+  return ok;
+}
+
+inline int Result()
+{
+  if (Failures())
+  {
+    std::cerr << Failures() << " check(s) failed" << std::endl;
+    return EXIT_FAILURE;
+  }
+  return EXIT_SUCCESS;
+}
+
+// An image of the given size, type and components, every value `fill`.
+inline vtkSmartPointer<vtkImageData> MakeImage(
+  int width, int height, int components, int type = VTK_UNSIGNED_CHAR, double fill = 0.0, int depth = 1)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(width, height, depth);
+  image->AllocateScalars(type, components);
+  image->GetPointData()->GetScalars()->Fill(fill);
+  return image;
+}
+
+// Sets every component of pixel (x, y, z) from `f(x, y, z, component)`.
+inline void FillImage(vtkImageData* image, const std::function<double(int, int, int, int)>& f)
+{
+  int dims[3];
+  image->GetDimensions(dims);
+  vtkDataArray* s = image->GetPointData()->GetScalars();
+  const int c = s->GetNumberOfComponents();
+  for (int z = 0; z < dims[2]; ++z)
+  {
+    for (int y = 0; y < dims[1]; ++y)
+    {
+      for (int x = 0; x < dims[0]; ++x)
+      {
+        const vtkIdType id = (static_cast<vtkIdType>(z) * dims[1] + y) * dims[0] + x;
+        for (int k = 0; k < c; ++k)
+        {
+          s->SetComponent(id, k, f(x, y, z, k));
+        }
+      }
+    }
+  }
+}
+
+inline double GetValue(vtkImageData* image, int x, int y, int component = 0, int z = 0)
+{
+  return image->GetScalarComponentAsDouble(x, y, z, component);
+}
+
+// Runs vtkImageMLAA on `input` with `options` (defaults when null).
+inline vtkSmartPointer<vtkImageData> RunMLAA(vtkImageData* input, vtkMLAAOptions* options = nullptr)
+{
+  vtkNew<vtkImageMLAA> filter;
+  if (options)
+  {
+    filter->SetOptions(options);
+  }
+  filter->SetInputData(input);
+  filter->Update();
+  auto output = vtkSmartPointer<vtkImageData>::New();
+  output->DeepCopy(filter->GetOutput());
+  return output;
+}
+
+// Strict comparison: the number of values (all components) whose absolute difference exceeds
+// `tolerance`, and the largest difference. Images of different size or components compare as
+// entirely different (returns -1).
+struct Difference
+{
+  vtkIdType Count = 0;      // values that differ by more than the tolerance
+  vtkIdType Pixels = 0;     // pixels with such a value
+  vtkIdType Total = 0;      // pixels compared
+  double Max = 0.0;         // largest difference
+};
+
+inline Difference Compare(vtkImageData* a, vtkImageData* b, double tolerance = 0.0)
+{
+  Difference d;
+  int da[3], db[3];
+  a->GetDimensions(da);
+  b->GetDimensions(db);
+  vtkDataArray* sa = a->GetPointData()->GetScalars();
+  vtkDataArray* sb = b->GetPointData()->GetScalars();
+  if (!sa || !sb || da[0] != db[0] || da[1] != db[1] || da[2] != db[2] ||
+    sa->GetNumberOfComponents() != sb->GetNumberOfComponents())
+  {
+    d.Count = -1;
+    return d;
+  }
+  const int c = sa->GetNumberOfComponents();
+  d.Total = sa->GetNumberOfTuples();
+  for (vtkIdType i = 0; i < d.Total; ++i)
+  {
+    bool pixelDiffers = false;
+    for (int k = 0; k < c; ++k)
+    {
+      const double va = sa->GetComponent(i, k);
+      const double vb = sb->GetComponent(i, k);
+      const bool bothNaN = std::isnan(va) && std::isnan(vb);
+      const double diff = bothNaN ? 0.0 : (va == vb ? 0.0 : std::abs(va - vb));
+      if (std::isnan(diff) || diff > tolerance)
+      {
+        ++d.Count;
+        pixelDiffers = true;
+      }
+      if (!std::isnan(diff))
+      {
+        d.Max = std::max(d.Max, diff);
+      }
+    }
+    d.Pixels += pixelDiffers ? 1 : 0;
+  }
+  return d;
+}
+
+inline bool WritePNG(vtkImageData* image, const std::string& path)
+{
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(image);
+  writer->SetFileName(path.c_str());
+  writer->Write();
+  return writer->GetErrorCode() == 0;
+}
+
+inline vtkSmartPointer<vtkImageData> ReadPNG(const std::string& path)
+{
+  vtkNew<vtkPNGReader> reader;
+  if (!reader->CanReadFile(path.c_str()))
+  {
+    return nullptr;
+  }
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->DeepCopy(reader->GetOutput());
+  return image;
+}
+} // namespace vtkMLAATest
+
+#define MLAA_CHECK(cond) vtkMLAATest::Check((cond), #cond, __FILE__, __LINE__)
+
+#endif
