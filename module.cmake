@@ -3,14 +3,14 @@
 # which of them the project builds.
 set(vtkMLAA_MODULE_DIRECTORIES
   "${CMAKE_CURRENT_SOURCE_DIR}/Filters"    # MLAA::FiltersMLAA   (vtkFiltersMLAA)
-  #"${CMAKE_CURRENT_SOURCE_DIR}/Rendering"  # MLAA::RenderingMLAA (vtkRenderingMLAA)
+  "${CMAKE_CURRENT_SOURCE_DIR}/Rendering"  # MLAA::RenderingMLAA (vtkRenderingMLAA)
   )
 
 vtk_module_find_modules(vtkMLAA_MODULE_FILES ${vtkMLAA_MODULE_DIRECTORIES})
 
 vtk_module_scan(
   MODULE_FILES      ${vtkMLAA_MODULE_FILES}
-  REQUEST_MODULES   MLAA::FiltersMLAA
+  REQUEST_MODULES   MLAA::FiltersMLAA MLAA::RenderingMLAA
   PROVIDES_MODULES  vtkMLAA_MODULES
   ENABLE_TESTS      "${BUILD_TESTING}")
 

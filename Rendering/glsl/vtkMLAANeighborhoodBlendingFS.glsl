@@ -1,0 +1,72 @@
+//VTK::System::Dec
+//VTK::Output::Dec
+
+// MLAA pass 3 of 3: blending with the four-neighbourhood (Jimenez et al., "Practical
+// Morphological Antialiasing", GPU Pro 2, section 4.4, Listing 4.5), drawn into the renderer's
+// viewport of the target framebuffer.
+//
+// The pixel's own texel holds the weights of its top and left edgels; the weight of its bottom
+// edgel is the green of the pixel below, that of its right edgel the alpha of the pixel to the
+// right. Each neighbour k is mixed in as mix(c, c_k, a_k), and the mixes are averaged with weights
+// a_k (a pixel may lie on up to four lines). The published shader makes each mix with one
+// bilinear fetch; exact fetches and mix() give the same result without the filtering's rounding,
+// and let a zero weight skip a neighbour entirely (so a NaN next door cannot leak in).
+// The depth of the delegate's render is written too, so that passes and layers drawn after this
+// one see the scene's depth.
+//
+// Must match vtkImageMLAA's blending (Filters/vtkImageMLAA.cxx).
+
+in vec2 texCoord;
+
+uniform sampler2D colorTexture;   // the delegate's image
+uniform sampler2D depthTexture;   // the delegate's depth
+uniform sampler2D edgesTexture;   // pass 1 output, for the debug output
+uniform sampler2D weightsTexture; // pass 2 output
+uniform int debugOutput;          // vtkMLAAOptions: 0 none, 1 edges, 2 blending weights
+
+void main()
+{
+  ivec2 size = textureSize(colorTexture, 0);
+  ivec2 p = ivec2(texCoord * vec2(size)); // this fragment's pixel (texCoord is at its centre)
+  gl_FragDepth = texelFetch(depthTexture, p, 0).r;
+
+  vec4 w = texelFetch(weightsTexture, p, 0);
+  if (debugOutput == 1)
+  {
+    gl_FragData[0] = vec4(texelFetch(edgesTexture, p, 0).rg, 0.0, 1.0);
+    return;
+  }
+  if (debugOutput == 2)
+  {
+    gl_FragData[0] = w;
+    return;
+  }
+
+  // Weights towards the neighbour above, below, to the left and to the right.
+  vec4 a = vec4(w.r, p.y > 0 ? texelFetch(weightsTexture, p - ivec2(0, 1), 0).g : 0.0, w.b,
+    p.x < size.x - 1 ? texelFetch(weightsTexture, p + ivec2(1, 0), 0).a : 0.0);
+  float sum = a.x + a.y + a.z + a.w;
+  vec4 c = texelFetch(colorTexture, p, 0);
+  if (sum > 0.0)
+  {
+    vec4 blended = vec4(0.0);
+    if (a.x > 0.0)
+    {
+      blended += a.x * mix(c, texelFetch(colorTexture, p + ivec2(0, 1), 0), a.x);
+    }
+    if (a.y > 0.0)
+    {
+      blended += a.y * mix(c, texelFetch(colorTexture, p - ivec2(0, 1), 0), a.y);
+    }
+    if (a.z > 0.0)
+    {
+      blended += a.z * mix(c, texelFetch(colorTexture, p - ivec2(1, 0), 0), a.z);
+    }
+    if (a.w > 0.0)
+    {
+      blended += a.w * mix(c, texelFetch(colorTexture, p + ivec2(1, 0), 0), a.w);
+    }
+    c = blended / sum;
+  }
+  gl_FragData[0] = c;
+}

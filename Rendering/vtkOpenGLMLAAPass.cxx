@@ -1,0 +1,453 @@
+#include "vtkOpenGLMLAAPass.h"
+
+#include "vtkMLAAAreaTexture.h"
+#include "vtkMLAAOptions.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkRenderState.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkSmartPointer.h"
+#include "vtkTextureObject.h"
+
+#include "vtkMLAABlendingWeightsFS.h"
+#include "vtkMLAAEdgeDetectionFS.h"
+#include "vtkMLAANeighborhoodBlendingFS.h"
+
+#include "vtk_glew.h" // For GL enums only: every call goes through VTK's classes
+
+vtkStandardNewMacro(vtkOpenGLMLAAPass);
+
+namespace
+{
+// Allocates `texture` as a 2D texture of the given size, components and type, unless it already
+// is one.
+void AllocateColorTarget(vtkTextureObject* texture, int width, int height, int components,
+  int vtkType, bool linear)
+{
+  if (texture->GetHandle() && texture->GetWidth() == static_cast<unsigned int>(width) &&
+    texture->GetHeight() == static_cast<unsigned int>(height) &&
+    texture->GetComponents() == components && texture->GetVTKDataType() == vtkType)
+  {
+    return;
+  }
+  texture->ReleaseGraphicsResources(texture->GetContext());
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  texture->SetMinificationFilter(linear ? vtkTextureObject::Linear : vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(linear ? vtkTextureObject::Linear : vtkTextureObject::Nearest);
+  texture->Allocate2D(width, height, components, vtkType);
+}
+
+void AllocateDepthTarget(vtkTextureObject* texture, int width, int height, int format)
+{
+  if (texture->GetHandle() && texture->GetWidth() == static_cast<unsigned int>(width) &&
+    texture->GetHeight() == static_cast<unsigned int>(height))
+  {
+    return;
+  }
+  texture->ReleaseGraphicsResources(texture->GetContext());
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  texture->SetMinificationFilter(vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  texture->AllocateDepth(width, height, format);
+}
+
+vtkTextureObject* NewTexture(vtkOpenGLRenderWindow* renWin)
+{
+  vtkTextureObject* texture = vtkTextureObject::New();
+  texture->SetContext(renWin);
+  return texture;
+}
+
+vtkIdType TextureBytes(vtkTextureObject* texture, int bytesPerTexel)
+{
+  return texture && texture->GetHandle()
+    ? static_cast<vtkIdType>(texture->GetWidth()) * texture->GetHeight() * bytesPerTexel
+    : 0;
+}
+
+template <typename T>
+void DeleteObject(T*& object, vtkWindow* w)
+{
+  if (object)
+  {
+    object->ReleaseGraphicsResources(w);
+    object->Delete();
+    object = nullptr;
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+vtkOpenGLMLAAPass::vtkOpenGLMLAAPass()
+{
+  this->Options = vtkMLAAOptions::New();
+}
+
+//------------------------------------------------------------------------------
+vtkOpenGLMLAAPass::~vtkOpenGLMLAAPass()
+{
+  if (this->ColorTexture || this->EdgesQuad || this->DelegateFramebuffer)
+  {
+    vtkErrorMacro("Graphics resources should have been released by ReleaseGraphicsResources().");
+  }
+  this->Options->Delete();
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLMLAAPass::SetOptions(vtkMLAAOptions* options)
+{
+  if (options == this->Options)
+  {
+    return;
+  }
+  vtkMLAAOptions* old = this->Options;
+  this->Options = options ? options : vtkMLAAOptions::New();
+  if (options)
+  {
+    options->Register(this);
+  }
+  old->UnRegister(this);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLMLAAPass::PrepareTargets(
+  vtkOpenGLRenderWindow* renWin, int width, int height, bool floatColor)
+{
+  for (vtkTextureObject** texture : { &this->ColorTexture, &this->DepthTexture,
+         &this->EdgesTexture, &this->WeightsTexture, &this->MaskTexture })
+  {
+    if (!*texture)
+    {
+      *texture = NewTexture(renWin);
+    }
+  }
+  AllocateColorTarget(
+    this->ColorTexture, width, height, 4, floatColor ? VTK_FLOAT : VTK_UNSIGNED_CHAR, false);
+  AllocateDepthTarget(this->DepthTexture, width, height, vtkTextureObject::Fixed24);
+  // Linear filtering: the search and the crossing-edge reads rely on it (section 4.3).
+  AllocateColorTarget(this->EdgesTexture, width, height, 2, VTK_UNSIGNED_CHAR, true);
+  // 8-bit weights, as the chapter's RGBA8 texture (vtkImageMLAA quantises the same way).
+  AllocateColorTarget(this->WeightsTexture, width, height, 4, VTK_UNSIGNED_CHAR, false);
+  AllocateDepthTarget(this->MaskTexture, width, height, vtkTextureObject::Fixed16);
+
+  // The area texture, uploaded once per maximum distance from the shared generator.
+  const int maxDistance = this->Options->GetMaxDistance();
+  if (!this->AreaTexture || this->AreaTextureMaxDistance != maxDistance)
+  {
+    if (this->AreaTexture)
+    {
+      this->AreaTexture->ReleaseGraphicsResources(renWin);
+    }
+    else
+    {
+      this->AreaTexture = NewTexture(renWin);
+    }
+    vtkNew<vtkMLAAAreaTexture> area;
+    area->SetMaxDistance(maxDistance);
+    this->AreaTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+    this->AreaTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+    this->AreaTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->AreaTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->AreaTexture->Create2DFromRaw(area->GetTextureSize(), area->GetTextureSize(), 2,
+      VTK_FLOAT, const_cast<float*>(area->GetTable()));
+    this->AreaTextureMaxDistance = maxDistance;
+  }
+
+  if (!this->DelegateFramebuffer)
+  {
+    this->DelegateFramebuffer = vtkOpenGLFramebufferObject::New();
+    this->DelegateFramebuffer->SetContext(renWin);
+  }
+  if (!this->MLAAFramebuffer)
+  {
+    this->MLAAFramebuffer = vtkOpenGLFramebufferObject::New();
+    this->MLAAFramebuffer->SetContext(renWin);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLMLAAPass::RenderDelegateToTextures(const vtkRenderState* s, int width, int height)
+{
+  vtkOpenGLState* ostate = this->DelegateFramebuffer->GetContext()->GetState();
+  vtkRenderState delegateState(s->GetRenderer());
+  delegateState.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
+  delegateState.SetRequiredKeys(s->GetRequiredKeys());
+  delegateState.SetFrameBuffer(this->DelegateFramebuffer);
+
+  this->DelegateFramebuffer->Bind();
+  this->DelegateFramebuffer->AddColorAttachment(0, this->ColorTexture);
+  this->DelegateFramebuffer->ActivateDrawBuffer(0);
+  this->DelegateFramebuffer->AddDepthAttachment(this->DepthTexture);
+  this->DelegateFramebuffer->StartNonOrtho(width, height);
+  ostate->vtkglViewport(0, 0, width, height);
+  ostate->vtkglScissor(0, 0, width, height);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+
+  this->DelegatePass->Render(&delegateState);
+  this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLMLAAPass::ReadyQuad(
+  vtkOpenGLRenderWindow* renWin, vtkOpenGLQuadHelper*& quad, const char* fs)
+{
+  if (!quad)
+  {
+    quad = new vtkOpenGLQuadHelper(renWin, nullptr, fs, "");
+  }
+  else
+  {
+    renWin->GetShaderCache()->ReadyShaderProgram(quad->Program);
+  }
+  if (!quad->Program || !quad->Program->GetCompiled())
+  {
+    vtkErrorMacro("Could not build an MLAA shader program.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
+  vtkOpenGLRenderWindow* renWin, int width, int height, bool useAlpha)
+{
+  vtkOpenGLState* ostate = renWin->GetState();
+  vtkOpenGLFramebufferObject* fbo = this->MLAAFramebuffer;
+  fbo->Bind();
+  fbo->AddColorAttachment(0, this->EdgesTexture);
+  fbo->ActivateDrawBuffer(0);
+  fbo->AddDepthAttachment(this->MaskTexture);
+  fbo->StartNonOrtho(width, height);
+  ostate->vtkglViewport(0, 0, width, height);
+  ostate->vtkglScissor(0, 0, width, height);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+
+  // Pass 1: edges. Cleared edges and a far mask; edge pixels write the quad's depth.
+  ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+  ostate->vtkglClearDepth(1.0);
+  ostate->vtkglDepthMask(GL_TRUE);
+  ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_ALWAYS);
+  if (!this->ReadyQuad(renWin, this->EdgesQuad, vtkMLAAEdgeDetectionFS))
+  {
+    return false;
+  }
+  vtkShaderProgram* program = this->EdgesQuad->Program;
+  this->ColorTexture->Activate();
+  this->DepthTexture->Activate();
+  program->SetUniformi("colorTexture", this->ColorTexture->GetTextureUnit());
+  program->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
+  program->SetUniformi("edgeDetection", this->Options->GetEdgeDetection());
+  program->SetUniformf("threshold", static_cast<float>(this->Options->GetThreshold()));
+  program->SetUniformi("useAlpha", useAlpha ? 1 : 0);
+  this->EdgesQuad->Render();
+  this->DepthTexture->Deactivate();
+  this->ColorTexture->Deactivate();
+
+  // Pass 2: blending weights, on the pixels whose mask depth was written only.
+  fbo->AddColorAttachment(0, this->WeightsTexture);
+  fbo->ActivateDrawBuffer(0);
+  ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+  ostate->vtkglDepthMask(GL_FALSE);
+  ostate->vtkglDepthFunc(GL_EQUAL);
+  if (!this->ReadyQuad(renWin, this->WeightsQuad, vtkMLAABlendingWeightsFS))
+  {
+    return false;
+  }
+  program = this->WeightsQuad->Program;
+  this->EdgesTexture->Activate();
+  this->AreaTexture->Activate();
+  program->SetUniformi("edgesTexture", this->EdgesTexture->GetTextureUnit());
+  program->SetUniformi("areaTexture", this->AreaTexture->GetTextureUnit());
+  program->SetUniformi("maxSearchSteps", this->Options->GetMaxSearchSteps());
+  program->SetUniformi("cellSize", this->AreaTextureMaxDistance + 1);
+  this->WeightsQuad->Render();
+  this->AreaTexture->Deactivate();
+  this->EdgesTexture->Deactivate();
+  ostate->vtkglDepthMask(GL_TRUE);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLMLAAPass::Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int width, int height)
+{
+  vtkOpenGLState* ostate = renWin->GetState();
+  ostate->vtkglViewport(x, y, width, height);
+  ostate->vtkglScissor(x, y, width, height);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  // Depth writes need the depth test on; ALWAYS copies the delegate's depth.
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_ALWAYS);
+  ostate->vtkglDepthMask(GL_TRUE);
+  if (!this->ReadyQuad(renWin, this->BlendQuad, vtkMLAANeighborhoodBlendingFS))
+  {
+    return false;
+  }
+  vtkShaderProgram* program = this->BlendQuad->Program;
+  this->ColorTexture->Activate();
+  this->DepthTexture->Activate();
+  this->EdgesTexture->Activate();
+  this->WeightsTexture->Activate();
+  program->SetUniformi("colorTexture", this->ColorTexture->GetTextureUnit());
+  program->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
+  program->SetUniformi("edgesTexture", this->EdgesTexture->GetTextureUnit());
+  program->SetUniformi("weightsTexture", this->WeightsTexture->GetTextureUnit());
+  program->SetUniformi("debugOutput", this->Options->GetDebugOutput());
+  this->BlendQuad->Render();
+  this->WeightsTexture->Deactivate();
+  this->EdgesTexture->Deactivate();
+  this->DepthTexture->Deactivate();
+  this->ColorTexture->Deactivate();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLMLAAPass::Render(const vtkRenderState* s)
+{
+  vtkOpenGLClearErrorMacro();
+  this->NumberOfRenderedProps = 0;
+  if (!this->DelegatePass)
+  {
+    vtkWarningMacro("No delegate pass: nothing to antialias.");
+    return;
+  }
+
+  vtkRenderer* renderer = s->GetRenderer();
+  auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  if (!renWin)
+  {
+    vtkErrorMacro("vtkOpenGLMLAAPass needs a vtkOpenGLRenderWindow.");
+    return;
+  }
+  vtkOpenGLState* ostate = renWin->GetState();
+
+  // The viewport to fill: the renderer's (tiled) viewport in the window, or the whole of a
+  // framebuffer object when an enclosing pass renders this one into its own target.
+  int x = 0, y = 0, width = 0, height = 0;
+  bool floatColor = false;
+  bool useAlpha = renWin->GetAlphaBitPlanes() != 0;
+  if (auto* targetFbo = vtkOpenGLFramebufferObject::SafeDownCast(s->GetFrameBuffer()))
+  {
+    int size[2];
+    s->GetWindowSize(size);
+    width = size[0];
+    height = size[1];
+    vtkTextureObject* target = targetFbo->GetColorAttachmentAsTextureObject(0);
+    floatColor = target && target->GetVTKDataType() == VTK_FLOAT;
+    useAlpha = true;
+  }
+  else
+  {
+    renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
+  }
+  if (width < 1 || height < 1)
+  {
+    return;
+  }
+
+  // Save the state this pass changes; restored when these go out of scope.
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
+  vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
+  vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
+  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+
+  this->PrepareTargets(renWin, width, height, floatColor);
+
+  // Render the delegate, keeping its overlay step for after the antialiasing.
+  vtkRenderStepsPass* steps =
+    this->AntialiasOverlays ? nullptr : vtkRenderStepsPass::SafeDownCast(this->DelegatePass);
+  vtkSmartPointer<vtkRenderPass> overlay = steps ? steps->GetOverlayPass() : nullptr;
+  if (overlay)
+  {
+    steps->SetOverlayPass(nullptr);
+  }
+  ostate->PushFramebufferBindings();
+  this->RenderDelegateToTextures(s, width, height);
+  ostate->PopFramebufferBindings();
+  if (overlay)
+  {
+    steps->SetOverlayPass(overlay);
+  }
+
+  ostate->PushFramebufferBindings();
+  const bool computed = this->ComputeEdgesAndWeights(renWin, width, height, useAlpha);
+  ostate->PopFramebufferBindings();
+  if (!computed || !this->Blend(renWin, x, y, width, height))
+  {
+    return;
+  }
+
+  if (overlay)
+  {
+    // 2D overlays draw into the target's viewport (still set), on top of the result.
+    overlay->Render(s);
+    this->NumberOfRenderedProps += overlay->GetNumberOfRenderedProps();
+  }
+  vtkOpenGLCheckErrorMacro("failed after vtkOpenGLMLAAPass::Render");
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLMLAAPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  this->Superclass::ReleaseGraphicsResources(w);
+  for (vtkOpenGLQuadHelper** quad : { &this->EdgesQuad, &this->WeightsQuad, &this->BlendQuad })
+  {
+    if (*quad)
+    {
+      (*quad)->ReleaseGraphicsResources(w);
+      delete *quad;
+      *quad = nullptr;
+    }
+  }
+  DeleteObject(this->DelegateFramebuffer, w);
+  DeleteObject(this->MLAAFramebuffer, w);
+  for (vtkTextureObject** texture : { &this->ColorTexture, &this->DepthTexture,
+         &this->EdgesTexture, &this->WeightsTexture, &this->MaskTexture, &this->AreaTexture })
+  {
+    DeleteObject(*texture, w);
+  }
+  this->AreaTextureMaxDistance = 0;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOpenGLMLAAPass::GetMLAATargetMemorySize()
+{
+  return TextureBytes(this->EdgesTexture, 2) + TextureBytes(this->WeightsTexture, 4);
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOpenGLMLAAPass::GetTargetMemorySize()
+{
+  const int colorBytes = (this->ColorTexture && this->ColorTexture->GetVTKDataType() == VTK_FLOAT)
+    ? 16
+    : 4;
+  return TextureBytes(this->ColorTexture, colorBytes) + TextureBytes(this->DepthTexture, 4) +
+    this->GetMLAATargetMemorySize() + TextureBytes(this->MaskTexture, 2) +
+    TextureBytes(this->AreaTexture, 8);
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLMLAAPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "AntialiasOverlays: " << (this->AntialiasOverlays ? "On" : "Off") << "\n";
+  os << indent << "Options:\n";
+  this->Options->PrintSelf(os, indent.GetNextIndent());
+}

@@ -1,0 +1,143 @@
+/**
+ * @class   vtkOpenGLMLAAPass
+ * @brief   Render pass that antialiases a renderer's image with morphological antialiasing.
+ *
+ * vtkOpenGLMLAAPass renders its delegate into a colour and a depth texture, then runs the three
+ * full-screen passes of Jimenez et al., "Practical Morphological Antialiasing" (GPU Pro 2,
+ * sections 4.2 to 4.4) and draws the result into the renderer's viewport:
+ * 1. edge detection into an RG8 edges texture (luma, colour or the delegate's depth); pixels
+ *    without an edge are marked in a depth buffer so that the second pass skips them (the
+ *    chapter's stencil trick);
+ * 2. blending weights into an RGBA8 texture: distance search reading two edgels per bilinear
+ *    fetch, crossing edges read with a quarter-pixel offset, and the area texture of
+ *    vtkMLAAAreaTexture, uploaded once per maximum distance;
+ * 3. blending of each pixel with its four neighbours.
+ * It reads the same vtkMLAAOptions as the CPU filter vtkImageMLAA (share one object with
+ * SetOptions), and the two produce the same image within 1/255 on the same input: the shaders are
+ * in Rendering/glsl/vtkMLAA*FS.glsl.
+ *
+ * Use it in place of the renderer's default passes:
+ * @code
+ * vtkNew<vtkRenderStepsPass> steps;
+ * vtkNew<vtkOpenGLMLAAPass> mlaa;
+ * mlaa->SetDelegatePass(steps);
+ * renderer->SetPass(mlaa);
+ * renderWindow->SetMultiSamples(0); // MLAA replaces multisampling
+ * @endcode
+ *
+ * Overlays: when the delegate is a vtkRenderStepsPass, its overlay step (text, scalar bars, 2D
+ * actors) is by default drawn after the antialiasing, straight into the target, so text is not
+ * blurred (as vtkOpenGLRenderer does with its built-in FXAA). AntialiasOverlaysOn() antialiases
+ * them with the rest. Other delegates are antialiased as a whole.
+ *
+ * Framebuffers: the pass draws into whatever framebuffer and viewport the renderer draws into,
+ * so several renderers, viewports, window resizes and tiled rendering work. When the target is a
+ * floating-point framebuffer (for example under vtkToneMappingPass), the delegate is rendered in
+ * floating point too. Alpha takes part in edge detection when the window has alpha bit planes or
+ * the target is a framebuffer object, as it does in the CPU filter for 4-component images.
+ * Thresholds apply to normalised colours (1 = full intensity).
+ *
+ * Only VTK's OpenGL abstractions are used (vtkOpenGLRenderWindow state, vtkTextureObject,
+ * vtkOpenGLFramebufferObject, vtkOpenGLQuadHelper), so the pass runs on GLX, EGL and OSMesa
+ * builds alike. ReleaseGraphicsResources frees every GL object it created.
+ *
+ * @sa vtkMLAAOptions vtkImageMLAA vtkMLAAAreaTexture vtkOpenGLFXAAPass
+ */
+
+#ifndef vtkOpenGLMLAAPass_h
+#define vtkOpenGLMLAAPass_h
+
+#include "vtkImageProcessingPass.h"
+#include "vtkRenderingMLAAModule.h" // For export macro
+
+class vtkMLAAOptions;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
+
+class VTKRENDERINGMLAA_EXPORT vtkOpenGLMLAAPass : public vtkImageProcessingPass
+{
+public:
+  static vtkOpenGLMLAAPass* New();
+  vtkTypeMacro(vtkOpenGLMLAAPass, vtkImageProcessingPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Render the delegate and antialias its image into the current framebuffer and viewport.
+   */
+  void Render(const vtkRenderState* s) override;
+
+  /**
+   * Release every graphics resource of the pass and of its delegate.
+   */
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  ///@{
+  /**
+   * The MLAA settings, shared in meaning (and, if wished, in object) with vtkImageMLAA. Never
+   * null: a pass starts with its own default options; setting nullptr restores fresh defaults.
+   */
+  vtkGetObjectMacro(Options, vtkMLAAOptions);
+  virtual void SetOptions(vtkMLAAOptions* options);
+  ///@}
+
+  ///@{
+  /**
+   * Whether the overlay step of a vtkRenderStepsPass delegate (text, scalar bars, 2D actors) is
+   * antialiased too. Default off: overlays are drawn after the antialiasing, untouched.
+   */
+  vtkSetMacro(AntialiasOverlays, bool);
+  vtkGetMacro(AntialiasOverlays, bool);
+  vtkBooleanMacro(AntialiasOverlays, bool);
+  ///@}
+
+  /**
+   * Bytes of GPU memory held by the pass's render targets at the last render (colour and depth
+   * copy of the delegate's image, edges, blending weights, the pixel mask and the area texture).
+   */
+  vtkIdType GetTargetMemorySize();
+
+  /**
+   * Bytes of the MLAA-specific targets alone (edges and blending-weights textures), the figure
+   * the chapter quotes relative to the back buffer (1.5 times an RGBA8 back buffer).
+   */
+  vtkIdType GetMLAATargetMemorySize();
+
+protected:
+  vtkOpenGLMLAAPass();
+  ~vtkOpenGLMLAAPass() override;
+
+  vtkMLAAOptions* Options = nullptr;
+  bool AntialiasOverlays = false;
+
+private:
+  vtkOpenGLMLAAPass(const vtkOpenGLMLAAPass&) = delete;
+  void operator=(const vtkOpenGLMLAAPass&) = delete;
+
+  // Creates or resizes the render targets for a viewport of width x height.
+  void PrepareTargets(vtkOpenGLRenderWindow* renWin, int width, int height, bool floatColor);
+  // Renders the delegate into ColorTexture and DepthTexture.
+  void RenderDelegateToTextures(const vtkRenderState* s, int width, int height);
+  // Passes 1 and 2 into EdgesTexture and WeightsTexture.
+  bool ComputeEdgesAndWeights(vtkOpenGLRenderWindow* renWin, int width, int height, bool useAlpha);
+  // Pass 3 (or a debug output) into the target viewport.
+  bool Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int width, int height);
+  // Builds a quad helper for a fragment shader, or binds the existing one.
+  bool ReadyQuad(vtkOpenGLRenderWindow* renWin, vtkOpenGLQuadHelper*& quad, const char* fs);
+
+  vtkOpenGLFramebufferObject* DelegateFramebuffer = nullptr;
+  vtkOpenGLFramebufferObject* MLAAFramebuffer = nullptr;
+  vtkTextureObject* ColorTexture = nullptr;
+  vtkTextureObject* DepthTexture = nullptr;
+  vtkTextureObject* EdgesTexture = nullptr;
+  vtkTextureObject* WeightsTexture = nullptr;
+  vtkTextureObject* MaskTexture = nullptr;
+  vtkTextureObject* AreaTexture = nullptr;
+  int AreaTextureMaxDistance = 0;
+  vtkOpenGLQuadHelper* EdgesQuad = nullptr;
+  vtkOpenGLQuadHelper* WeightsQuad = nullptr;
+  vtkOpenGLQuadHelper* BlendQuad = nullptr;
+};
+
+#endif

@@ -1,0 +1,403 @@
+#include "vtkMLAAScenes.h"
+
+#include "vtkActor.h"
+#include "vtkArrowSource.h"
+#include "vtkCamera.h"
+#include "vtkConeSource.h"
+#include "vtkContourFilter.h"
+#include "vtkCubeSource.h"
+#include "vtkCylinderSource.h"
+#include "vtkGlyph3D.h"
+#include "vtkImageCanvasSource2D.h"
+#include "vtkImageData.h"
+#include "vtkLineSource.h"
+#include "vtkLookupTable.h"
+#include "vtkNew.h"
+#include "vtkPlaneSource.h"
+#include "vtkPointSource.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkQuadric.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSampleFunction.h"
+#include "vtkScalarBarActor.h"
+#include "vtkSphereSource.h"
+#include "vtkSuperquadricSource.h"
+#include "vtkTextActor.h"
+#include "vtkTextProperty.h"
+#include "vtkTexture.h"
+#include "vtkTexturedSphereSource.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <cmath>
+#include <functional>
+#include <map>
+
+namespace
+{
+vtkSmartPointer<vtkActor> AddActor(vtkRenderer* renderer, vtkAlgorithm* source,
+  const double color[3], bool scalars = false)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(source->GetOutputPort());
+  mapper->SetScalarVisibility(scalars);
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(color[0], color[1], color[2]);
+  renderer->AddActor(actor);
+  return actor;
+}
+
+void Silhouettes(vtkRenderer* renderer)
+{
+  // Shaded solids: curved and straight silhouettes at every angle, against a light background.
+  renderer->SetBackground(0.92, 0.93, 0.95);
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(64);
+  sphere->SetPhiResolution(32);
+  sphere->SetCenter(-1.2, 0.2, 0.0);
+  const double red[3] = { 0.8, 0.25, 0.2 };
+  AddActor(renderer, sphere, red);
+  vtkNew<vtkCubeSource> cube;
+  cube->SetCenter(1.1, 0.3, 0.0);
+  const double blue[3] = { 0.2, 0.35, 0.75 };
+  auto cubeActor = AddActor(renderer, cube, blue);
+  cubeActor->RotateX(25.0);
+  cubeActor->RotateY(35.0);
+  vtkNew<vtkConeSource> cone;
+  cone->SetResolution(48);
+  cone->SetCenter(0.0, -1.1, 0.0);
+  cone->SetDirection(1.0, 0.35, 0.2);
+  const double green[3] = { 0.25, 0.6, 0.3 };
+  AddActor(renderer, cone, green);
+  renderer->GetActiveCamera()->SetPosition(0.3, 0.6, 8.0);
+  renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->ResetCameraClippingRange();
+}
+
+void Lines(vtkRenderer* renderer)
+{
+  // Spokes of 1-pixel lines and of 3-pixel lines at many angles: the worst case of staircases.
+  renderer->SetBackground(1.0, 1.0, 1.0);
+  for (int i = 0; i < 24; ++i)
+  {
+    const double angle = (i + 0.37) * 3.14159265358979 / 24.0;
+    const bool thick = (i % 2) == 1;
+    vtkNew<vtkLineSource> line;
+    const double cx = thick ? 1.05 : -1.05;
+    line->SetPoint1(cx, 0.0, 0.0);
+    line->SetPoint2(cx + std::cos(angle), std::sin(angle), 0.0);
+    const double dark[3] = { 0.1, 0.1, 0.15 };
+    const double orange[3] = { 0.85, 0.4, 0.05 };
+    auto actor = AddActor(renderer, line, thick ? orange : dark);
+    actor->GetProperty()->SetLineWidth(thick ? 3.0f : 1.0f);
+    actor->GetProperty()->LightingOff();
+    vtkNew<vtkLineSource> mirrored;
+    mirrored->SetPoint1(cx, 0.0, 0.0);
+    mirrored->SetPoint2(cx - std::cos(angle), -std::sin(angle), 0.0);
+    auto mirroredActor = AddActor(renderer, mirrored, thick ? orange : dark);
+    mirroredActor->GetProperty()->SetLineWidth(thick ? 3.0f : 1.0f);
+    mirroredActor->GetProperty()->LightingOff();
+  }
+  renderer->GetActiveCamera()->SetPosition(0.0, 0.0, 6.0);
+  renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->ResetCameraClippingRange();
+}
+
+void Wireframe(vtkRenderer* renderer)
+{
+  // A wireframe superquadric: dense 1-pixel mesh lines over a dark background.
+  renderer->SetBackground(0.08, 0.09, 0.12);
+  vtkNew<vtkSuperquadricSource> quadric;
+  quadric->SetThetaResolution(24);
+  quadric->SetPhiResolution(16);
+  quadric->SetThetaRoundness(0.6);
+  quadric->SetPhiRoundness(0.8);
+  quadric->ToroidalOn();
+  quadric->SetThickness(0.45);
+  const double cyan[3] = { 0.55, 0.85, 1.0 };
+  auto actor = AddActor(renderer, quadric, cyan);
+  actor->GetProperty()->SetRepresentationToWireframe();
+  actor->GetProperty()->LightingOff();
+  actor->RotateX(60.0);
+  actor->RotateY(20.0);
+  renderer->GetActiveCamera()->SetPosition(0.0, 0.0, 4.2);
+  renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->ResetCameraClippingRange();
+}
+
+void IsoSurface(vtkRenderer* renderer)
+{
+  // Nested iso-surfaces of a quadric, coloured by scalar: smooth shading and silhouettes
+  // against each other.
+  renderer->SetBackground(0.2, 0.22, 0.28);
+  vtkNew<vtkQuadric> quadric;
+  quadric->SetCoefficients(0.5, 1.0, 0.2, 0.0, 0.1, 0.0, 0.0, 0.2, 0.0, 0.0);
+  vtkNew<vtkSampleFunction> sample;
+  sample->SetSampleDimensions(40, 40, 40);
+  sample->SetImplicitFunction(quadric);
+  sample->ComputeNormalsOff();
+  vtkNew<vtkContourFilter> contours;
+  contours->SetInputConnection(sample->GetOutputPort());
+  contours->GenerateValues(4, 0.0, 1.2);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(contours->GetOutputPort());
+  mapper->SetScalarRange(0.0, 1.2);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetOpacity(1.0);
+  renderer->AddActor(actor);
+  actor->RotateY(30.0);
+  actor->RotateX(-20.0);
+  renderer->ResetCamera();
+  renderer->GetActiveCamera()->Zoom(1.3);
+  renderer->ResetCameraClippingRange();
+}
+
+void Glyphs(vtkRenderer* renderer)
+{
+  // Arrow glyphs on a grid of points: many small shapes with short edges.
+  renderer->SetBackground(0.97, 0.97, 0.94);
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetResolution(11, 8);
+  plane->SetOrigin(-2.0, -1.5, 0.0);
+  plane->SetPoint1(2.0, -1.5, 0.0);
+  plane->SetPoint2(-2.0, 1.5, 0.0);
+  vtkNew<vtkArrowSource> arrow;
+  arrow->SetTipResolution(16);
+  arrow->SetShaftResolution(12);
+  vtkNew<vtkGlyph3D> glyphs;
+  glyphs->SetInputConnection(plane->GetOutputPort());
+  glyphs->SetSourceConnection(arrow->GetOutputPort());
+  glyphs->SetScaleFactor(0.3);
+  glyphs->OrientOn();
+  glyphs->SetVectorModeToUseNormal();
+  const double purple[3] = { 0.45, 0.25, 0.65 };
+  auto actor = AddActor(renderer, glyphs, purple);
+  actor->RotateX(-50.0);
+  actor->RotateZ(15.0);
+  renderer->GetActiveCamera()->SetPosition(0.0, -0.5, 6.5);
+  renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->ResetCameraClippingRange();
+}
+
+void Texture(vtkRenderer* renderer)
+{
+  // A checkerboard texture on a tilted plane and a sphere: edges inside textures, which
+  // geometric antialiasing (MSAA) does not see.
+  renderer->SetBackground(0.3, 0.3, 0.32);
+  vtkNew<vtkImageCanvasSource2D> canvas;
+  canvas->SetScalarTypeToUnsignedChar();
+  canvas->SetNumberOfScalarComponents(3);
+  canvas->SetExtent(0, 255, 0, 255, 0, 0);
+  canvas->SetDrawColor(235, 235, 225);
+  canvas->FillBox(0, 255, 0, 255);
+  canvas->SetDrawColor(40, 60, 110);
+  for (int i = 0; i < 8; ++i)
+  {
+    for (int j = 0; j < 8; ++j)
+    {
+      if ((i + j) % 2 == 0)
+      {
+        canvas->FillBox(i * 32, i * 32 + 31, j * 32, j * 32 + 31);
+      }
+    }
+  }
+  vtkNew<vtkTexture> texture;
+  texture->SetInputConnection(canvas->GetOutputPort());
+  texture->InterpolateOff();
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-2.0, -2.0, 0.0);
+  plane->SetPoint1(2.0, -2.0, 0.0);
+  plane->SetPoint2(-2.0, 2.0, 0.0);
+  const double white[3] = { 1.0, 1.0, 1.0 };
+  auto planeActor = AddActor(renderer, plane, white);
+  planeActor->SetTexture(texture);
+  planeActor->RotateX(-62.0);
+  planeActor->GetProperty()->LightingOff();
+  vtkNew<vtkTexturedSphereSource> sphere;
+  sphere->SetThetaResolution(48);
+  sphere->SetPhiResolution(24);
+  sphere->SetRadius(0.7);
+  auto sphereActor = AddActor(renderer, sphere, white);
+  sphereActor->SetTexture(texture);
+  sphereActor->SetPosition(0.9, 0.6, 0.8);
+  renderer->GetActiveCamera()->SetPosition(0.0, 0.0, 6.0);
+  renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->ResetCameraClippingRange();
+}
+
+void TextAndScalarBar(vtkRenderer* renderer)
+{
+  // Text and a scalar bar over a coloured surface: overlays must come out untouched.
+  renderer->SetBackground(1.0, 1.0, 1.0);
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(48);
+  sphere->SetPhiResolution(24);
+  vtkNew<vtkLookupTable> lut;
+  lut->SetHueRange(0.66, 0.0);
+  lut->Build();
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(sphere->GetOutputPort());
+  mapper->SetLookupTable(lut);
+  mapper->SetScalarModeToUsePointFieldData();
+  mapper->SelectColorArray("Normals");
+  mapper->SetScalarRange(-1.0, 1.0);
+  mapper->ScalarVisibilityOn();
+  mapper->ColorByArrayComponent("Normals", 2);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  renderer->AddActor(actor);
+  vtkNew<vtkTextActor> title;
+  title->SetInput("Pressure at t = 0.25 s (MLAA)");
+  title->GetTextProperty()->SetFontSize(20);
+  title->GetTextProperty()->SetColor(0.1, 0.1, 0.1);
+  title->SetPosition(12, 12);
+  renderer->AddActor2D(title);
+  vtkNew<vtkScalarBarActor> bar;
+  bar->SetLookupTable(lut);
+  bar->SetTitle("p [kPa]");
+  bar->SetNumberOfLabels(5);
+  bar->GetTitleTextProperty()->SetColor(0.1, 0.1, 0.1);
+  bar->GetLabelTextProperty()->SetColor(0.1, 0.1, 0.1);
+  bar->SetPosition(0.84, 0.1);
+  bar->SetWidth(0.12);
+  bar->SetHeight(0.8);
+  renderer->AddActor2D(bar);
+  renderer->GetActiveCamera()->SetPosition(-0.5, 0.6, 3.4);
+  renderer->GetActiveCamera()->SetFocalPoint(0.1, 0.0, 0.0);
+  renderer->ResetCameraClippingRange();
+}
+
+void Mixed(vtkRenderer* renderer)
+{
+  // Everything at once: a shaded body, its wireframe, points and a label.
+  renderer->SetBackground(0.15, 0.16, 0.2);
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(20);
+  sphere->SetPhiResolution(12);
+  const double gold[3] = { 0.9, 0.7, 0.3 };
+  auto body = AddActor(renderer, sphere, gold);
+  body->SetScale(1.4, 1.0, 1.0);
+  auto wire = AddActor(renderer, sphere, gold);
+  wire->SetScale(1.4, 1.0, 1.0);
+  wire->SetPosition(1.8, 0.0, 0.0);
+  wire->GetProperty()->SetRepresentationToWireframe();
+  wire->GetProperty()->LightingOff();
+  vtkNew<vtkCylinderSource> cylinder;
+  cylinder->SetResolution(32);
+  const double teal[3] = { 0.2, 0.7, 0.7 };
+  auto cyl = AddActor(renderer, cylinder, teal);
+  cyl->SetPosition(-1.9, 0.0, 0.0);
+  cyl->RotateZ(30.0);
+  cyl->RotateX(20.0);
+  vtkNew<vtkPointSource> points;
+  points->SetNumberOfPoints(60);
+  points->SetRadius(2.8);
+  points->SetDistributionToShell();
+  const double white[3] = { 1.0, 1.0, 1.0 };
+  auto pointActor = AddActor(renderer, points, white);
+  pointActor->GetProperty()->SetRepresentationToPoints();
+  pointActor->GetProperty()->SetPointSize(3.0f);
+  pointActor->GetProperty()->LightingOff();
+  vtkNew<vtkTextActor> label;
+  label->SetInput("mixed scene");
+  label->GetTextProperty()->SetFontSize(18);
+  label->GetTextProperty()->SetColor(0.9, 0.9, 0.9);
+  label->SetPosition(10, 10);
+  renderer->AddActor2D(label);
+  renderer->GetActiveCamera()->SetPosition(0.0, 1.0, 9.0);
+  renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->ResetCameraClippingRange();
+}
+
+struct Scene
+{
+  std::string Description;
+  std::function<void(vtkRenderer*)> Build;
+};
+
+const std::vector<std::pair<std::string, Scene>>& Scenes()
+{
+  static const std::vector<std::pair<std::string, Scene>> scenes = {
+    { "silhouettes", { "shaded sphere, cube and cone", Silhouettes } },
+    { "lines", { "1- and 3-pixel lines at 48 angles", Lines } },
+    { "wireframe", { "wireframe torus-like superquadric", Wireframe } },
+    { "isosurface", { "four nested iso-surfaces of a quadric", IsoSurface } },
+    { "glyphs", { "arrow glyphs on a tilted grid", Glyphs } },
+    { "texture", { "checkerboard texture on a plane and a sphere", Texture } },
+    { "text", { "coloured sphere with text and a scalar bar", TextAndScalarBar } },
+    { "mixed", { "shaded, wireframe and point geometry with a label", Mixed } },
+  };
+  return scenes;
+}
+}
+
+namespace vtkMLAAScenes
+{
+std::vector<std::string> Names()
+{
+  std::vector<std::string> names;
+  for (const auto& scene : Scenes())
+  {
+    names.push_back(scene.first);
+  }
+  return names;
+}
+
+std::string Describe(const std::string& name)
+{
+  for (const auto& scene : Scenes())
+  {
+    if (scene.first == name)
+    {
+      return scene.second.Description;
+    }
+  }
+  return std::string();
+}
+
+bool Build(const std::string& name, vtkRenderer* renderer)
+{
+  for (const auto& scene : Scenes())
+  {
+    if (scene.first == name)
+    {
+      scene.second.Build(renderer);
+      return true;
+    }
+  }
+  return false;
+}
+
+vtkSmartPointer<vtkRenderWindow> NewOffscreenWindow(int width, int height)
+{
+  auto window = vtkSmartPointer<vtkRenderWindow>::New();
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(width, height);
+  return window;
+}
+
+vtkSmartPointer<vtkImageData> Capture(vtkRenderWindow* window, bool alpha)
+{
+  window->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  if (alpha)
+  {
+    grab->SetInputBufferTypeToRGBA();
+  }
+  else
+  {
+    grab->SetInputBufferTypeToRGB();
+  }
+  grab->ShouldRerenderOff();
+  grab->Update();
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->DeepCopy(grab->GetOutput());
+  return image;
+}
+}

@@ -1,0 +1,41 @@
+// Scientific-visualization scenes used by the vtkMLAA tests, the demo, and the quality and speed
+// benchmarks: shaded silhouettes, thin and thick lines, a wireframe, an iso-surface, glyphs, a
+// texture, text with a scalar bar, and a mixed scene. One definition, so that every program
+// measures and shows the same pictures.
+#ifndef vtkMLAAScenes_h
+#define vtkMLAAScenes_h
+
+#include "vtkSmartPointer.h"
+
+#include <string>
+#include <vector>
+
+class vtkImageData;
+class vtkRenderWindow;
+class vtkRenderer;
+
+namespace vtkMLAAScenes
+{
+/** Names of all scenes, in a fixed order. */
+std::vector<std::string> Names();
+
+/** A one-line description of a scene. */
+std::string Describe(const std::string& name);
+
+/**
+ * Adds the actors of scene `name` to `renderer`, sets its background and camera. Returns false
+ * for an unknown name.
+ */
+bool Build(const std::string& name, vtkRenderer* renderer);
+
+/**
+ * A render window for offscreen measurement: offscreen, no multisampling (MLAA and the reference
+ * need single-sample renders), the given size.
+ */
+vtkSmartPointer<vtkRenderWindow> NewOffscreenWindow(int width, int height);
+
+/** Renders `window` and returns its RGB (or RGBA when `alpha`) pixels, row 0 at the bottom. */
+vtkSmartPointer<vtkImageData> Capture(vtkRenderWindow* window, bool alpha = false);
+}
+
+#endif
