@@ -4,6 +4,7 @@
 #ifndef vtkMLAATestUtilities_h
 #define vtkMLAATestUtilities_h
 
+#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkImageMLAA.h"
@@ -20,6 +21,7 @@
 #include <initializer_list>
 #include <iostream>
 #include <string>
+#include <vector>
 
 namespace vtkMLAATest
 {
@@ -154,6 +156,42 @@ inline Difference Compare(vtkImageData* a, vtkImageData* b, double tolerance = 0
   }
   return d;
 }
+
+// Records the error and warning messages an object emits (instead of printing them), so that a
+// test can assert that bad input was reported.
+class MessageObserver : public vtkCommand
+{
+public:
+  static MessageObserver* New() { return new MessageObserver; }
+  void Execute(vtkObject*, unsigned long event, void* data) override
+  {
+    const std::string text = data ? static_cast<const char*>(data) : "";
+    (event == vtkCommand::ErrorEvent ? this->Errors : this->Warnings).push_back(text);
+  }
+  void Watch(vtkObject* object)
+  {
+    object->AddObserver(vtkCommand::ErrorEvent, this);
+    object->AddObserver(vtkCommand::WarningEvent, this);
+  }
+  bool HasError(const std::string& fragment) const
+  {
+    for (const auto& e : this->Errors)
+    {
+      if (e.find(fragment) != std::string::npos)
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+  void Clear()
+  {
+    this->Errors.clear();
+    this->Warnings.clear();
+  }
+  std::vector<std::string> Errors;
+  std::vector<std::string> Warnings;
+};
 
 inline bool WritePNG(vtkImageData* image, const std::string& path)
 {
