@@ -26,16 +26,22 @@ vtkStandardNewMacro(vtkOpenGLMLAAPass);
 
 namespace
 {
-// Allocates `texture` as a 2D texture of the given size, components and type, unless it already
-// is one.
-void AllocateColorTarget(vtkTextureObject* texture, int width, int height, int components,
+// Makes `texture` a 2D texture of the given size, components and type: resized in place (same GL
+// handle, so framebuffer attachments stay valid) when only the size differs, allocated afresh
+// otherwise. Returns true when the texture was allocated afresh (its handle changed).
+bool AllocateColorTarget(vtkTextureObject* texture, int width, int height, int components,
   int vtkType, bool linear)
 {
-  if (texture->GetHandle() && texture->GetWidth() == static_cast<unsigned int>(width) &&
-    texture->GetHeight() == static_cast<unsigned int>(height) &&
-    texture->GetComponents() == components && texture->GetVTKDataType() == vtkType)
+  const bool sameFormat = texture->GetHandle() && texture->GetComponents() == components &&
+    texture->GetVTKDataType() == vtkType;
+  if (sameFormat)
   {
-    return;
+    if (texture->GetWidth() != static_cast<unsigned int>(width) ||
+      texture->GetHeight() != static_cast<unsigned int>(height))
+    {
+      texture->Resize(width, height);
+    }
+    return false;
   }
   texture->ReleaseGraphicsResources(texture->GetContext());
   texture->SetWrapS(vtkTextureObject::ClampToEdge);
@@ -43,21 +49,27 @@ void AllocateColorTarget(vtkTextureObject* texture, int width, int height, int c
   texture->SetMinificationFilter(linear ? vtkTextureObject::Linear : vtkTextureObject::Nearest);
   texture->SetMagnificationFilter(linear ? vtkTextureObject::Linear : vtkTextureObject::Nearest);
   texture->Allocate2D(width, height, components, vtkType);
+  return true;
 }
 
-void AllocateDepthTarget(vtkTextureObject* texture, int width, int height, int format)
+// The same for a depth texture.
+bool AllocateDepthTarget(vtkTextureObject* texture, int width, int height, int format)
 {
-  if (texture->GetHandle() && texture->GetWidth() == static_cast<unsigned int>(width) &&
-    texture->GetHeight() == static_cast<unsigned int>(height))
+  if (texture->GetHandle())
   {
-    return;
+    if (texture->GetWidth() != static_cast<unsigned int>(width) ||
+      texture->GetHeight() != static_cast<unsigned int>(height))
+    {
+      texture->Resize(width, height);
+    }
+    return false;
   }
-  texture->ReleaseGraphicsResources(texture->GetContext());
   texture->SetWrapS(vtkTextureObject::ClampToEdge);
   texture->SetWrapT(vtkTextureObject::ClampToEdge);
   texture->SetMinificationFilter(vtkTextureObject::Nearest);
   texture->SetMagnificationFilter(vtkTextureObject::Nearest);
   texture->AllocateDepth(width, height, format);
+  return true;
 }
 
 vtkTextureObject* NewTexture(vtkOpenGLRenderWindow* renWin)
@@ -131,14 +143,22 @@ void vtkOpenGLMLAAPass::PrepareTargets(
       *texture = NewTexture(renWin);
     }
   }
-  AllocateColorTarget(
+  bool reallocated = AllocateColorTarget(
     this->ColorTexture, width, height, 4, floatColor ? VTK_FLOAT : VTK_UNSIGNED_CHAR, false);
-  AllocateDepthTarget(this->DepthTexture, width, height, vtkTextureObject::Fixed24);
+  // 24-bit depth, as a window's depth buffer, so the delegate renders as it would in the window.
+  reallocated |= AllocateDepthTarget(this->DepthTexture, width, height, vtkTextureObject::Fixed24);
   // Linear filtering: the search and the crossing-edge reads rely on it (section 4.3).
-  AllocateColorTarget(this->EdgesTexture, width, height, 2, VTK_UNSIGNED_CHAR, true);
+  reallocated |= AllocateColorTarget(this->EdgesTexture, width, height, 2, VTK_UNSIGNED_CHAR, true);
   // 8-bit weights, as the chapter's RGBA8 texture (vtkImageMLAA quantises the same way).
-  AllocateColorTarget(this->WeightsTexture, width, height, 4, VTK_UNSIGNED_CHAR, false);
-  AllocateDepthTarget(this->MaskTexture, width, height, vtkTextureObject::Fixed16);
+  reallocated |=
+    AllocateColorTarget(this->WeightsTexture, width, height, 4, VTK_UNSIGNED_CHAR, false);
+  reallocated |= AllocateDepthTarget(this->MaskTexture, width, height, vtkTextureObject::Fixed16);
+  if (reallocated)
+  {
+    // Framebuffer objects remember their attachments: start afresh with the new textures.
+    DeleteObject(this->DelegateFramebuffer, renWin);
+    DeleteObject(this->MLAAFramebuffer, renWin);
+  }
 
   // The area texture, uploaded once per maximum distance from the shared generator.
   const int maxDistance = this->Options->GetMaxDistance();
@@ -358,45 +378,48 @@ void vtkOpenGLMLAAPass::Render(const vtkRenderState* s)
     return;
   }
 
-  // Save the state this pass changes; restored when these go out of scope.
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(ostate, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
-  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
-  vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
-  vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
-  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
-  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
-
-  this->PrepareTargets(renWin, width, height, floatColor);
-
-  // Render the delegate, keeping its overlay step for after the antialiasing.
   vtkRenderStepsPass* steps =
     this->AntialiasOverlays ? nullptr : vtkRenderStepsPass::SafeDownCast(this->DelegatePass);
   vtkSmartPointer<vtkRenderPass> overlay = steps ? steps->GetOverlayPass() : nullptr;
-  if (overlay)
+  bool done = false;
   {
-    steps->SetOverlayPass(nullptr);
-  }
-  ostate->PushFramebufferBindings();
-  this->RenderDelegateToTextures(s, width, height);
-  ostate->PopFramebufferBindings();
-  if (overlay)
-  {
-    steps->SetOverlayPass(overlay);
+    // Save the state this pass changes; restored at the end of this block.
+    vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable depthTestSaver(ostate, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
+    vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
+    vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
+    vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
+    vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+    vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+
+    this->PrepareTargets(renWin, width, height, floatColor);
+
+    // Render the delegate, keeping its overlay step for after the antialiasing.
+    if (overlay)
+    {
+      steps->SetOverlayPass(nullptr);
+    }
+    ostate->PushFramebufferBindings();
+    this->RenderDelegateToTextures(s, width, height);
+    ostate->PopFramebufferBindings();
+    if (overlay)
+    {
+      steps->SetOverlayPass(overlay);
+    }
+
+    ostate->PushFramebufferBindings();
+    const bool computed = this->ComputeEdgesAndWeights(renWin, width, height, useAlpha);
+    ostate->PopFramebufferBindings();
+    done = computed && this->Blend(renWin, x, y, width, height);
   }
 
-  ostate->PushFramebufferBindings();
-  const bool computed = this->ComputeEdgesAndWeights(renWin, width, height, useAlpha);
-  ostate->PopFramebufferBindings();
-  if (!computed || !this->Blend(renWin, x, y, width, height))
+  // The overlays (not over a debug image): drawn on top of the result, in the state the pass was
+  // entered with, in the renderer's viewport, as the render steps would have drawn them.
+  if (done && overlay && this->Options->GetDebugOutput() == vtkMLAAOptions::NO_DEBUG_OUTPUT)
   {
-    return;
-  }
-
-  if (overlay)
-  {
-    // 2D overlays draw into the target's viewport (still set), on top of the result.
+    ostate->vtkglViewport(x, y, width, height);
+    ostate->vtkglScissor(x, y, width, height);
     overlay->Render(s);
     this->NumberOfRenderedProps += overlay->GetNumberOfRenderedProps();
   }

@@ -28,7 +28,10 @@
  * Overlays: when the delegate is a vtkRenderStepsPass, its overlay step (text, scalar bars, 2D
  * actors) is by default drawn after the antialiasing, straight into the target, so text is not
  * blurred (as vtkOpenGLRenderer does with its built-in FXAA). AntialiasOverlaysOn() antialiases
- * them with the rest. Other delegates are antialiased as a whole.
+ * them with the rest. Other delegates are antialiased as a whole. Props that draw part of
+ * themselves in the opaque step (the colour bar of a vtkScalarBarActor, say) are antialiased there
+ * as they would be by the renderer's FXAA. With a debug output, deferred overlays are not drawn
+ * over the debug image.
  *
  * Framebuffers: the pass draws into whatever framebuffer and viewport the renderer draws into,
  * so several renderers, viewports, window resizes and tiled rendering work. When the target is a

@@ -1,0 +1,43 @@
+// The pass's debug outputs equal the CPU filter's: the edges texture exactly, the blending
+// weights within 1/255 (both are 8-bit), on the RGBA render of a mixed scene (its label is
+// antialiased with the rest here, so that both see the same image); and the edges are what the
+// scene should give (some pixels have edges, most have none).
+#include "vtkMLAARenderTestUtilities.h"
+
+using namespace vtkMLAATest;
+
+int TestMLAAPassDebugOutputs(int, char*[])
+{
+  SceneWindow scene("mixed", 400, 300, true);
+  vtkNew<vtkMLAAOptions> options;
+  auto pass = UseMLAA(scene.Renderer, options);
+  pass->AntialiasOverlaysOn();
+
+  options->SetDebugOutputToEdges();
+  auto gpuEdges = vtkMLAAScenes::Capture(scene.Window, true);
+  auto cpuEdges = RunMLAA(scene.Plain, options);
+  const Difference edges = Compare(cpuEdges, gpuEdges, 0.0);
+  std::cout << "edges: " << edges.Pixels << " pixels differ" << std::endl;
+  MLAA_CHECK(edges.Count == 0);
+  const Difference edgePixels = Compare(cpuEdges, MakeImage(400, 300, 4, VTK_UNSIGNED_CHAR, 0.0), 0.0);
+  MLAA_CHECK(edgePixels.Pixels == 400 * 300); // alpha is 255 everywhere
+  int withEdges = 0;
+  for (int y = 0; y < 300; ++y)
+  {
+    for (int x = 0; x < 400; ++x)
+    {
+      withEdges += (GetValue(cpuEdges, x, y, 0) > 0 || GetValue(cpuEdges, x, y, 1) > 0) ? 1 : 0;
+    }
+  }
+  MLAA_CHECK(withEdges > 500 && withEdges < 400 * 300 / 4);
+
+  options->SetDebugOutputToBlendingWeights();
+  auto gpuWeights = vtkMLAAScenes::Capture(scene.Window, true);
+  auto cpuWeights = RunMLAA(scene.Plain, options);
+  const Difference weights = Compare(cpuWeights, gpuWeights, 1.0);
+  std::cout << "weights: " << weights.Pixels << " pixels differ by more than 1/255 (largest "
+            << weights.Max << ")" << std::endl;
+  MLAA_CHECK(weights.Count == 0);
+  MLAA_CHECK(cpuWeights->GetPointData()->GetScalars()->GetRange(0)[1] > 64.0);
+  return Result();
+}

@@ -1,0 +1,50 @@
+// Depth edges: the pass detects edges in its delegate's depth buffer; the CPU filter given the
+// same render and the window's z-buffer as its depth input produces the same image. Shading
+// edges inside a surface are left alone (unlike luma edges).
+#include "vtkMLAARenderTestUtilities.h"
+
+#include "vtkWindowToImageFilter.h"
+
+using namespace vtkMLAATest;
+
+int TestMLAAPassDepthEdges(int, char*[])
+{
+  SceneWindow scene("isosurface", 400, 300, true);
+  vtkNew<vtkWindowToImageFilter> zGrab;
+  zGrab->SetInput(scene.Window);
+  zGrab->SetInputBufferTypeToZBuffer();
+  zGrab->ReadFrontBufferOff();
+  zGrab->ShouldRerenderOff();
+  zGrab->Update();
+  auto depth = vtkSmartPointer<vtkImageData>::New();
+  depth->DeepCopy(zGrab->GetOutput());
+
+  vtkNew<vtkMLAAOptions> options;
+  options->SetEdgeDetectionToDepth();
+  options->SetThreshold(0.005);
+  UseMLAA(scene.Renderer, options);
+  auto gpu = vtkMLAAScenes::Capture(scene.Window, true);
+
+  vtkNew<vtkImageMLAA> filter;
+  filter->SetOptions(options);
+  filter->SetInputData(scene.Plain);
+  filter->SetDepthInputData(depth);
+  filter->Update();
+  const Difference parity = Compare(filter->GetOutput(), gpu, 2.0);
+  const Difference changed = Compare(scene.Plain, gpu, 0.0);
+  std::cout << "depth edges: " << parity.Pixels << " pixels off the CPU filter by more than 2/255; "
+            << changed.Pixels << " antialiased" << std::endl;
+  MLAA_CHECK(parity.Count == 0);
+  MLAA_CHECK(changed.Pixels > 100);
+
+  // Luma edges find more (shading inside the surfaces) than depth edges.
+  options->SetEdgeDetectionToLuma();
+  options->SetThreshold(0.1);
+  options->SetDebugOutputToEdges();
+  auto lumaEdges = vtkMLAAScenes::Capture(scene.Window, true);
+  options->SetEdgeDetectionToDepth();
+  options->SetThreshold(0.005);
+  auto depthEdges = vtkMLAAScenes::Capture(scene.Window, true);
+  MLAA_CHECK(Compare(lumaEdges, depthEdges, 0.0).Pixels > 0);
+  return Result();
+}

@@ -1,0 +1,102 @@
+// Resource handling and window changes: the pass keeps matching the CPU filter after a window
+// resize, after ReleaseGraphicsResources, after its renderer is removed from the window and added
+// again, and when an option changes the area texture; ReleaseGraphicsResources frees every target;
+// its MLAA targets take 1.5 times an RGBA8 back buffer (the chapter's figure); tiled rendering
+// (vtkRenderLargeImage) works; a pass without a delegate warns and draws nothing. No errors are
+// reported on the way.
+#include "vtkMLAARenderTestUtilities.h"
+
+#include "vtkRenderLargeImage.h"
+
+using namespace vtkMLAATest;
+
+namespace
+{
+// The pass's render equals the CPU filter on the plain render (RGBA: the window has alpha).
+void CheckParity(vtkRenderWindow* window, vtkRenderer* renderer, vtkOpenGLMLAAPass* pass,
+  const char* when)
+{
+  renderer->SetPass(nullptr);
+  auto plain = vtkMLAAScenes::Capture(window, true);
+  renderer->SetPass(pass);
+  auto result = vtkMLAAScenes::Capture(window, true);
+  auto expected = RunMLAA(plain, pass->GetOptions());
+  const Difference d = Compare(expected, result, 2.0);
+  const Difference changed = Compare(plain, result, 0.0);
+  std::cout << when << ": " << d.Pixels << " pixels off by more than 2/255, " << changed.Pixels
+            << " antialiased" << std::endl;
+  Check(d.Count == 0, when, __FILE__, __LINE__);
+  Check(changed.Pixels > 50, when, __FILE__, __LINE__);
+}
+}
+
+int TestMLAAPassResources(int, char*[])
+{
+  auto window = vtkMLAAScenes::NewOffscreenWindow(300, 200);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  vtkMLAAScenes::Build("silhouettes", renderer);
+  auto pass = UseMLAA(renderer);
+  vtkNew<MessageObserver> messages;
+  messages->Watch(pass);
+
+  MLAA_CHECK(pass->GetTargetMemorySize() == 0);
+  CheckParity(window, renderer, pass, "first render");
+  // Edges RG8 + weights RGBA8 = 6 bytes per pixel: 1.5 x an RGBA8 back buffer.
+  MLAA_CHECK(pass->GetMLAATargetMemorySize() == 300 * 200 * 6);
+  MLAA_CHECK(pass->GetTargetMemorySize() > pass->GetMLAATargetMemorySize());
+
+  window->SetSize(421, 263);
+  CheckParity(window, renderer, pass, "after a resize to 421 x 263");
+  MLAA_CHECK(pass->GetMLAATargetMemorySize() == 421 * 263 * 6);
+
+  pass->ReleaseGraphicsResources(window);
+  MLAA_CHECK(pass->GetTargetMemorySize() == 0);
+  CheckParity(window, renderer, pass, "after ReleaseGraphicsResources");
+
+  window->RemoveRenderer(renderer);
+  window->Render();
+  window->AddRenderer(renderer);
+  CheckParity(window, renderer, pass, "after re-adding the renderer");
+
+  pass->GetOptions()->SetMaxSearchSteps(32); // a new area texture
+  CheckParity(window, renderer, pass, "with 32 search steps");
+  pass->GetOptions()->SetMaxSearchSteps(2);
+  CheckParity(window, renderer, pass, "with 2 search steps");
+
+  // Tiled rendering at twice the window size.
+  renderer->SetPass(nullptr);
+  vtkNew<vtkRenderLargeImage> plainLarge;
+  plainLarge->SetInput(renderer);
+  plainLarge->SetMagnification(2);
+  plainLarge->Update();
+  renderer->SetPass(pass);
+  vtkNew<vtkRenderLargeImage> large;
+  large->SetInput(renderer);
+  large->SetMagnification(2);
+  large->Update();
+  int dims[3];
+  large->GetOutput()->GetDimensions(dims);
+  MLAA_CHECK(dims[0] == 842 && dims[1] == 526);
+  const Difference tiled = Compare(plainLarge->GetOutput(), large->GetOutput(), 0.0);
+  std::cout << "tiled 842 x 526: " << tiled.Pixels << " pixels antialiased" << std::endl;
+  MLAA_CHECK(tiled.Pixels > 100);
+
+  // No delegate: a warning, nothing drawn, no crash.
+  pass->ReleaseGraphicsResources(window);
+  vtkNew<vtkOpenGLMLAAPass> lonely;
+  vtkNew<MessageObserver> lonelyMessages;
+  lonelyMessages->Watch(lonely);
+  renderer->SetPass(lonely);
+  window->Render();
+  MLAA_CHECK(!lonelyMessages->Warnings.empty());
+  renderer->SetPass(nullptr);
+  lonely->ReleaseGraphicsResources(window);
+
+  MLAA_CHECK(messages->Errors.empty());
+  for (const auto& e : messages->Errors)
+  {
+    std::cerr << "error: " << e << std::endl;
+  }
+  return Result();
+}

@@ -1,0 +1,109 @@
+// Text and a scalar bar over a coloured surface. By default the pass draws the overlay step of
+// its vtkRenderStepsPass delegate after the antialiasing, so every overlay pixel over a flat
+// background comes out exactly as in the plain render, while the surface is antialiased.
+// AntialiasOverlaysOn() antialiases the overlays too (the text then changes). Plus a strict
+// baseline comparison of the default result.
+#include "vtkMLAARenderTestUtilities.h"
+
+#include "vtkActor.h"
+#include "vtkActor2D.h"
+#include "vtkActor2DCollection.h"
+#include "vtkActorCollection.h"
+
+using namespace vtkMLAATest;
+
+namespace
+{
+void SetVisibility(vtkRenderer* renderer, bool actors3D, bool actors2D)
+{
+  vtkActorCollection* actors = renderer->GetActors();
+  actors->InitTraversal();
+  while (vtkActor* a = actors->GetNextActor())
+  {
+    a->SetVisibility(actors3D);
+  }
+  vtkActor2DCollection* overlays = renderer->GetActors2D();
+  overlays->InitTraversal();
+  while (vtkActor2D* a = overlays->GetNextActor2D())
+  {
+    a->SetVisibility(actors2D);
+  }
+}
+
+bool FlatAround(vtkImageData* image, int x, int y, const int dims[3])
+{
+  for (int dy = -2; dy <= 2; ++dy)
+  {
+    for (int dx = -2; dx <= 2; ++dx)
+    {
+      const int nx = std::min(std::max(x + dx, 0), dims[0] - 1);
+      const int ny = std::min(std::max(y + dy, 0), dims[1] - 1);
+      for (int k = 0; k < 3; ++k)
+      {
+        if (GetValue(image, nx, ny, k) != GetValue(image, x, y, k))
+        {
+          return false;
+        }
+      }
+    }
+  }
+  return true;
+}
+}
+
+int TestMLAAPassTextOverlay(int argc, char* argv[])
+{
+  SceneWindow scene("text");
+  vtkRenderer* renderer = scene.Renderer;
+  // Where the overlays are (rendered alone), and where the 3D content is flat.
+  SetVisibility(renderer, false, true);
+  auto overlaysOnly = vtkMLAAScenes::Capture(scene.Window);
+  SetVisibility(renderer, true, false);
+  auto geometryOnly = vtkMLAAScenes::Capture(scene.Window);
+  SetVisibility(renderer, true, true);
+
+  auto pass = UseMLAA(renderer);
+  auto result = vtkMLAAScenes::Capture(scene.Window);
+  pass->AntialiasOverlaysOn();
+  auto overlaysAntialiased = vtkMLAAScenes::Capture(scene.Window);
+  pass->AntialiasOverlaysOff();
+
+  int dims[3];
+  result->GetDimensions(dims);
+  int overlayPixels = 0, untouched = 0, changedWhenAntialiased = 0, geometryChanged = 0;
+  for (int y = 0; y < dims[1]; ++y)
+  {
+    for (int x = 0; x < dims[0]; ++x)
+    {
+      bool isOverlay = false, same = true, sameAA = true;
+      for (int k = 0; k < 3; ++k)
+      {
+        isOverlay = isOverlay || GetValue(overlaysOnly, x, y, k) != 255.0; // white background
+        same = same && GetValue(result, x, y, k) == GetValue(scene.Plain, x, y, k);
+        sameAA = sameAA && GetValue(overlaysAntialiased, x, y, k) == GetValue(scene.Plain, x, y, k);
+      }
+      if (isOverlay && FlatAround(geometryOnly, x, y, dims))
+      {
+        ++overlayPixels;
+        untouched += same ? 1 : 0;
+        changedWhenAntialiased += sameAA ? 0 : 1;
+      }
+      else if (!isOverlay && !same)
+      {
+        ++geometryChanged;
+      }
+    }
+  }
+  std::cout << overlayPixels << " overlay pixels over flat background: " << untouched
+            << " untouched by default, " << changedWhenAntialiased
+            << " changed with AntialiasOverlaysOn; " << geometryChanged
+            << " other pixels antialiased" << std::endl;
+  MLAA_CHECK(overlayPixels > 500);
+  MLAA_CHECK(untouched == overlayPixels);
+  MLAA_CHECK(changedWhenAntialiased > 50);
+  MLAA_CHECK(geometryChanged > 100);
+
+  scene.Window->Render();
+  CheckBaseline(argc, argv, "TestMLAAPassTextOverlay", scene.Window, result, scene.Plain, 100);
+  return Result();
+}

@@ -1,0 +1,86 @@
+// The pass with floating-point colour and with other image-processing passes:
+// - MLAA after tone mapping (the pass's delegate is a vtkToneMappingPass): equal to the CPU
+//   filter on the tone-mapped render;
+// - MLAA before tone mapping (the pass is the delegate of a vtkToneMappingPass, so it draws into
+//   a floating-point framebuffer and renders its own delegate in floating point): edges are
+//   antialiased, flat regions keep their colour, and no GL error is reported.
+#include "vtkMLAARenderTestUtilities.h"
+
+#include "vtkToneMappingPass.h"
+
+using namespace vtkMLAATest;
+
+int TestMLAAPassToneMapping(int, char*[])
+{
+  SceneWindow scene("silhouettes", 400, 300, true);
+  vtkRenderer* renderer = scene.Renderer;
+
+  // Tone mapping alone.
+  vtkNew<vtkRenderStepsPass> steps;
+  vtkNew<vtkToneMappingPass> toneMapping;
+  toneMapping->SetToneMappingType(vtkToneMappingPass::Reinhard);
+  toneMapping->SetDelegatePass(steps);
+  renderer->SetPass(toneMapping);
+  auto toneMapped = vtkMLAAScenes::Capture(scene.Window, true);
+  renderer->SetPass(nullptr);
+
+  // MLAA after tone mapping.
+  vtkNew<vtkOpenGLMLAAPass> after;
+  vtkNew<MessageObserver> messages;
+  messages->Watch(after);
+  after->SetDelegatePass(toneMapping);
+  renderer->SetPass(after);
+  auto mlaaAfter = vtkMLAAScenes::Capture(scene.Window, true);
+  const Difference parity = Compare(RunMLAA(toneMapped), mlaaAfter, 2.0);
+  std::cout << "MLAA after tone mapping: " << parity.Pixels
+            << " pixels off the CPU filter by more than 2/255" << std::endl;
+  MLAA_CHECK(parity.Count == 0);
+  MLAA_CHECK(Compare(toneMapped, mlaaAfter, 0.0).Pixels > 200);
+  renderer->SetPass(nullptr);
+  after->ReleaseGraphicsResources(scene.Window);
+  toneMapping->ReleaseGraphicsResources(scene.Window);
+
+  // MLAA before tone mapping, on floating-point colour.
+  vtkNew<vtkRenderStepsPass> innerSteps;
+  vtkNew<vtkOpenGLMLAAPass> before;
+  messages->Watch(before);
+  before->SetDelegatePass(innerSteps);
+  vtkNew<vtkToneMappingPass> outer;
+  outer->SetToneMappingType(vtkToneMappingPass::Reinhard);
+  outer->SetDelegatePass(before);
+  renderer->SetPass(outer);
+  auto mlaaBefore = vtkMLAAScenes::Capture(scene.Window, true);
+  // The pass rendered into 32-bit float colour (16 bytes per pixel) plus depth, edges, weights,
+  // mask and the area texture.
+  const vtkIdType pixels = 400 * 300;
+  MLAA_CHECK(before->GetTargetMemorySize() ==
+    pixels * (16 + 4 + 2 + 4 + 2) + 85 * 85 * 8);
+  int dims[3];
+  toneMapped->GetDimensions(dims);
+  int changed = 0, flatChanged = 0;
+  for (int y = 2; y < dims[1] - 2; ++y)
+  {
+    for (int x = 2; x < dims[0] - 2; ++x)
+    {
+      bool flat = true;
+      for (int dy = -2; dy <= 2 && flat; ++dy)
+      {
+        for (int dx = -2; dx <= 2 && flat; ++dx)
+        {
+          flat = std::abs(GetValue(toneMapped, x + dx, y + dy, 1) - GetValue(toneMapped, x, y, 1)) <= 4.0;
+        }
+      }
+      const bool differs = std::abs(GetValue(toneMapped, x, y, 1) - GetValue(mlaaBefore, x, y, 1)) > 1.0;
+      changed += differs ? 1 : 0;
+      flatChanged += (differs && flat) ? 1 : 0;
+    }
+  }
+  std::cout << "MLAA before tone mapping: " << changed << " pixels changed, " << flatChanged
+            << " of them in flat regions" << std::endl;
+  MLAA_CHECK(changed > 200);
+  MLAA_CHECK(flatChanged == 0);
+  MLAA_CHECK(messages->Errors.empty());
+  renderer->SetPass(nullptr);
+  outer->ReleaseGraphicsResources(scene.Window);
+  return Result();
+}

@@ -1,0 +1,128 @@
+// Helpers for the offscreen rendering tests of vtkOpenGLMLAAPass: a renderer with the pass,
+// crops, and a strict baseline comparison (VTK's own is too loose to show that antialiasing ran).
+#ifndef vtkMLAARenderTestUtilities_h
+#define vtkMLAARenderTestUtilities_h
+
+#include "vtkMLAAScenes.h"
+#include "vtkMLAATestUtilities.h"
+
+#include "vtkExtractVOI.h"
+#include "vtkOpenGLMLAAPass.h"
+#include "vtkRegressionTestImage.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+
+#include <cstring>
+
+namespace vtkMLAATest
+{
+// Sets an MLAA pass (delegate: the standard render steps) on a renderer.
+inline vtkSmartPointer<vtkOpenGLMLAAPass> UseMLAA(vtkRenderer* renderer, vtkMLAAOptions* options = nullptr)
+{
+  vtkNew<vtkRenderStepsPass> steps;
+  auto pass = vtkSmartPointer<vtkOpenGLMLAAPass>::New();
+  pass->SetDelegatePass(steps);
+  if (options)
+  {
+    pass->SetOptions(options);
+  }
+  renderer->SetPass(pass);
+  return pass;
+}
+
+// Removes the pass of `renderer` and releases its GL resources.
+inline void StopMLAA(vtkRenderer* renderer, vtkRenderWindow* window)
+{
+  if (vtkRenderPass* pass = renderer->GetPass())
+  {
+    pass->ReleaseGraphicsResources(window);
+    renderer->SetPass(nullptr);
+  }
+}
+
+// The pixels [x0, x0 + w) x [y0, y0 + h) of an image.
+inline vtkSmartPointer<vtkImageData> Crop(vtkImageData* image, int x0, int y0, int w, int h)
+{
+  vtkNew<vtkExtractVOI> voi;
+  voi->SetInputData(image);
+  voi->SetVOI(x0, x0 + w - 1, y0, y0 + h - 1, 0, 0);
+  voi->Update();
+  auto out = vtkSmartPointer<vtkImageData>::New();
+  out->DeepCopy(voi->GetOutput());
+  out->SetOrigin(0, 0, 0);
+  int ext[6];
+  out->GetExtent(ext);
+  out->SetExtent(0, ext[1] - ext[0], 0, ext[3] - ext[2], 0, 0);
+  return out;
+}
+
+inline std::string Argument(int argc, char* argv[], const char* flag)
+{
+  for (int i = 1; i + 1 < argc; ++i)
+  {
+    if (std::strcmp(argv[i], flag) == 0)
+    {
+      return argv[i + 1];
+    }
+  }
+  return std::string();
+}
+
+// Compares the antialiased render `result` of `window` with the baseline given by -V:
+// - no pixel may differ from the baseline by more than 2/255 (llvmpipe is deterministic);
+// - VTK's own regression test must pass too (it records the images for CDash);
+// - the result must differ from the plain render `plain` on more than `minChanged` pixels, so a
+//   baseline of an image that was not antialiased cannot pass.
+// On failure the result is written to the -T directory as <name>.png.
+inline void CheckBaseline(int argc, char* argv[], const std::string& name, vtkRenderWindow* window,
+  vtkImageData* result, vtkImageData* plain, vtkIdType minChanged)
+{
+  const std::string baselinePath = Argument(argc, argv, "-V");
+  const std::string resultPath = Argument(argc, argv, "-T") + "/" + name + ".png";
+  const Difference changed = Compare(plain, result, 0.0);
+  std::cout << name << ": the pass changed " << changed.Pixels << " of " << changed.Total
+            << " pixels" << std::endl;
+  Check(changed.Pixels > minChanged, "the pass changed the render", __FILE__, __LINE__);
+
+  auto baseline = ReadPNG(baselinePath);
+  if (!baseline)
+  {
+    WritePNG(result, resultPath);
+    std::cerr << "no baseline at " << baselinePath << "; the result is in " << resultPath
+              << std::endl;
+    Check(false, "baseline present", __FILE__, __LINE__);
+    return;
+  }
+  const Difference d = Compare(result, baseline, 2.0);
+  if (!Check(d.Count == 0, "result within 2/255 of the baseline", __FILE__, __LINE__))
+  {
+    WritePNG(result, resultPath);
+    std::cerr << d.Pixels << " pixels differ from the baseline by more than 2/255 (largest "
+              << d.Max << "); the result is in " << resultPath << std::endl;
+  }
+  Check(Compare(plain, baseline, 0.0).Pixels > minChanged, "the baseline is antialiased",
+    __FILE__, __LINE__);
+  const int vtkResult = vtkRegressionTestImage(window);
+  Check(vtkResult == vtkRegressionTester::PASSED, "VTK's regression test", __FILE__, __LINE__);
+}
+
+// A one-renderer window with a scene, and the scene's plain (single-sample) render.
+struct SceneWindow
+{
+  vtkSmartPointer<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkSmartPointer<vtkImageData> Plain;
+
+  SceneWindow(const std::string& scene, int width = 400, int height = 300, bool alpha = false)
+  {
+    this->Window = vtkMLAAScenes::NewOffscreenWindow(width, height);
+    this->Window->AddRenderer(this->Renderer);
+    vtkMLAAScenes::Build(scene, this->Renderer);
+    this->Plain = vtkMLAAScenes::Capture(this->Window, alpha);
+  }
+  ~SceneWindow() { StopMLAA(this->Renderer, this->Window); }
+};
+}
+
+#endif
