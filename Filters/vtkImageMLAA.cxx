@@ -307,17 +307,31 @@ private:
   int TopAt(int x, int y) const { return (this->ClampedEdgesAt(x, y) & TopEdge) ? 1 : 0; }
   int LeftAt(int x, int y) const { return (this->ClampedEdgesAt(x, y) & LeftEdge) ? 1 : 0; }
 
-  // Section 4.3.1: distance from (x, y) to the end of its line of top edgels in direction dx,
-  // or of left edgels in direction dy, reading two edgels per step as one bilinear fetch does.
-  // Both set: go on. One set: it is taken to be the nearer one. None: the line has ended.
+  // Section 4.3.1: distance from (x, y) to the end of its line of top edgels in direction dx
+  // (-1 left, +1 right), or of left edgels in direction dy (-1 down, +1 up). Each step looks at
+  // the next two pixels along the line, as the GPU does with two bilinear fetches:
+  // - the two edgels along the line (weighted 3:1, so that each can be told apart);
+  // - the crossing edgels (perpendicular ones, on either side of the line) at the boundary
+  //   before the first pixel and at the boundary between the two.
+  // The line ends before the first pixel without an edgel, or at the first boundary with a
+  // crossing edgel. Stopping at crossing edges (which the chapter's search does not, section
+  // 4.3.1 and 4.6) keeps the top and bottom outlines of one-pixel-wide lines apart.
   int SearchTopEdges(int x, int y, int dx) const
   {
     for (int i = 0; i < this->S.SearchSteps; ++i)
     {
-      const int n = this->TopAt(x + dx * (2 * i + 1), y) + this->TopAt(x + dx * (2 * i + 2), y);
-      if (n < 2)
+      const int first = x + dx * (2 * i + 1);
+      const int second = first + dx;
+      // Left edgels of the pixels right of the two boundaries, on this row and the one above.
+      const int nearOwner = std::max(first, first - dx);
+      const int midOwner = std::max(first, second);
+      if (this->LeftAt(nearOwner, y) || this->LeftAt(nearOwner, y + 1) || !this->TopAt(first, y))
       {
-        return 2 * i + n;
+        return 2 * i;
+      }
+      if (this->LeftAt(midOwner, y) || this->LeftAt(midOwner, y + 1) || !this->TopAt(second, y))
+      {
+        return 2 * i + 1;
       }
     }
     return 2 * this->S.SearchSteps;
@@ -326,10 +340,18 @@ private:
   {
     for (int i = 0; i < this->S.SearchSteps; ++i)
     {
-      const int n = this->LeftAt(x, y + dy * (2 * i + 1)) + this->LeftAt(x, y + dy * (2 * i + 2));
-      if (n < 2)
+      const int first = y + dy * (2 * i + 1);
+      const int second = first + dy;
+      // Top edgels of the pixels below the two boundaries, in this column and the one left.
+      const int nearOwner = std::min(first, first - dy);
+      const int midOwner = std::min(first, second);
+      if (this->TopAt(x, nearOwner) || this->TopAt(x - 1, nearOwner) || !this->LeftAt(x, first))
       {
-        return 2 * i + n;
+        return 2 * i;
+      }
+      if (this->TopAt(x, midOwner) || this->TopAt(x - 1, midOwner) || !this->LeftAt(x, second))
+      {
+        return 2 * i + 1;
       }
     }
     return 2 * this->S.SearchSteps;

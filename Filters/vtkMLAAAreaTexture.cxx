@@ -53,8 +53,19 @@ void vtkMLAAAreaTexture::ComputeAreas(int e1, int e2, int left, int right, doubl
   const double middle = 0.5 * length;
   const double x0 = left;
   const double x1 = left + 1.0;
-  const double h1 = EndHeight(e1);
-  const double h2 = EndHeight(e2);
+  double h1 = EndHeight(e1);
+  double h2 = EndHeight(e2);
+  // Crossing edges on both sides at one end (code 4) and on one side at the other: the line
+  // continues diagonally past that end (a one-pixel-wide line or gap), so its boundary leaves
+  // the edge there on the side opposite the other end's: a Z shape.
+  if (e1 == 4 && h2 != 0.0)
+  {
+    h1 = -h2;
+  }
+  if (e2 == 4 && h1 != 0.0)
+  {
+    h2 = -h1;
+  }
 
   double signedAreas[2] = { 0.0, 0.0 }; // first half, second half
   if (h1 != 0.0 && x0 < middle)

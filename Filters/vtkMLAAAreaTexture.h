@@ -24,11 +24,16 @@
  * pixel into that side, in the middle of the crossing edge, and the line reaches the edge itself
  * at the middle of its length, L / 2 with L = left + right + 1. Two such ends give a U shape
  * (same side) or a Z shape (opposite sides, a straight line through the middle); one gives an
- * L shape. An end with no crossing edge, or with crossing edges on both sides (a + junction,
- * where no slope can be told), adds nothing. The areas are exact integrals of this
- * piecewise-linear line over the pixel, evaluated in double precision; an L shape gives the
- * trapeze area 1/2 (1 - (2p + 1) / L) of "Morphological antialiasing and topological
- * reconstruction" (section 3.4) for the p-th pixel from its crossing edge.
+ * L shape. An end with no crossing edge adds nothing. An end with crossing edges on both sides
+ * (code 4) is where a one-pixel-wide line (or gap) steps on diagonally: with a one-sided
+ * crossing edge at the other end, it acts as a crossing edge on the side opposite to that one,
+ * which makes the pattern the Z that the outline of such a line is; with nothing or code 4 at the
+ * other end (a + junction, the end of a thin line) no slope can be told and it adds nothing. The
+ * chapter leaves code 4's areas to its web material; this reading is the project's. The areas
+ * are exact integrals of this piecewise-linear line over the pixel, evaluated in double
+ * precision; an L shape gives the trapeze area 1/2 (1 - (2p + 1) / L) of "Morphological
+ * antialiasing and topological reconstruction" (section 3.4) for the p-th pixel from its crossing
+ * edge.
  *
  * Tables are computed once per D and shared by all instances (thread-safe). The CPU filter
  * vtkImageMLAA reads GetTable(); the GPU pass vtkOpenGLMLAAPass uploads the same table.

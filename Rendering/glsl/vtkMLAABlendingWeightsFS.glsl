@@ -7,7 +7,7 @@
 // Runs on pixels with an edge only (see the edge-detection pass). For the top edgel of the pixel
 // (a horizontal line) and for its left edgel (a vertical line):
 // 1. the distances to both ends of the line, reading two edgels per bilinear fetch
-//    (section 4.3.1, Listing 4.3);
+//    (section 4.3.1, Listing 4.3) and stopping at crossing edges;
 // 2. the crossing edges at both ends, read a quarter pixel off the line so that one bilinear
 //    fetch tells which of the two possible edgels are set (section 4.3.2, Figure 4.4);
 // 3. the two areas of the precomputed area texture (section 4.3.3, Listing 4.4).
@@ -34,43 +34,62 @@ vec2 edgesAt(vec2 position)
 }
 
 // Distance from the pixel centred at `center` to the end of its line of top edgels (green) in
-// `direction` (-1 left, +1 right). The first read sits between the first and the second pixel in
-// that direction, so it returns the mean of two edgels: 1 (both set: go on two pixels), 0.5 (one
-// set: taken to be the nearer one) or 0 (the line has ended). We compare with 0.9, not 1, to stay
-// clear of the filtering's rounding.
+// `direction` (-1 left, +1 right). Each step covers the next two pixels with two bilinear fetches
+// (section 4.3.1 reads two edgels per fetch; the quarter-texel offsets of section 4.3.2 make
+// every edgel of a fetch readable):
+// - along the line, a quarter texel from the first pixel's centre towards the second: 3/4 of the
+//   first edgel plus 1/4 of the second, so round(4 v) = 3 e1 + e2;
+// - the crossing edgels (left edgels, red) at the boundary before the first pixel ("near") and
+//   between the two ("mid"), on this row and the one above: a fetch on the row boundary, a
+//   quarter texel from the mid boundary's owner towards the near one's, so round(8 v) =
+//   3 n_mid + n_near with n the number of crossing edgels (0 to 2) at each boundary.
+// The line ends before the first pixel without an edgel or at the first boundary with a crossing
+// edgel. (The chapter's search does not stop at crossing edges; stopping keeps the two outlines
+// of one-pixel-wide lines apart.)
 float searchTopEdges(vec2 center, float direction)
 {
-  vec2 position = center + vec2(1.5 * direction, 0.0);
-  float e = 0.0;
-  int i;
-  for (i = 0; i < maxSearchSteps; ++i)
+  for (int i = 0; i < maxSearchSteps; ++i)
   {
-    e = edgesAt(position).g;
-    if (e < 0.9)
+    float first = center.x - 0.5 + direction * float(2 * i + 1); // the first pixel's index
+    int along = int(round(4.0 * edgesAt(vec2(first + 0.5 + 0.25 * direction, center.y)).g));
+    // The mid boundary belongs to the right pixel of the pair, the near one to the right pixel
+    // of (previous, first).
+    float crossingX = direction < 0.0 ? first + 0.75 : first + 1.25;
+    int crossing = int(round(8.0 * edgesAt(vec2(crossingX, center.y + 0.5)).r));
+    if (crossing % 3 != 0 || along < 3)
     {
-      break;
+      return float(2 * i);
     }
-    position.x += 2.0 * direction;
+    if (crossing >= 3 || (along != 1 && along != 4))
+    {
+      return float(2 * i + 1);
+    }
   }
-  return min(2.0 * float(i) + 2.0 * e, 2.0 * float(maxSearchSteps));
+  return float(2 * maxSearchSteps);
 }
 
-// The same along a column of left edgels (red), -1 down, +1 up.
+// The same along a column of left edgels (red), -1 down, +1 up; the crossing edgels are top
+// edgels (green) of this column and the one to the left.
 float searchLeftEdges(vec2 center, float direction)
 {
-  vec2 position = center + vec2(0.0, 1.5 * direction);
-  float e = 0.0;
-  int i;
-  for (i = 0; i < maxSearchSteps; ++i)
+  for (int i = 0; i < maxSearchSteps; ++i)
   {
-    e = edgesAt(position).r;
-    if (e < 0.9)
+    float first = center.y - 0.5 + direction * float(2 * i + 1);
+    int along = int(round(4.0 * edgesAt(vec2(center.x, first + 0.5 + 0.25 * direction)).r));
+    // The mid boundary belongs to the lower pixel of the pair, the near one to the lower pixel of
+    // (previous, first).
+    float crossingY = direction > 0.0 ? first + 0.25 : first - 0.25;
+    int crossing = int(round(8.0 * edgesAt(vec2(center.x - 0.5, crossingY)).g));
+    if (crossing % 3 != 0 || along < 3)
     {
-      break;
+      return float(2 * i);
     }
-    position.y += 2.0 * direction;
+    if (crossing >= 3 || (along != 1 && along != 4))
+    {
+      return float(2 * i + 1);
+    }
   }
-  return min(2.0 * float(i) + 2.0 * e, 2.0 * float(maxSearchSteps));
+  return float(2 * maxSearchSteps);
 }
 
 // The crossing-edge code 0, 1, 3 or 4 of a fetch weighted 3:1 between the owning pixel's row

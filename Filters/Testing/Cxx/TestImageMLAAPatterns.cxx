@@ -185,6 +185,41 @@ void ZShape()
   MLAA_CHECK(GetValue(out, 6, 3) == 32.0);
 }
 
+void ThinLine()
+{
+  // A one-pixel-wide black line rising one row every 4 pixels: pixel (x, 2 + x / 4). Run B is
+  // (4..7, 3). Its top outline (top edgels of row 3, owned by the line) starts with a crossing
+  // edge on the line's side at x = 4 and ends at x = 8 where the line steps up: crossing edgels
+  // on both sides (code 4). The search stops there (x = 8 also has top edgels, those of the white
+  // pixels under run C, but a crossing edge ends the line), and code 4 opposite a code 3 reads as
+  // a Z: the line's pixels lose 3/8, 1/8 to the white above on the left half, and the white
+  // pixels above the right half take 1/8, 3/8 of the line. The bottom outline (top edgels of row
+  // 2, owned by the white pixels below) is the same Z seen from below, and the one-pixel risers
+  // at x = 4 are Z shapes of length 1 (1/8 each side).
+  auto in = Grey(24, 10, [](int x, int y) { return y != 2 + x / 4; });
+  auto weights = Weights(in);
+  const int q3 = Q(3.0 / 8.0), q1 = Q(1.0 / 8.0);
+  // Top outline of run B.
+  MLAA_CHECK(GetValue(weights, 4, 3, 0) == q3 && GetValue(weights, 4, 3, 1) == 0);
+  MLAA_CHECK(GetValue(weights, 5, 3, 0) == q1 && GetValue(weights, 5, 3, 1) == 0);
+  MLAA_CHECK(GetValue(weights, 6, 3, 0) == 0 && GetValue(weights, 6, 3, 1) == q1);
+  MLAA_CHECK(GetValue(weights, 7, 3, 0) == 0 && GetValue(weights, 7, 3, 1) == q3);
+  // Bottom outline of run B.
+  MLAA_CHECK(GetValue(weights, 4, 2, 0) == q3 && GetValue(weights, 5, 2, 0) == q1);
+  MLAA_CHECK(GetValue(weights, 6, 2, 1) == q1 && GetValue(weights, 7, 2, 1) == q3);
+  // Risers.
+  MLAA_CHECK(GetValue(weights, 4, 3, 2) == q1 && GetValue(weights, 4, 3, 3) == q1);
+  MLAA_CHECK(GetValue(weights, 4, 2, 2) == q1 && GetValue(weights, 4, 2, 3) == q1);
+
+  auto out = RunMLAA(in);
+  // A line pixel that loses 1/8 to the white above; a white pixel that takes 1/8 of the line
+  // below it; a white pixel under the start of run B taking 3/8 from above and 1/8 from its
+  // black left neighbour: 255 (96 * 159 + 32 * 223) / 255^2 / (128 / 255) = 22400 / 128 = 175.
+  MLAA_CHECK(GetValue(out, 5, 3) == q1);
+  MLAA_CHECK(GetValue(out, 6, 4) == White - q1);
+  MLAA_CHECK(GetValue(out, 4, 2) == 175.0);
+}
+
 void LongLine(int searchSteps)
 {
   // A single step at x = 20 in a 64 x 4 image: the line of top edgels on row 0 (x < 20) ends
@@ -237,6 +272,7 @@ int TestImageMLAAPatterns(int, char*[])
   LShape();
   UShape();
   ZShape();
+  ThinLine();
   for (int steps : { 1, 2, 4, 8, 16 })
   {
     LongLine(steps);

@@ -67,8 +67,12 @@ int TestMLAAAreaTexture(int, char*[])
   EXPECT(table[2 * ((d * 3 + 2) * size + (d * 1 + 5)) + 0] == texture->GetArea(1, 3, 5, 2, 0));
   EXPECT(table[2 * ((d * 3 + 2) * size + (d * 1 + 5)) + 1] == texture->GetArea(1, 3, 5, 2, 1));
 
-  // Code 2 cannot occur: its row and column of cells are empty. No crossing edges (code 0)
-  // and crossing edges on both sides (code 4, a + junction) give no slope: nothing to blend.
+  // Code 2 cannot occur: its row and column of cells are empty. No crossing edges (code 0) and
+  // crossing edges on both sides at both ends (4, 4) give no slope: nothing to blend. Code 4 at
+  // one end and no crossing edge at the other: no slope either. Code 4 at one end and a one-sided
+  // crossing edge (1 or 3) at the other: the line continues diagonally past the code-4 end, so
+  // that end acts as the other side's crossing edge and the pattern is a Z.
+  const int otherSide[5] = { 0, 3, 0, 1, 0 };
   for (int e = 0; e < 5; ++e)
   {
     for (int l = 0; l < d; ++l)
@@ -82,9 +86,12 @@ int TestMLAAAreaTexture(int, char*[])
           EXPECT(texture->GetArea(0, 0, l, r, c) == 0.0f);
           EXPECT(texture->GetArea(4, 4, l, r, c) == 0.0f);
           EXPECT(texture->GetArea(0, 4, l, r, c) == 0.0f);
-          // A + junction at one end behaves like an open end.
-          EXPECT(texture->GetArea(4, e, l, r, c) == texture->GetArea(0, e, l, r, c));
-          EXPECT(texture->GetArea(e, 4, l, r, c) == texture->GetArea(e, 0, l, r, c));
+          EXPECT(texture->GetArea(4, 0, l, r, c) == 0.0f);
+          if (e == 1 || e == 3)
+          {
+            EXPECT(texture->GetArea(4, e, l, r, c) == texture->GetArea(otherSide[e], e, l, r, c));
+            EXPECT(texture->GetArea(e, 4, l, r, c) == texture->GetArea(e, otherSide[e], l, r, c));
+          }
         }
       }
     }
@@ -171,6 +178,13 @@ int TestMLAAAreaTexture(int, char*[])
   EXPECT_AREAS(1, 3, 1, 1, 1.0 / 24.0, 1.0 / 24.0); // line of 3, middle: 1/(8*3) each
   EXPECT_AREAS(3, 1, 1, 2, 1.0 / 8.0, 0.0);         // line of 4, second pixel
   EXPECT_AREAS(3, 1, 2, 1, 0.0, 1.0 / 8.0);         // line of 4, third pixel
+  // The top outline of a run of a one-pixel-wide line rising to the right: crossing edge on the
+  // own side at the left end (3), on both sides at the right end (4, the line goes on up): a Z.
+  EXPECT_AREAS(3, 4, 0, 3, 3.0 / 8.0, 0.0);
+  EXPECT_AREAS(3, 4, 3, 0, 0.0, 3.0 / 8.0);
+  // Its bottom outline: both sides at the left end, opposite side at the right end.
+  EXPECT_AREAS(4, 1, 0, 3, 3.0 / 8.0, 0.0);
+  EXPECT_AREAS(4, 1, 2, 1, 0.0, 1.0 / 8.0);
 
   // Areas never exceed one half (a pixel is never more than half covered by a neighbour).
   texture->SetMaxDistance(64);
