@@ -1,0 +1,1159 @@
+// Tests of the `mlaa` command-line tool, one case per ctest test:
+//
+//   TestMLAATool CASE MLAA_EXECUTABLE SCRATCH_DIRECTORY
+//
+// Each case writes its input images with OpenImageIO (row by row, with code of its own rather
+// than the tool's), runs the tool as a child process, and checks the exit status, stdout,
+// stderr and the files left behind. Antialiased images are compared exactly with vtkImageMLAA
+// run here on the same pixels; the checks that antialiasing happened at all (edge pixels
+// change, flat regions do not) are separate, as VTK's loose regression comparison cannot show
+// it (see the project's ENVIRONMENT notes).
+#include "vtkMLAATestUtilities.h"
+
+#include "vtkMLAAAreaTexture.h"
+
+#include <OpenImageIO/half.h>
+#include <OpenImageIO/imageio.h>
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+extern char** environ;
+
+using namespace vtkMLAATest;
+namespace fs = std::filesystem;
+
+namespace
+{
+//------------------------------------------------------------------------------
+// Where things are
+
+struct Context
+{
+  std::string Tool; // the mlaa executable
+  fs::path Work;    // input and output images
+  fs::path Logs;    // the tool's stdout and stderr
+};
+
+Context& Where()
+{
+  static Context context;
+  return context;
+}
+
+fs::path WorkFile(const std::string& name)
+{
+  return Where().Work / name;
+}
+
+std::string ReadText(const fs::path& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void WriteText(const fs::path& path, const std::string& text)
+{
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
+// Names of the files in a directory, hidden ones included.
+std::set<std::string> Listing(const fs::path& directory)
+{
+  std::set<std::string> names;
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(directory, error))
+  {
+    names.insert(entry.path().filename().string());
+  }
+  return names;
+}
+
+//------------------------------------------------------------------------------
+// Image files, written and read here independently of the tool's code: one scanline at a time,
+// file row r <-> vtkImageData row height - 1 - r.
+
+OIIO::TypeDesc BufferTypeOf(vtkImageData* image)
+{
+  switch (image->GetScalarType())
+  {
+    case VTK_UNSIGNED_CHAR:
+      return OIIO::TypeDesc::UINT8;
+    case VTK_UNSIGNED_SHORT:
+      return OIIO::TypeDesc::UINT16;
+    case VTK_FLOAT:
+      return OIIO::TypeDesc::FLOAT;
+    default:
+      throw std::runtime_error("test images are uint8, uint16 or float");
+  }
+}
+
+void WriteFile(vtkImageData* image, const fs::path& path, OIIO::TypeDesc fileType)
+{
+  int dims[3];
+  image->GetDimensions(dims);
+  const int channels = image->GetNumberOfScalarComponents();
+  const OIIO::TypeDesc bufferType = BufferTypeOf(image);
+  OIIO::ImageSpec spec(dims[0], dims[1], channels, fileType);
+  spec.attribute("oiio:UnassociatedAlpha", 1); // alpha as stored, as the tool keeps it
+  auto out = OIIO::ImageOutput::create(path.string());
+  if (!out || !out->open(path.string(), spec))
+  {
+    throw std::runtime_error("cannot write test image " + path.string() + ": " +
+      (out ? out->geterror() : OIIO::geterror()));
+  }
+  for (int row = 0; row < dims[1]; ++row)
+  {
+    if (!out->write_scanline(row, 0, bufferType, image->GetScalarPointer(0, dims[1] - 1 - row, 0)))
+    {
+      throw std::runtime_error("cannot write test image " + path.string() + ": " + out->geterror());
+    }
+  }
+  out->close();
+}
+
+// A file read back: its pixels (half as float) and what the file says it holds.
+struct FileImage
+{
+  vtkSmartPointer<vtkImageData> Image;
+  OIIO::TypeDesc Type;
+  std::string Format;
+};
+
+FileImage ReadFile(const fs::path& path)
+{
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto in = OIIO::ImageInput::open(path.string(), &config);
+  if (!in)
+  {
+    throw std::runtime_error("cannot read " + path.string() + ": " + OIIO::geterror());
+  }
+  const OIIO::ImageSpec& spec = in->spec();
+  FileImage file;
+  file.Type = spec.format;
+  file.Format = in->format_name();
+  int vtkType = VTK_FLOAT;
+  if (spec.format == OIIO::TypeDesc::UINT8)
+  {
+    vtkType = VTK_UNSIGNED_CHAR;
+  }
+  else if (spec.format == OIIO::TypeDesc::UINT16)
+  {
+    vtkType = VTK_UNSIGNED_SHORT;
+  }
+  else if (spec.format != OIIO::TypeDesc::HALF && spec.format != OIIO::TypeDesc::FLOAT)
+  {
+    throw std::runtime_error(path.string() + " holds " + spec.format.c_str() + " pixels");
+  }
+  file.Image = MakeImage(spec.width, spec.height, spec.nchannels, vtkType);
+  const OIIO::TypeDesc bufferType = BufferTypeOf(file.Image);
+  for (int row = 0; row < spec.height; ++row)
+  {
+    if (!in->read_scanline(
+          row, 0, bufferType, file.Image->GetScalarPointer(0, spec.height - 1 - row, 0)))
+    {
+      throw std::runtime_error("cannot read " + path.string() + ": " + in->geterror());
+    }
+  }
+  return file;
+}
+
+// One value of a file as stored, at (column, row) counted from the top left of the file.
+int FileTexel(const fs::path& path, int column, int row, int channel)
+{
+  auto in = OIIO::ImageInput::open(path.string());
+  if (!in)
+  {
+    throw std::runtime_error("cannot read " + path.string() + ": " + OIIO::geterror());
+  }
+  const OIIO::ImageSpec& spec = in->spec();
+  std::vector<unsigned char> line(static_cast<size_t>(spec.width) * spec.nchannels);
+  if (!in->read_scanline(row, 0, OIIO::TypeDesc::UINT8, line.data()))
+  {
+    throw std::runtime_error("cannot read " + path.string() + ": " + in->geterror());
+  }
+  return line[static_cast<size_t>(column) * spec.nchannels + channel];
+}
+
+//------------------------------------------------------------------------------
+// Running the tool
+
+struct Run
+{
+  int Status = -1;
+  std::string Out;
+  std::string Err;
+};
+
+Run RunTool(const std::vector<std::string>& args)
+{
+  const fs::path outPath = Where().Logs / "stdout";
+  const fs::path errPath = Where().Logs / "stderr";
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(
+    &actions, 1, outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(
+    &actions, 2, errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  std::vector<std::string> command = { Where().Tool };
+  command.insert(command.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& arg : command)
+  {
+    argv.push_back(&arg[0]);
+  }
+  argv.push_back(nullptr);
+
+  std::cout << "$ mlaa";
+  for (const std::string& arg : args)
+  {
+    std::cout << " '" << arg << "'";
+  }
+  std::cout << std::endl;
+
+  Run run;
+  pid_t pid;
+  if (posix_spawn(&pid, command[0].c_str(), &actions, nullptr, argv.data(), environ) != 0)
+  {
+    posix_spawn_file_actions_destroy(&actions);
+    throw std::runtime_error("cannot run " + command[0]);
+  }
+  posix_spawn_file_actions_destroy(&actions);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  run.Status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  run.Out = ReadText(outPath);
+  run.Err = ReadText(errPath);
+  std::cout << "  exit status " << run.Status << "; stderr: " << run.Err
+            << (run.Err.empty() || run.Err.back() != '\n' ? "\n" : "");
+  return run;
+}
+
+// stderr is exactly one line, starting with "mlaa: ".
+bool IsOneMlaaLine(const std::string& err)
+{
+  return err.size() > 6 && err.compare(0, 6, "mlaa: ") == 0 && err.back() == '\n' &&
+    std::count(err.begin(), err.end(), '\n') == 1;
+}
+
+// Runs the tool on arguments that must succeed and produce `output` (and nothing else in its
+// directory); stderr must be empty unless a warning is expected.
+void ExpectSuccess(
+  const std::vector<std::string>& args, const fs::path& output, bool expectWarning = false)
+{
+  const fs::path directory = output.parent_path();
+  std::set<std::string> expected = Listing(directory);
+  expected.insert(output.filename().string());
+  const Run run = RunTool(args);
+  MLAA_CHECK(run.Status == 0);
+  MLAA_CHECK(run.Out.empty());
+  if (expectWarning)
+  {
+    MLAA_CHECK(IsOneMlaaLine(run.Err) && run.Err.compare(0, 15, "mlaa: warning: ") == 0);
+  }
+  else
+  {
+    MLAA_CHECK(run.Err.empty());
+  }
+  MLAA_CHECK(fs::is_regular_file(output));
+  MLAA_CHECK(Listing(directory) == expected); // no temporary file left
+}
+
+// Runs the tool on arguments that must fail with `status`: one "mlaa: " line on stderr, nothing
+// on stdout, no new file anywhere near `output`; tried once without `output` (it must not
+// appear) and once with an existing `output` (it must be unchanged).
+void ExpectFailure(const std::vector<std::string>& args, const fs::path& output, int status)
+{
+  const fs::path directory = output.parent_path();
+  for (bool existing : { false, true })
+  {
+    if (existing && !fs::is_directory(directory))
+    {
+      continue; // no file can exist there
+    }
+    const std::string previous = "the previous contents of the output\n";
+    if (existing)
+    {
+      WriteText(output, previous);
+    }
+    const std::set<std::string> before = Listing(Where().Work);
+    const std::set<std::string> beforeOutputDirectory = Listing(directory);
+    const Run run = RunTool(args);
+    MLAA_CHECK(run.Status == status);
+    MLAA_CHECK(run.Out.empty());
+    MLAA_CHECK(IsOneMlaaLine(run.Err));
+    MLAA_CHECK(run.Err.compare(0, 14, "mlaa: warning:") != 0);
+    // VTK's own error format must not show through.
+    MLAA_CHECK(run.Err.find("ERROR: In") == std::string::npos);
+    MLAA_CHECK(run.Err.find("(0x") == std::string::npos);
+    MLAA_CHECK(Listing(Where().Work) == before);
+    MLAA_CHECK(Listing(directory) == beforeOutputDirectory);
+    if (existing)
+    {
+      MLAA_CHECK(ReadText(output) == previous);
+      fs::remove(output);
+    }
+    else
+    {
+      MLAA_CHECK(!fs::exists(output));
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+// Test images
+
+// Two values per channel, `lo` below and `hi` above a shape given by `inside(x, y)` (y up).
+vtkSmartPointer<vtkImageData> TwoToneImage(int width, int height, int type,
+  const std::vector<double>& lo, const std::vector<double>& hi,
+  const std::function<bool(int, int)>& inside)
+{
+  auto image = MakeImage(width, height, static_cast<int>(lo.size()), type);
+  FillImage(image, [&](int x, int y, int, int k) { return inside(x, y) ? hi[k] : lo[k]; });
+  return image;
+}
+
+// Two staircases: a shallow one (steps 3 pixels long, horizontal edges) and a steep one
+// (vertical edges), so that L, Z and U shapes of both orientations occur.
+bool Staircase(int x, int y)
+{
+  return (3 * y > x + 10) != (3 * x > y + 60);
+}
+
+// A staircase image of the given type, lo and hi values per channel.
+vtkSmartPointer<vtkImageData> StaircaseImage(
+  int type, const std::vector<double>& lo, const std::vector<double>& hi)
+{
+  return TwoToneImage(32, 24, type, lo, hi, Staircase);
+}
+
+vtkSmartPointer<vtkImageData> Filter(vtkImageData* input,
+  const std::function<void(vtkImageMLAA*)>& configure = nullptr, vtkImageData* depth = nullptr)
+{
+  vtkNew<vtkImageMLAA> filter;
+  if (configure)
+  {
+    configure(filter);
+  }
+  filter->SetInputData(input);
+  if (depth)
+  {
+    filter->SetDepthInputData(depth);
+  }
+  filter->Update();
+  auto output = vtkSmartPointer<vtkImageData>::New();
+  output->DeepCopy(filter->GetOutput());
+  return output;
+}
+
+bool SamePixel(vtkImageData* image, int x0, int y0, int x1, int y1)
+{
+  for (int k = 0; k < image->GetNumberOfScalarComponents(); ++k)
+  {
+    if (GetValue(image, x0, y0, k) != GetValue(image, x1, y1, k))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// Antialiasing happened where it should and nowhere else: pixels whose four neighbours all
+// equal them (flat regions) are unchanged; pixels on an edge changed, most of them at least.
+// Pixels for which `ignore` is true are not counted as edge pixels. At least
+// `changedFraction` of the edge pixels must change.
+void CheckAntialiased(vtkImageData* input, vtkImageData* output,
+  const std::function<bool(int, int)>& ignore = nullptr, double changedFraction = 0.5)
+{
+  int dims[3];
+  input->GetDimensions(dims);
+  int flatChanged = 0;
+  int edgePixels = 0;
+  int edgeChanged = 0;
+  for (int y = 0; y < dims[1]; ++y)
+  {
+    for (int x = 0; x < dims[0]; ++x)
+    {
+      bool flat = true;
+      const int neighbours[4][2] = { { x - 1, y }, { x + 1, y }, { x, y - 1 }, { x, y + 1 } };
+      for (const auto& n : neighbours)
+      {
+        if (n[0] >= 0 && n[0] < dims[0] && n[1] >= 0 && n[1] < dims[1] &&
+          !SamePixel(input, x, y, n[0], n[1]))
+        {
+          flat = false;
+        }
+      }
+      bool changed = false;
+      for (int k = 0; k < input->GetNumberOfScalarComponents(); ++k)
+      {
+        changed = changed || GetValue(input, x, y, k) != GetValue(output, x, y, k);
+      }
+      if (!flat && ignore && ignore(x, y))
+      {
+        continue;
+      }
+      flatChanged += (flat && changed) ? 1 : 0;
+      edgePixels += flat ? 0 : 1;
+      edgeChanged += (!flat && changed) ? 1 : 0;
+    }
+  }
+  std::cout << "  " << edgeChanged << " of " << edgePixels << " edge pixels changed, "
+            << flatChanged << " flat pixels changed" << std::endl;
+  MLAA_CHECK(flatChanged == 0);
+  MLAA_CHECK(edgePixels > 0 && edgeChanged > 0 && edgeChanged >= changedFraction * edgePixels);
+}
+
+// The output file has the input's size and channels and `type` pixels, and equals `expected`
+// (within `tolerance`).
+void CheckFile(
+  const fs::path& path, vtkImageData* expected, OIIO::TypeDesc type, double tolerance = 0.0)
+{
+  const FileImage file = ReadFile(path);
+  int da[3], db[3];
+  file.Image->GetDimensions(da);
+  expected->GetDimensions(db);
+  MLAA_CHECK(da[0] == db[0] && da[1] == db[1]);
+  MLAA_CHECK(file.Image->GetNumberOfScalarComponents() == expected->GetNumberOfScalarComponents());
+  MLAA_CHECK(file.Type == type);
+  const Difference d = Compare(file.Image, expected, tolerance);
+  if (d.Count != 0)
+  {
+    std::cout << "  " << d.Count << " values differ from vtkImageMLAA's, by up to " << d.Max
+              << std::endl;
+  }
+  MLAA_CHECK(d.Count == 0);
+}
+
+// Writes `pixels` as `fileType` to `inputName`, runs the tool with `args` to `outputName`, and
+// checks the output: same size, channels and pixel type, equal to vtkImageMLAA configured by
+// `configure` on the same pixels, and antialiased.
+void RoundTrip(vtkImageData* pixels, OIIO::TypeDesc fileType, const std::string& inputName,
+  const std::string& outputName, const std::vector<std::string>& options = {},
+  const std::function<void(vtkImageMLAA*)>& configure = nullptr)
+{
+  const fs::path input = WorkFile(inputName);
+  const fs::path output = WorkFile(outputName);
+  WriteFile(pixels, input, fileType);
+  std::vector<std::string> args = options;
+  args.push_back(input.string());
+  args.push_back(output.string());
+  ExpectSuccess(args, output);
+  auto expected = Filter(pixels, configure);
+  CheckFile(output, expected, fileType);
+  CheckAntialiased(pixels, expected);
+}
+
+//------------------------------------------------------------------------------
+// The cases
+
+void HelpListsEveryOption()
+{
+  for (const char* flag : { "--help", "-h" })
+  {
+    // Help wins over anything else on the line, even arguments that are errors.
+    const Run run = RunTool({ "--threshold", "abc", flag });
+    MLAA_CHECK(run.Status == 0);
+    MLAA_CHECK(run.Err.empty());
+    // The text with every run of white space made one space, as the help wraps its lines.
+    std::string words;
+    {
+      std::istringstream stream(run.Out);
+      std::string word;
+      while (stream >> word)
+      {
+        words += (words.empty() ? "" : " ") + word;
+      }
+    }
+    for (const char* option : { "--threshold T", "--edges MODE", "--depth-image FILE",
+           "--max-search-steps N", "--debug", "--value-range LO HI", "--area-texture D",
+           "-h, --help", "Usage: mlaa [options] INPUT OUTPUT" })
+    {
+      if (!MLAA_CHECK(words.find(option) != std::string::npos))
+      {
+        std::cout << "  help does not mention " << option << std::endl;
+      }
+    }
+    // Every mode name, and the defaults, as vtkMLAAOptions has them.
+    vtkNew<vtkMLAAOptions> defaults;
+    for (int m = vtkMLAAOptions::LUMA; m <= vtkMLAAOptions::DEPTH; ++m)
+    {
+      MLAA_CHECK(words.find(std::string(vtkMLAAOptions::GetEdgeDetectionAsString(m)) + ":") !=
+        std::string::npos);
+    }
+    for (int d = vtkMLAAOptions::NO_DEBUG_OUTPUT; d <= vtkMLAAOptions::BLENDING_WEIGHTS; ++d)
+    {
+      MLAA_CHECK(words.find(std::string(vtkMLAAOptions::GetDebugOutputAsString(d)) + ":") !=
+        std::string::npos);
+    }
+    std::ostringstream threshold, steps;
+    threshold << "Default: " << defaults->GetThreshold() << ".";
+    steps << "Default: " << defaults->GetMaxSearchSteps() << " ";
+    MLAA_CHECK(words.find(threshold.str()) != std::string::npos);
+    MLAA_CHECK(words.find(steps.str()) != std::string::npos);
+    MLAA_CHECK(words.find(std::string("Default: ") +
+                 vtkMLAAOptions::GetEdgeDetectionAsString(defaults->GetEdgeDetection())) !=
+      std::string::npos);
+    // Every line fits a terminal.
+    std::istringstream lines(run.Out);
+    std::string line;
+    size_t longest = 0;
+    while (std::getline(lines, line))
+    {
+      longest = std::max(longest, line.size());
+    }
+    MLAA_CHECK(longest <= 80);
+  }
+}
+
+void RoundTripPng8Rgb()
+{
+  RoundTrip(StaircaseImage(VTK_UNSIGNED_CHAR, { 20, 60, 200 }, { 240, 220, 40 }),
+    OIIO::TypeDesc::UINT8, "in.png", "out.png");
+}
+
+void RoundTripPng8Rgba()
+{
+  // Alpha differs across the edge as well; it must come back unpremultiplied, as stored.
+  RoundTrip(StaircaseImage(VTK_UNSIGNED_CHAR, { 20, 60, 200, 64 }, { 240, 220, 40, 255 }),
+    OIIO::TypeDesc::UINT8, "in.png", "out.png");
+}
+
+void RoundTripPng16Rgb()
+{
+  // Values far from multiples of 257, so that an 8-bit detour would show.
+  RoundTrip(StaircaseImage(VTK_UNSIGNED_SHORT, { 1000, 40000, 12345 }, { 60001, 3, 50000 }),
+    OIIO::TypeDesc::UINT16, "in.png", "out.png");
+}
+
+void RoundTripTiff16GreyAlpha()
+{
+  RoundTrip(StaircaseImage(VTK_UNSIGNED_SHORT, { 5000, 65535 }, { 61000, 30000 }),
+    OIIO::TypeDesc::UINT16, "in.tif", "out.tif");
+}
+
+void RoundTripExrFloat()
+{
+  RoundTrip(StaircaseImage(VTK_FLOAT, { 0.1f, 0.333f, 0.9f }, { 0.95f, 0.01f, 0.123456f }),
+    OIIO::TypeDesc::FLOAT, "in.exr", "out.exr");
+}
+
+void RoundTripExrHalf()
+{
+  // The input holds halves; the output must be half again: vtkImageMLAA's float result
+  // rounded to half.
+  auto pixels = StaircaseImage(VTK_FLOAT, { 0.1, 0.333, 0.9, 1.0 }, { 0.95, 0.01, 0.5, 0.25 });
+  FillImage(pixels,
+    [&](int x, int y, int, int k)
+    { return static_cast<float>(half(static_cast<float>(GetValue(pixels, x, y, k)))); });
+  const fs::path input = WorkFile("in.exr");
+  const fs::path output = WorkFile("out.exr");
+  WriteFile(pixels, input, OIIO::TypeDesc::HALF);
+  ExpectSuccess({ input.string(), output.string() }, output);
+  auto expected = Filter(pixels);
+  CheckAntialiased(pixels, expected);
+  FillImage(expected,
+    [&](int x, int y, int, int k)
+    { return static_cast<float>(half(static_cast<float>(GetValue(expected, x, y, k)))); });
+  CheckFile(output, expected, OIIO::TypeDesc::HALF);
+}
+
+void RoundTripTiffFloatValueRange()
+{
+  // Values in [0, 100] with a faint (0.5 %) checkerboard in the flat top left corner: with
+  // --value-range 0 100 the staircase is antialiased and the checkerboard is not an edge; with
+  // the default range [0, 1] it would be.
+  auto pixels = TwoToneImage(32, 24, VTK_FLOAT, { 10.0 }, { 90.0 }, Staircase);
+  auto checkerboard = [](int x, int y) { return x < 8 && y >= 18; };
+  FillImage(pixels,
+    [&](int x, int y, int, int)
+    {
+      const double v = GetValue(pixels, x, y);
+      return checkerboard(x, y) ? v + 0.5 * ((x + y) % 2) : v;
+    });
+  const fs::path input = WorkFile("in.tif");
+  const fs::path output = WorkFile("out.tif");
+  WriteFile(pixels, input, OIIO::TypeDesc::FLOAT);
+  ExpectSuccess({ "--value-range", "0", "100", input.string(), output.string() }, output);
+  auto expected = Filter(pixels, [](vtkImageMLAA* f) { f->SetValueRange(0.0, 100.0); });
+  CheckFile(output, expected, OIIO::TypeDesc::FLOAT);
+  CheckAntialiased(pixels, expected, checkerboard);
+  for (int y = 18; y < 24; ++y)
+  {
+    for (int x = 0; x < 8; ++x)
+    {
+      MLAA_CHECK(GetValue(expected, x, y) == GetValue(pixels, x, y));
+    }
+  }
+  MLAA_CHECK(Compare(Filter(pixels), expected).Count > 0);
+}
+
+void JpegInputPngOutput()
+{
+  // JPEG is lossy: the reference is the filter on the pixels the JPEG file decodes to.
+  auto pixels = StaircaseImage(VTK_UNSIGNED_CHAR, { 20, 60, 200 }, { 240, 220, 40 });
+  const fs::path input = WorkFile("in.jpg");
+  const fs::path output = WorkFile("out.png");
+  WriteFile(pixels, input, OIIO::TypeDesc::UINT8);
+  const FileImage decoded = ReadFile(input);
+  ExpectSuccess({ input.string(), output.string() }, output);
+  CheckFile(output, Filter(decoded.Image), OIIO::TypeDesc::UINT8);
+}
+
+void OutputReplacedPermissionsKept()
+{
+  auto pixels = StaircaseImage(VTK_UNSIGNED_CHAR, { 0 }, { 255 });
+  const fs::path input = WorkFile("in.png");
+  WriteFile(pixels, input, OIIO::TypeDesc::UINT8);
+  auto expected = Filter(pixels);
+
+  // A new file gets the permissions the umask gives, not the temporary file's 0600.
+  umask(022);
+  const fs::path fresh = WorkFile("new.png");
+  ExpectSuccess({ input.string(), fresh.string() }, fresh);
+  CheckFile(fresh, expected, OIIO::TypeDesc::UINT8);
+  MLAA_CHECK((fs::status(fresh).permissions() & fs::perms::all) ==
+    (fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
+      fs::perms::others_read));
+
+  // An existing file is replaced and keeps its permissions.
+  const fs::path existing = WorkFile("existing.png");
+  WriteText(existing, "not an image");
+  fs::permissions(existing, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read,
+    fs::perm_options::replace);
+  ExpectSuccess({ input.string(), existing.string() }, existing);
+  CheckFile(existing, expected, OIIO::TypeDesc::UINT8);
+  MLAA_CHECK((fs::status(existing).permissions() & fs::perms::all) ==
+    (fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read));
+
+  // The input itself may be the output.
+  ExpectSuccess({ input.string(), input.string() }, input);
+  CheckFile(input, expected, OIIO::TypeDesc::UINT8);
+}
+
+void FloatToPngConvertedWithWarning()
+{
+  // PNG cannot hold floats: OpenImageIO's closest type (uint8) is written, values clamped to
+  // the value range and scaled, and a warning says so.
+  auto pixels = StaircaseImage(VTK_FLOAT, { -0.5, 0.25, 0.9 }, { 1.5, 0.6, 0.1 });
+  const fs::path input = WorkFile("in.exr");
+  WriteFile(pixels, input, OIIO::TypeDesc::FLOAT);
+  auto filtered = Filter(pixels);
+  for (const double lo : { 0.0, -1.0 })
+  {
+    const double hi = lo == 0.0 ? 1.0 : 2.0;
+    const fs::path output = WorkFile(lo == 0.0 ? "unit.png" : "range.png");
+    std::vector<std::string> args = { input.string(), output.string() };
+    if (lo != 0.0)
+    {
+      args.insert(args.begin(), { "--value-range", "-1", "2" });
+    }
+    ExpectSuccess(args, output, true);
+    auto expected = MakeImage(32, 24, 3, VTK_UNSIGNED_CHAR);
+    FillImage(expected,
+      [&](int x, int y, int, int k)
+      {
+        const double v = (GetValue(filtered, x, y, k) - lo) / (hi - lo);
+        return std::floor(255.0 * std::min(1.0, std::max(0.0, v)) + 0.5);
+      });
+    // OpenImageIO converts in float or double arithmetic: rounding may differ by one.
+    CheckFile(output, expected, OIIO::TypeDesc::UINT8, 1.0);
+    // Out-of-range values are clamped: the first channel, -0.5 and 1.5, is 0 and 255 with the
+    // unit range.
+    if (lo == 0.0)
+    {
+      const FileImage file = ReadFile(output);
+      MLAA_CHECK(GetValue(file.Image, 0, 0, 0) == 0.0);    // bottom left: below the staircase
+      MLAA_CHECK(GetValue(file.Image, 0, 23, 0) == 255.0); // top left: above it
+    }
+  }
+}
+
+void OptionThreshold()
+{
+  // A 60/255 step: an edge at the default threshold, none at 0.3.
+  auto pixels = StaircaseImage(VTK_UNSIGNED_CHAR, { 100 }, { 160 });
+  {
+    const fs::path input = WorkFile("in.png");
+    const fs::path output = WorkFile("out.png");
+    WriteFile(pixels, input, OIIO::TypeDesc::UINT8);
+    ExpectSuccess({ "--threshold=0.3", input.string(), output.string() }, output);
+    auto expected = Filter(pixels, [](vtkImageMLAA* f) { f->GetOptions()->SetThreshold(0.3); });
+    CheckFile(output, expected, OIIO::TypeDesc::UINT8);
+    MLAA_CHECK(Compare(expected, pixels).Count == 0);
+  }
+  // The default threshold does antialias the same image, and so does an explicit lower one.
+  MLAA_CHECK(Compare(Filter(pixels), pixels).Count > 0);
+  RoundTrip(pixels, OIIO::TypeDesc::UINT8, "in.png", "out.png", { "--threshold", "0.2" },
+    [](vtkImageMLAA* f) { f->GetOptions()->SetThreshold(0.2); });
+}
+
+void OptionEdgesColor()
+{
+  // Pure red against a green of (almost) the same luma: no luma edge at all, a colour edge.
+  auto pixels = StaircaseImage(VTK_UNSIGNED_CHAR, { 255, 0, 0 }, { 0, 76, 0 });
+  MLAA_CHECK(Compare(Filter(pixels), pixels).Count == 0);
+  const std::string color = vtkMLAAOptions::GetEdgeDetectionAsString(vtkMLAAOptions::COLOR);
+  RoundTrip(pixels, OIIO::TypeDesc::UINT8, "in.png", "out.png", { "--edges", color },
+    [](vtkImageMLAA* f) { f->GetOptions()->SetEdgeDetectionToColor(); });
+}
+
+void OptionEdgesDepth()
+{
+  // The colour image has two staircases, the depth image (1-channel float TIFF) only the
+  // shallow one: only that one is antialiased.
+  auto pixels = StaircaseImage(VTK_UNSIGNED_CHAR, { 20, 60, 200 }, { 240, 220, 40 });
+  auto depth = TwoToneImage(
+    32, 24, VTK_FLOAT, { 0.25 }, { 0.75 }, [](int x, int y) { return 3 * y > x + 10; });
+  const fs::path input = WorkFile("in.png");
+  const fs::path depthFile = WorkFile("depth.tif");
+  const fs::path output = WorkFile("out.png");
+  WriteFile(pixels, input, OIIO::TypeDesc::UINT8);
+  WriteFile(depth, depthFile, OIIO::TypeDesc::FLOAT);
+  const std::string depthName = vtkMLAAOptions::GetEdgeDetectionAsString(vtkMLAAOptions::DEPTH);
+  ExpectSuccess({ "--edges", depthName, "--depth-image", depthFile.string(), "--threshold", "0.01",
+                  input.string(), output.string() },
+    output);
+  auto expected = Filter(
+    pixels,
+    [](vtkImageMLAA* f)
+    {
+      f->GetOptions()->SetEdgeDetectionToDepth();
+      f->GetOptions()->SetThreshold(0.01);
+    },
+    depth);
+  CheckFile(output, expected, OIIO::TypeDesc::UINT8);
+  MLAA_CHECK(Compare(expected, pixels).Count > 0);
+  MLAA_CHECK(Compare(expected, Filter(pixels)).Count > 0); // not what luma edges give
+}
+
+void OptionMaxSearchSteps()
+{
+  // Steps 12 pixels long: a search of 1 step (2 pixels each way) finds the ends of few lines,
+  // and smooths only the pixels near them; the default search smooths most.
+  auto pixels = TwoToneImage(
+    64, 16, VTK_UNSIGNED_CHAR, { 0 }, { 255 }, [](int x, int y) { return 12 * y > x + 20; });
+  const fs::path input = WorkFile("in.png");
+  const fs::path output = WorkFile("out.png");
+  WriteFile(pixels, input, OIIO::TypeDesc::UINT8);
+  ExpectSuccess({ "--max-search-steps", "1", input.string(), output.string() }, output);
+  auto expected = Filter(pixels, [](vtkImageMLAA* f) { f->GetOptions()->SetMaxSearchSteps(1); });
+  CheckFile(output, expected, OIIO::TypeDesc::UINT8);
+  CheckAntialiased(pixels, expected, nullptr, 0.1);
+  MLAA_CHECK(Compare(expected, Filter(pixels)).Count > 0);
+}
+
+void DebugEdgesRgba8TopRowFirst()
+{
+  // The top half of the picture white, the bottom half black. In the file the top row comes
+  // first: the edge is at the top boundary of the first black row, file row 3 of 6, and edges
+  // are green (top boundary).
+  auto pixels = TwoToneImage(
+    8, 6, VTK_UNSIGNED_CHAR, { 0, 0, 0 }, { 255, 255, 255 }, [](int, int y) { return y >= 3; });
+  const fs::path input = WorkFile("in.png");
+  const fs::path output = WorkFile("edges.png");
+  WriteFile(pixels, input, OIIO::TypeDesc::UINT8);
+  const std::string edges = vtkMLAAOptions::GetDebugOutputAsString(vtkMLAAOptions::EDGES);
+  ExpectSuccess({ "--debug", edges, input.string(), output.string() }, output);
+  CheckFile(output,
+    Filter(pixels, [](vtkImageMLAA* f) { f->GetOptions()->SetDebugOutputToEdges(); }),
+    OIIO::TypeDesc::UINT8);
+  MLAA_CHECK(ReadFile(output).Image->GetNumberOfScalarComponents() == 4);
+  for (int row = 0; row < 6; ++row)
+  {
+    MLAA_CHECK(FileTexel(output, 4, row, 1) == (row == 3 ? 255 : 0)); // green: top edge
+    MLAA_CHECK(FileTexel(output, 4, row, 0) == 0);                    // red: left edge
+    MLAA_CHECK(FileTexel(output, 4, row, 3) == 255);                  // alpha
+  }
+}
+
+void DebugWeightsRgba8()
+{
+  // A 16-bit input: the debug image is 8-bit RGBA all the same. Its alpha is a weight, not
+  // coverage, and must be stored as it is.
+  auto pixels = StaircaseImage(VTK_UNSIGNED_SHORT, { 1000 }, { 60000 });
+  const fs::path input = WorkFile("in.tif");
+  const fs::path output = WorkFile("weights.png");
+  WriteFile(pixels, input, OIIO::TypeDesc::UINT16);
+  const std::string weights =
+    vtkMLAAOptions::GetDebugOutputAsString(vtkMLAAOptions::BLENDING_WEIGHTS);
+  ExpectSuccess({ "--debug", weights, input.string(), output.string() }, output);
+  auto expected =
+    Filter(pixels, [](vtkImageMLAA* f) { f->GetOptions()->SetDebugOutputToBlendingWeights(); });
+  CheckFile(output, expected, OIIO::TypeDesc::UINT8);
+  MLAA_CHECK(ReadFile(output).Image->GetNumberOfScalarComponents() == 4);
+  double largest[4] = { 0, 0, 0, 0 };
+  for (int y = 0; y < 24; ++y)
+  {
+    for (int x = 0; x < 32; ++x)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        largest[k] = std::max(largest[k], GetValue(expected, x, y, k));
+      }
+    }
+  }
+  // Weights in every channel (horizontal and vertical lines, both sides), none above 0.5.
+  for (double w : largest)
+  {
+    MLAA_CHECK(w > 0.0 && w <= 128.0);
+  }
+}
+
+// The area texture for cells of D texels: 5D x 5D, 8-bit RGB, laid out as Figure 4.2 counted
+// from the top of the file; the same as vtkMLAAAreaTexture's image.
+void CheckAreaTexture(int d)
+{
+  const fs::path output = WorkFile("area.png");
+  ExpectSuccess({ "--area-texture", std::to_string(d), output.string() }, output);
+  const FileImage file = ReadFile(output);
+  int dims[3];
+  file.Image->GetDimensions(dims);
+  MLAA_CHECK(dims[0] == 5 * d && dims[1] == 5 * d);
+  MLAA_CHECK(file.Image->GetNumberOfScalarComponents() == 3);
+  MLAA_CHECK(file.Type == OIIO::TypeDesc::UINT8);
+  MLAA_CHECK(file.Format == "png");
+
+  // L shapes (section 4.3.3): for the p-th pixel from the crossing edge on a line of L pixels,
+  // the area is 1/2 (1 - (2p + 1) / L). With e1 = 3 (crossing edge on the owning pixel's side,
+  // at the left end) it is red; with e1 = 1 (opposite side) green.
+  auto lArea = [](int p, int length) { return 0.5 * (1.0 - (2.0 * p + 1.0) / length); };
+  struct Texel
+  {
+    int E1, E2, Left, Right;
+  };
+  for (const Texel& t : { Texel{ 3, 0, 0, 3 }, Texel{ 3, 0, 2, 5 }, Texel{ 1, 0, 0, 3 } })
+  {
+    const int column = d * t.E1 + t.Left;
+    const int row = d * t.E2 + t.Right; // from the top of the file
+    const int value = static_cast<int>(std::lround(255.0 * lArea(t.Left, t.Left + t.Right + 1)));
+    const int channel = t.E1 == 3 ? 0 : 1;
+    std::cout << "  texel (" << column << ", " << row << ") channel " << channel << ": "
+              << FileTexel(output, column, row, channel) << ", expected " << value << std::endl;
+    MLAA_CHECK(FileTexel(output, column, row, channel) == value);
+    MLAA_CHECK(FileTexel(output, column, row, 1 - channel) == 0);
+    MLAA_CHECK(FileTexel(output, column, row, 2) == 0);
+  }
+  if (d == 9)
+  {
+    MLAA_CHECK(FileTexel(output, 27, 3, 0) == 96); // the brief's example: round(255 * 3 / 8)
+  }
+
+  vtkNew<vtkMLAAAreaTexture> texture;
+  texture->SetMaxDistance(d - 1);
+  MLAA_CHECK(Compare(file.Image, texture->GetImage()).Count == 0);
+}
+
+void AreaTexture9()
+{
+  CheckAreaTexture(9);
+}
+
+void AreaTexture17()
+{
+  CheckAreaTexture(17);
+}
+
+//------------------------------------------------------------------------------
+// Errors: exit status 1 for failures, 2 for bad command lines.
+
+constexpr int Failure = 1;
+constexpr int Usage = 2;
+
+// A valid input image for the error cases.
+fs::path GoodInput(const std::string& name = "in.png")
+{
+  const fs::path input = WorkFile(name);
+  WriteFile(StaircaseImage(VTK_UNSIGNED_CHAR, { 20, 60, 200 }, { 240, 220, 40 }), input,
+    name.size() > 4 && name.compare(name.size() - 4, 4, ".exr") == 0 ? OIIO::TypeDesc::FLOAT
+                                                                     : OIIO::TypeDesc::UINT8);
+  return input;
+}
+
+void ErrorMissingInput()
+{
+  const fs::path output = WorkFile("out.png");
+  ExpectFailure({ WorkFile("missing.png").string(), output.string() }, output, Failure);
+}
+
+void ErrorCorruptInput()
+{
+  const fs::path input = WorkFile("x.png");
+  WriteText(input, "This is a text file, not a PNG image.\n");
+  const fs::path output = WorkFile("out.png");
+  ExpectFailure({ input.string(), output.string() }, output, Failure);
+  // A truncated PNG: a valid header, then nothing.
+  const fs::path truncated = WorkFile("truncated.png");
+  WriteFile(StaircaseImage(VTK_UNSIGNED_CHAR, { 0 }, { 255 }), truncated, OIIO::TypeDesc::UINT8);
+  const std::string bytes = ReadText(truncated);
+  WriteText(truncated, bytes.substr(0, bytes.size() / 2));
+  ExpectFailure({ truncated.string(), output.string() }, output, Failure);
+}
+
+void ErrorUnsupportedOutputFormat()
+{
+  const fs::path input = GoodInput();
+  for (const char* name : { "out.xyz", "out" })
+  {
+    const fs::path output = WorkFile(name);
+    ExpectFailure({ input.string(), output.string() }, output, Failure);
+  }
+}
+
+void ErrorOutputFormatRejectsImage()
+{
+  // BMP has no grey + alpha: the writer refuses the image once the temporary file exists.
+  const fs::path input = WorkFile("in.png");
+  WriteFile(
+    StaircaseImage(VTK_UNSIGNED_CHAR, { 0, 255 }, { 255, 128 }), input, OIIO::TypeDesc::UINT8);
+  const fs::path output = WorkFile("out.bmp");
+  ExpectFailure({ input.string(), output.string() }, output, Failure);
+}
+
+void ErrorUnwritableOutputDirectory()
+{
+  const fs::path input = GoodInput();
+  // A directory that does not exist, and a "directory" that is a file.
+  ExpectFailure({ input.string(), (WorkFile("missing") / "out.png").string() },
+    WorkFile("missing") / "out.png", Failure);
+  WriteText(WorkFile("file.txt"), "a file\n");
+  ExpectFailure({ input.string(), (WorkFile("file.txt") / "out.png").string() },
+    WorkFile("file.txt") / "out.png", Failure);
+  // A directory without write permission (root may write anywhere: not tried as root).
+  if (geteuid() != 0)
+  {
+    const fs::path readOnly = WorkFile("read-only");
+    fs::create_directory(readOnly);
+    WriteText(readOnly / "out.png", "the previous contents of the output\n");
+    fs::permissions(
+      readOnly, fs::perms::owner_read | fs::perms::owner_exec, fs::perm_options::replace);
+    const std::set<std::string> before = Listing(readOnly);
+    const Run run = RunTool({ input.string(), (readOnly / "out.png").string() });
+    MLAA_CHECK(run.Status == Failure && IsOneMlaaLine(run.Err));
+    MLAA_CHECK(Listing(readOnly) == before);
+    MLAA_CHECK(ReadText(readOnly / "out.png") == "the previous contents of the output\n");
+    fs::permissions(readOnly, fs::perms::owner_all, fs::perm_options::replace);
+  }
+  // OUTPUT names an existing directory: the rename fails, the directory stays as it was.
+  const fs::path directory = WorkFile("out.png");
+  fs::create_directory(directory);
+  WriteText(directory / "inside.txt", "untouched\n");
+  const std::set<std::string> before = Listing(Where().Work);
+  const Run run = RunTool({ input.string(), directory.string() });
+  MLAA_CHECK(run.Status == Failure && IsOneMlaaLine(run.Err));
+  MLAA_CHECK(Listing(Where().Work) == before);
+  MLAA_CHECK(Listing(directory) == std::set<std::string>{ "inside.txt" });
+}
+
+void ErrorBadThreshold()
+{
+  const fs::path input = GoodInput();
+  const fs::path output = WorkFile("out.png");
+  for (const char* value : { "abc", "1.5", "-0.1", "nan", "inf", "", "0.5x", "0,5" })
+  {
+    ExpectFailure({ "--threshold", value, input.string(), output.string() }, output, Usage);
+  }
+  ExpectFailure({ "--threshold=2", input.string(), output.string() }, output, Usage);
+}
+
+void ErrorUnknownEdgesName()
+{
+  const fs::path input = GoodInput();
+  const fs::path output = WorkFile("out.png");
+  for (const char* value : { "lum", "LUMA", "colour", "", "edges" })
+  {
+    ExpectFailure({ "--edges", value, input.string(), output.string() }, output, Usage);
+  }
+}
+
+void ErrorUnknownDebugName()
+{
+  const fs::path input = GoodInput();
+  const fs::path output = WorkFile("out.png");
+  for (const char* value : { "edge", "blending-weights", "luma", "" })
+  {
+    ExpectFailure({ "--debug", value, input.string(), output.string() }, output, Usage);
+  }
+}
+
+void ErrorBadMaxSearchSteps()
+{
+  const fs::path input = GoodInput();
+  const fs::path output = WorkFile("out.png");
+  for (const char* value : { "0", "65", "-1", "2.5", "eight", "99999999999999999999" })
+  {
+    ExpectFailure({ "--max-search-steps", value, input.string(), output.string() }, output, Usage);
+  }
+}
+
+void ErrorBadValueRange()
+{
+  const fs::path input = GoodInput("in.exr");
+  const fs::path output = WorkFile("out.exr");
+  for (const auto& range : std::vector<std::pair<const char*, const char*>>{
+         { "1", "0" }, { "0.5", "0.5" }, { "a", "1" }, { "0", "inf" }, { "nan", "1" } })
+  {
+    ExpectFailure({ "--value-range", range.first, range.second, input.string(), output.string() },
+      output, Usage);
+  }
+  ExpectFailure({ "--value-range=0", "1", input.string(), output.string() }, output, Usage);
+}
+
+void ErrorMissingArgument()
+{
+  const fs::path input = GoodInput();
+  const fs::path output = WorkFile("out.png");
+  ExpectFailure({}, output, Usage);
+  ExpectFailure({ input.string() }, output, Usage);
+  ExpectFailure({ input.string(), output.string(), "--threshold" }, output, Usage);
+  ExpectFailure({ input.string(), output.string(), "--value-range", "0" }, output, Usage);
+  ExpectFailure({ "--edges", "--debug", "edges", input.string(), output.string() }, output, Usage);
+  ExpectFailure({ "--area-texture" }, output, Usage);
+  ExpectFailure({ "--area-texture", "9" }, output, Usage);
+  ExpectFailure({ "--edges", "depth", input.string(), output.string() }, output, Usage);
+}
+
+void ErrorExtraArgument()
+{
+  const fs::path input = GoodInput();
+  const fs::path output = WorkFile("out.png");
+  ExpectFailure({ input.string(), output.string(), WorkFile("extra.png").string() }, output, Usage);
+  ExpectFailure({ "--frobnicate", input.string(), output.string() }, output, Usage);
+  ExpectFailure({ "--threshold", "0.2", "0.3", input.string(), output.string() }, output, Usage);
+  ExpectFailure({ "--area-texture", "9", input.string(), output.string() }, output, Usage);
+  ExpectFailure({ "--area-texture", "9", "--threshold", "0.2", output.string() }, output, Usage);
+}
+
+void ErrorMoreThan4Channels()
+{
+  // vtkImageMLAA refuses 5 channels; its error must become the one "mlaa: " line.
+  const fs::path input = WorkFile("in.tif");
+  WriteFile(StaircaseImage(VTK_UNSIGNED_CHAR, { 0, 1, 2, 3, 4 }, { 200, 201, 202, 203, 204 }),
+    input, OIIO::TypeDesc::UINT8);
+  for (const char* name : { "out.tif", "out.png" })
+  {
+    const fs::path output = WorkFile(name);
+    ExpectFailure({ input.string(), output.string() }, output, Failure);
+  }
+}
+
+void ErrorDepthImage()
+{
+  const fs::path input = GoodInput();
+  const fs::path output = WorkFile("out.png");
+  const std::string depthName = vtkMLAAOptions::GetEdgeDetectionAsString(vtkMLAAOptions::DEPTH);
+  // Wrong size, wrong number of channels, missing.
+  const fs::path small = WorkFile("small.tif");
+  WriteFile(MakeImage(16, 24, 1, VTK_FLOAT, 0.5), small, OIIO::TypeDesc::FLOAT);
+  const fs::path rgb = WorkFile("rgb.tif");
+  WriteFile(MakeImage(32, 24, 3, VTK_FLOAT, 0.5), rgb, OIIO::TypeDesc::FLOAT);
+  for (const fs::path& depth : { small, rgb, WorkFile("missing.tif") })
+  {
+    ExpectFailure(
+      { "--edges", depthName, "--depth-image", depth.string(), input.string(), output.string() },
+      output, Failure);
+  }
+  // A depth image without depth edges.
+  const fs::path good = WorkFile("depth.tif");
+  WriteFile(MakeImage(32, 24, 1, VTK_FLOAT, 0.5), good, OIIO::TypeDesc::FLOAT);
+  ExpectFailure({ "--depth-image", good.string(), input.string(), output.string() }, output, Usage);
+}
+
+void ErrorBadAreaTexture()
+{
+  const fs::path output = WorkFile("area.png");
+  for (const char* value : { "1", "0", "-9", "1025", "9.0", "nine", "" })
+  {
+    ExpectFailure({ "--area-texture", value, output.string() }, output, Usage);
+  }
+  ExpectFailure(
+    { "--area-texture", "9", WorkFile("area.xyz").string() }, WorkFile("area.xyz"), Failure);
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+int main(int argc, char* argv[])
+{
+  if (argc != 4)
+  {
+    std::cerr << "Usage: " << argv[0] << " CASE MLAA_EXECUTABLE SCRATCH_DIRECTORY" << std::endl;
+    return EXIT_FAILURE;
+  }
+  const std::map<std::string, void (*)()> cases = {
+    { "help-lists-every-option", HelpListsEveryOption },
+    { "roundtrip-png8-rgb", RoundTripPng8Rgb },
+    { "roundtrip-png8-rgba", RoundTripPng8Rgba },
+    { "roundtrip-png16-rgb", RoundTripPng16Rgb },
+    { "roundtrip-tiff16-grey-alpha", RoundTripTiff16GreyAlpha },
+    { "roundtrip-exr-float", RoundTripExrFloat },
+    { "roundtrip-exr-half", RoundTripExrHalf },
+    { "roundtrip-tiff-float-value-range", RoundTripTiffFloatValueRange },
+    { "jpeg-input-png-output", JpegInputPngOutput },
+    { "output-replaced-permissions-kept", OutputReplacedPermissionsKept },
+    { "float-to-png-converted-with-warning", FloatToPngConvertedWithWarning },
+    { "option-threshold", OptionThreshold },
+    { "option-edges-color", OptionEdgesColor },
+    { "option-edges-depth", OptionEdgesDepth },
+    { "option-max-search-steps", OptionMaxSearchSteps },
+    { "debug-edges-rgba8-top-row-first", DebugEdgesRgba8TopRowFirst },
+    { "debug-weights-rgba8", DebugWeightsRgba8 },
+    { "area-texture-9", AreaTexture9 },
+    { "area-texture-17", AreaTexture17 },
+    { "error-missing-input", ErrorMissingInput },
+    { "error-corrupt-input", ErrorCorruptInput },
+    { "error-unsupported-output-format", ErrorUnsupportedOutputFormat },
+    { "error-output-format-rejects-image", ErrorOutputFormatRejectsImage },
+    { "error-unwritable-output-directory", ErrorUnwritableOutputDirectory },
+    { "error-bad-threshold", ErrorBadThreshold },
+    { "error-unknown-edges-name", ErrorUnknownEdgesName },
+    { "error-unknown-debug-name", ErrorUnknownDebugName },
+    { "error-bad-max-search-steps", ErrorBadMaxSearchSteps },
+    { "error-bad-value-range", ErrorBadValueRange },
+    { "error-missing-argument", ErrorMissingArgument },
+    { "error-extra-argument", ErrorExtraArgument },
+    { "error-more-than-4-channels", ErrorMoreThan4Channels },
+    { "error-depth-image", ErrorDepthImage },
+    { "error-bad-area-texture", ErrorBadAreaTexture },
+  };
+  const auto found = cases.find(argv[1]);
+  if (found == cases.end())
+  {
+    std::cerr << "Unknown case " << argv[1] << std::endl;
+    return EXIT_FAILURE;
+  }
+
+  Where().Tool = argv[2];
+  const fs::path scratch = argv[3];
+  Where().Work = scratch / "work";
+  Where().Logs = scratch / "logs";
+  fs::remove_all(scratch);
+  fs::create_directories(Where().Work);
+  fs::create_directories(Where().Logs);
+  try
+  {
+    found->second();
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << "exception: " << e.what() << std::endl;
+    ++Failures();
+  }
+  OIIO::geterror();
+  return Result();
+}

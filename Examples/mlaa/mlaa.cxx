@@ -1,0 +1,735 @@
+/**
+ * mlaa: morphological antialiasing of image files.
+ *
+ *   mlaa [options] INPUT OUTPUT
+ *   mlaa --area-texture D OUTPUT
+ *
+ * Reads INPUT with OpenImageIO, antialiases it with vtkImageMLAA (Jimenez et al., "Practical
+ * Morphological Antialiasing", GPU Pro 2, chapter 4) and writes OUTPUT in the format of its
+ * extension and INPUT's pixel type. The options are those of vtkMLAAOptions, under the names
+ * that class gives them (GetEdgeDetectionFromString, GetDebugOutputFromString), with its
+ * defaults and ranges. `mlaa --help` says everything.
+ *
+ * Errors are reported as one line on stderr starting with "mlaa: ", with exit status 1 (2 for a
+ * bad command line); OUTPUT is then left as it was (see WriteImageFile).
+ */
+
+#include "mlaaImageFile.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkExecutive.h"
+#include "vtkImageData.h"
+#include "vtkImageMLAA.h"
+#include "vtkLogger.h"
+#include "vtkMLAAAreaTexture.h"
+#include "vtkMLAAOptions.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkSmartPointer.h"
+#include "vtkStringOutputWindow.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+constexpr int ExitFailure = 1;
+constexpr int ExitUsage = 2;
+
+/** A bad command line: reported like any error, with exit status 2. */
+class UsageError : public mlaa::Error
+{
+public:
+  using mlaa::Error::Error;
+};
+
+//------------------------------------------------------------------------------
+// Option names and help
+
+// What each edge-detection mode and debug output is, for --help. The names themselves come
+// from vtkMLAAOptions.
+const char* DescribeEdgeDetection(int mode)
+{
+  switch (mode)
+  {
+    case vtkMLAAOptions::LUMA:
+      return "Rec. 709 luminance (section 4.2.1); cheapest, perceptual";
+    case vtkMLAAOptions::COLOR:
+      return "largest difference of any channel; also finds edges between colours of equal "
+             "luma";
+    case vtkMLAAOptions::DEPTH:
+      return "difference of the --depth-image values; leaves shading edges alone, usually "
+             "wants a threshold of 1e-3 to 1e-2";
+    default:
+      return "";
+  }
+}
+
+const char* DescribeDebugOutput(int output)
+{
+  switch (output)
+  {
+    case vtkMLAAOptions::NO_DEBUG_OUTPUT:
+      return "the antialiased image";
+    case vtkMLAAOptions::EDGES:
+      return "the edges of section 4.2: red = edge at the pixel's left, green = edge at its "
+             "top, blue = 0, alpha = 255";
+    case vtkMLAAOptions::BLENDING_WEIGHTS:
+      return "the blending weights of section 4.3 times 255 (red/green: with the pixel above, "
+             "blue/alpha: with the pixel to the left)";
+    default:
+      return "";
+  }
+}
+
+// "luma|color|depth", from vtkMLAAOptions.
+std::string EdgeDetectionNames(vtkMLAAOptions* options, const char* separator)
+{
+  std::string names;
+  for (int m = options->GetEdgeDetectionMinValue(); m <= options->GetEdgeDetectionMaxValue(); ++m)
+  {
+    names += (names.empty() ? "" : separator);
+    names += vtkMLAAOptions::GetEdgeDetectionAsString(m);
+  }
+  return names;
+}
+
+std::string DebugOutputNames(vtkMLAAOptions* options, const char* separator)
+{
+  std::string names;
+  for (int d = options->GetDebugOutputMinValue(); d <= options->GetDebugOutputMaxValue(); ++d)
+  {
+    names += (names.empty() ? "" : separator);
+    names += vtkMLAAOptions::GetDebugOutputAsString(d);
+  }
+  return names;
+}
+
+// Writes `text` word-wrapped to 80 columns, every line indented by `indent` spaces except the
+// first, which continues after `first` (padded to the indentation).
+void PrintWrapped(
+  std::ostream& os, const std::string& first, size_t indent, const std::string& text)
+{
+  const size_t width = 80;
+  std::string line = first;
+  line.resize(std::max(line.size(), indent), ' ');
+  bool atStart = line.size() == indent; // nothing but indentation on the line yet
+  std::istringstream words(text);
+  std::string word;
+  while (words >> word)
+  {
+    if (!atStart && line.size() + 1 + word.size() > width)
+    {
+      os << line << "\n";
+      line.assign(indent, ' ');
+      atStart = true;
+    }
+    if (!atStart)
+    {
+      line += ' ';
+    }
+    line += word;
+    atStart = false;
+  }
+  os << line << "\n";
+}
+
+void PrintUsage(std::ostream& os)
+{
+  // Defaults and ranges are those of the classes, not copies of them.
+  vtkNew<vtkMLAAOptions> defaults;
+  vtkNew<vtkImageMLAA> filter;
+  vtkNew<vtkMLAAAreaTexture> texture;
+  const double* valueRange = filter->GetValueRange();
+  const std::string depthName = vtkMLAAOptions::GetEdgeDetectionAsString(vtkMLAAOptions::DEPTH);
+  const std::string noDebugName =
+    vtkMLAAOptions::GetDebugOutputAsString(vtkMLAAOptions::NO_DEBUG_OUTPUT);
+  const size_t column = 25;
+  auto option = [&](const std::string& name, const std::ostringstream& text)
+  { PrintWrapped(os, "  " + name, column, text.str()); };
+
+  os << "Usage: mlaa [options] INPUT OUTPUT\n"
+        "       mlaa --area-texture D OUTPUT\n"
+        "\n";
+  PrintWrapped(os, "", 0,
+    "Removes staircase aliasing from the image INPUT with morphological antialiasing (MLAA: "
+    "Jimenez et al., \"Practical Morphological Antialiasing\", GPU Pro 2, chapter 4; VTK's "
+    "vtkImageMLAA) and writes the result to OUTPUT.");
+  os << "\n";
+  PrintWrapped(os, "", 0,
+    "INPUT may be any image OpenImageIO reads (PNG, TIFF, OpenEXR, JPEG, ...): 8- or 16-bit, "
+    "half or float, with 1 to 4 channels (grey, grey + alpha, RGB, RGBA); only its first "
+    "subimage is read. OUTPUT's format comes from its extension. OUTPUT has INPUT's size, "
+    "channels and pixel type; where its format cannot hold that type, OpenImageIO's closest "
+    "type is written and a warning says so (floating-point values written as integers are "
+    "scaled by --value-range and clamped). Pixels are used as stored: no colour-space "
+    "conversion, alpha is not premultiplied, and pixels away from edges are written "
+    "unchanged.");
+  os << "\nOptions:\n";
+
+  std::ostringstream text;
+  text << "Smallest difference between neighbouring pixels that is an edge, with the image's "
+          "value range as 1; in ["
+       << defaults->GetThresholdMinValue() << ", " << defaults->GetThresholdMaxValue()
+       << "]. Lower finds fainter edges (and noise). Default: " << defaults->GetThreshold() << ".";
+  option("--threshold T", text);
+
+  text.str("");
+  text << "What edge detection compares (section 4.2). Default: "
+       << vtkMLAAOptions::GetEdgeDetectionAsString(defaults->GetEdgeDetection()) << ".";
+  option("--edges MODE", text);
+  for (int m = defaults->GetEdgeDetectionMinValue(); m <= defaults->GetEdgeDetectionMaxValue(); ++m)
+  {
+    PrintWrapped(os,
+      std::string(column + 2, ' ') + vtkMLAAOptions::GetEdgeDetectionAsString(m) + ":", column + 4,
+      DescribeEdgeDetection(m));
+  }
+
+  text.str("");
+  text
+    << "The depth for --edges " << depthName
+    << " (required there, refused otherwise): a 1-channel image of INPUT's size. "
+       "Floating-point depths are used as they are, integer ones scaled to [0, 1]. Default: none.";
+  option("--depth-image FILE", text);
+
+  text.str("");
+  text << "Steps of the search for the ends of each line of edges, two pixels per step (section "
+          "4.3.1); in ["
+       << defaults->GetMaxSearchStepsMinValue() << ", " << defaults->GetMaxSearchStepsMaxValue()
+       << "]. Default: " << defaults->GetMaxSearchSteps() << " (lines followed up to "
+       << defaults->GetMaxDistance() << " pixels each way).";
+  option("--max-search-steps N", text);
+
+  text.str("");
+  text << "Write an intermediate image instead of the antialiased one, as 8-bit RGBA (all but "
+       << noDebugName
+       << "). Default: " << vtkMLAAOptions::GetDebugOutputAsString(defaults->GetDebugOutput())
+       << ".";
+  option("--debug IMAGE", text);
+  for (int d = defaults->GetDebugOutputMinValue(); d <= defaults->GetDebugOutputMaxValue(); ++d)
+  {
+    PrintWrapped(os, std::string(column + 2, ' ') + vtkMLAAOptions::GetDebugOutputAsString(d) + ":",
+      column + 4, DescribeDebugOutput(d));
+  }
+
+  text.str("");
+  text << "For floating-point images: the values taken as 0 and 1 by edge detection, and when "
+          "writing to an integer format. Integer images always use the range of their type. "
+          "Default: "
+       << valueRange[0] << " " << valueRange[1] << ".";
+  option("--value-range LO HI", text);
+
+  text.str("");
+  text << "Write the area texture of section 4.3.3 (Figure 4.2) to OUTPUT instead, for cells "
+          "of D texels (D = 2 * search steps + 1: 9, 17, 33, ...; D in ["
+       << texture->GetMaxDistanceMinValue() + 1 << ", " << texture->GetMaxDistanceMaxValue() + 1
+       << "]): an 8-bit RGB image of 5D x 5D texels whose texel (D*e1 + left, D*e2 + right), "
+          "counted from the top left, holds the two areas times 255 in red and green. Takes no "
+          "INPUT and no other option. Default: off.";
+  option("--area-texture D", text);
+
+  text.str("");
+  text << "Print this help and exit.";
+  option("-h, --help", text);
+
+  os << "\n";
+  PrintWrapped(os, "", 0,
+    "Options take their value as the next argument or after '=' (--threshold=0.05); '--' ends "
+    "the options. OUTPUT is written to a temporary file beside it and renamed over it only "
+    "once complete: if anything fails, an existing OUTPUT is left untouched.");
+  os << "\n";
+  PrintWrapped(os, "", 0,
+    "Exit status: 0 on success; 1 if reading, antialiasing or writing failed; 2 for a bad "
+    "command line. Errors are one line on stderr starting with \"mlaa: \".");
+}
+
+//------------------------------------------------------------------------------
+// Command line
+
+struct CommandLine
+{
+  bool Help = false;
+  vtkNew<vtkMLAAOptions> Options;
+  std::string DepthImage;
+  double ValueRange[2] = { 0.0, 1.0 };
+  int AreaTextureCellSize = 0;            // 0: antialias INPUT
+  std::vector<std::string> FilterOptions; // the options given that configure the filter
+  std::vector<std::string> Files;
+};
+
+bool ParseDouble(const std::string& text, double& value)
+{
+  if (text.empty())
+  {
+    return false;
+  }
+  char* end = nullptr;
+  errno = 0;
+  value = std::strtod(text.c_str(), &end);
+  return *end == '\0' && errno == 0 && std::isfinite(value);
+}
+
+bool ParseInt(const std::string& text, long& value)
+{
+  if (text.empty())
+  {
+    return false;
+  }
+  char* end = nullptr;
+  errno = 0;
+  value = std::strtol(text.c_str(), &end, 10);
+  return *end == '\0' && errno == 0;
+}
+
+template <typename T>
+std::string ToString(T value)
+{
+  std::ostringstream os;
+  os << value;
+  return os.str();
+}
+
+void ParseCommandLine(const std::vector<std::string>& args, CommandLine& cl)
+{
+  // Help wins over everything else on the line.
+  for (const std::string& arg : args)
+  {
+    if (arg == "--")
+    {
+      break;
+    }
+    if (arg == "-h" || arg == "--help")
+    {
+      cl.Help = true;
+      return;
+    }
+  }
+
+  vtkNew<vtkImageMLAA> defaultFilter;
+  defaultFilter->GetValueRange(cl.ValueRange);
+  vtkMLAAOptions* options = cl.Options;
+  bool optionsEnded = false;
+  for (size_t i = 0; i < args.size(); ++i)
+  {
+    const std::string& arg = args[i];
+    if (optionsEnded || arg.size() < 2 || arg[0] != '-')
+    {
+      cl.Files.push_back(arg);
+      continue;
+    }
+    if (arg == "--")
+    {
+      optionsEnded = true;
+      continue;
+    }
+
+    // "--name value" or "--name=value".
+    std::string name = arg;
+    std::string inlineValue;
+    bool hasInlineValue = false;
+    const size_t equals = arg.find('=');
+    if (arg.compare(0, 2, "--") == 0 && equals != std::string::npos)
+    {
+      name = arg.substr(0, equals);
+      inlineValue = arg.substr(equals + 1);
+      hasInlineValue = true;
+    }
+    auto takeValues = [&](size_t count)
+    {
+      std::vector<std::string> values;
+      if (hasInlineValue)
+      {
+        if (count != 1)
+        {
+          throw UsageError(name + " takes " + std::to_string(count) + " values: write " + name +
+            " followed by them");
+        }
+        values.push_back(inlineValue);
+        return values;
+      }
+      for (size_t k = 1; k <= count; ++k)
+      {
+        if (i + k >= args.size() || args[i + k].compare(0, 2, "--") == 0)
+        {
+          throw UsageError(
+            name + " needs " + (count == 1 ? "a value" : std::to_string(count) + " values"));
+        }
+        values.push_back(args[i + k]);
+      }
+      i += count;
+      return values;
+    };
+
+    if (name == "--threshold")
+    {
+      const std::string text = takeValues(1)[0];
+      double value;
+      const double lo = options->GetThresholdMinValue();
+      const double hi = options->GetThresholdMaxValue();
+      if (!ParseDouble(text, value) || value < lo || value > hi)
+      {
+        throw UsageError("--threshold: '" + text + "' is not a number in [" + ToString(lo) + ", " +
+          ToString(hi) + "]");
+      }
+      options->SetThreshold(value);
+    }
+    else if (name == "--edges")
+    {
+      const std::string text = takeValues(1)[0];
+      const int mode = vtkMLAAOptions::GetEdgeDetectionFromString(text.c_str());
+      if (mode < 0)
+      {
+        throw UsageError("--edges: unknown mode '" + text + "' (expected one of " +
+          EdgeDetectionNames(options, ", ") + ")");
+      }
+      options->SetEdgeDetection(mode);
+    }
+    else if (name == "--debug")
+    {
+      const std::string text = takeValues(1)[0];
+      const int output = vtkMLAAOptions::GetDebugOutputFromString(text.c_str());
+      if (output < 0)
+      {
+        throw UsageError("--debug: unknown output '" + text + "' (expected one of " +
+          DebugOutputNames(options, ", ") + ")");
+      }
+      options->SetDebugOutput(output);
+    }
+    else if (name == "--max-search-steps")
+    {
+      const std::string text = takeValues(1)[0];
+      long value;
+      const int lo = options->GetMaxSearchStepsMinValue();
+      const int hi = options->GetMaxSearchStepsMaxValue();
+      if (!ParseInt(text, value) || value < lo || value > hi)
+      {
+        throw UsageError("--max-search-steps: '" + text + "' is not an integer in [" +
+          std::to_string(lo) + ", " + std::to_string(hi) + "]");
+      }
+      options->SetMaxSearchSteps(static_cast<int>(value));
+    }
+    else if (name == "--depth-image")
+    {
+      cl.DepthImage = takeValues(1)[0];
+      if (cl.DepthImage.empty())
+      {
+        throw UsageError("--depth-image needs a file name");
+      }
+    }
+    else if (name == "--value-range")
+    {
+      const std::vector<std::string> texts = takeValues(2);
+      double range[2];
+      if (!ParseDouble(texts[0], range[0]) || !ParseDouble(texts[1], range[1]) ||
+        !(range[0] < range[1]))
+      {
+        throw UsageError(
+          "--value-range: '" + texts[0] + " " + texts[1] + "' is not two finite numbers LO < HI");
+      }
+      cl.ValueRange[0] = range[0];
+      cl.ValueRange[1] = range[1];
+    }
+    else if (name == "--area-texture")
+    {
+      const std::string text = takeValues(1)[0];
+      vtkNew<vtkMLAAAreaTexture> texture;
+      const int lo = texture->GetMaxDistanceMinValue() + 1;
+      const int hi = texture->GetMaxDistanceMaxValue() + 1;
+      long value;
+      if (!ParseInt(text, value) || value < lo || value > hi)
+      {
+        throw UsageError("--area-texture: '" + text + "' is not a cell size in [" +
+          std::to_string(lo) + ", " + std::to_string(hi) + "]");
+      }
+      cl.AreaTextureCellSize = static_cast<int>(value);
+      continue; // not a filter option
+    }
+    else
+    {
+      throw UsageError("unknown option '" + arg + "'");
+    }
+    cl.FilterOptions.push_back(name);
+  }
+
+  // What goes with what.
+  if (cl.AreaTextureCellSize)
+  {
+    if (!cl.FilterOptions.empty())
+    {
+      throw UsageError("--area-texture cannot be combined with " + cl.FilterOptions.front());
+    }
+    if (cl.Files.size() != 1)
+    {
+      throw UsageError(cl.Files.empty() ? std::string("--area-texture needs OUTPUT")
+                                        : "unexpected argument '" + cl.Files[1] + "'");
+    }
+    return;
+  }
+  if (cl.Files.empty())
+  {
+    throw UsageError("missing INPUT and OUTPUT");
+  }
+  if (cl.Files.size() == 1)
+  {
+    throw UsageError("missing OUTPUT");
+  }
+  if (cl.Files.size() > 2)
+  {
+    throw UsageError("unexpected argument '" + cl.Files[2] + "'");
+  }
+  const bool depthEdges = options->GetEdgeDetection() == vtkMLAAOptions::DEPTH;
+  if (depthEdges && cl.DepthImage.empty())
+  {
+    throw UsageError(std::string("--edges ") +
+      vtkMLAAOptions::GetEdgeDetectionAsString(vtkMLAAOptions::DEPTH) +
+      " needs --depth-image FILE");
+  }
+  if (!depthEdges && !cl.DepthImage.empty())
+  {
+    throw UsageError(std::string("--depth-image is only used with --edges ") +
+      vtkMLAAOptions::GetEdgeDetectionAsString(vtkMLAAOptions::DEPTH));
+  }
+}
+
+//------------------------------------------------------------------------------
+// VTK's messages
+
+// "ERROR: In file, line N\nvtkImageMLAA (0x1234): The message.\n\n" -> "The message."
+std::string CleanVTKMessage(const std::string& text)
+{
+  std::istringstream lines(text);
+  std::string line;
+  std::string message;
+  while (std::getline(lines, line))
+  {
+    if (line.empty() || line.compare(0, 9, "ERROR: In") == 0 ||
+      line.compare(0, 11, "Warning: In") == 0)
+    {
+      continue;
+    }
+    const size_t object = line.find(" (0x");
+    const size_t colon = line.find("): ");
+    if (message.empty() && object != std::string::npos && colon != std::string::npos &&
+      object < colon)
+    {
+      line = line.substr(colon + 3);
+    }
+    message += (message.empty() ? "" : "; ") + line;
+  }
+  return message;
+}
+
+/**
+ * Keeps VTK's error and warning text off the terminal: the filter's and its executive's
+ * messages through observers, anything else through a string output window. Each becomes (at
+ * most) one line.
+ */
+class VTKMessages
+{
+public:
+  explicit VTKMessages(vtkAlgorithm* algorithm)
+  {
+    // VTK sends messages no observer takes to its logger, which prints on stderr, and to the
+    // output window: keep them in the window only.
+    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+    vtkOutputWindow::SetInstance(this->Window);
+    this->Callback->SetCallback(&VTKMessages::Record);
+    this->Callback->SetClientData(this);
+    for (vtkObject* object :
+      { static_cast<vtkObject*>(algorithm), static_cast<vtkObject*>(algorithm->GetExecutive()) })
+    {
+      object->AddObserver(vtkCommand::ErrorEvent, this->Callback);
+      object->AddObserver(vtkCommand::WarningEvent, this->Callback);
+    }
+  }
+
+  /** The first error: the filter's own if it gave one, else whatever VTK printed. */
+  std::string GetError() const
+  {
+    if (!this->Errors.empty())
+    {
+      return this->Errors.front();
+    }
+    // Messages in the window end with a blank line.
+    const std::string printed = this->Window->GetOutput();
+    const size_t first = printed.find_first_not_of('\n');
+    const size_t end = first == std::string::npos ? first : printed.find("\n\n", first);
+    return CleanVTKMessage(printed.substr(0, end));
+  }
+
+  /** Warnings, and text VTK printed although nothing failed. */
+  std::string GetWarnings() const
+  {
+    std::string warnings;
+    for (const std::string& w : this->Warnings)
+    {
+      warnings += (warnings.empty() ? "" : "; ") + w;
+    }
+    const std::string printed = CleanVTKMessage(this->Window->GetOutput());
+    if (!printed.empty())
+    {
+      warnings += (warnings.empty() ? "" : "; ") + printed;
+    }
+    return warnings;
+  }
+
+private:
+  static void Record(vtkObject*, unsigned long event, void* clientData, void* callData)
+  {
+    auto* self = static_cast<VTKMessages*>(clientData);
+    const std::string text = CleanVTKMessage(callData ? static_cast<const char*>(callData) : "");
+    (event == vtkCommand::ErrorEvent ? self->Errors : self->Warnings).push_back(text);
+  }
+
+  vtkNew<vtkStringOutputWindow> Window;
+  vtkNew<vtkCallbackCommand> Callback;
+  std::vector<std::string> Errors;
+  std::vector<std::string> Warnings;
+};
+
+//------------------------------------------------------------------------------
+// The two things the tool does
+
+void WriteAreaTexture(int cellSize, const std::string& path)
+{
+  vtkNew<vtkMLAAAreaTexture> texture;
+  texture->SetMaxDistance(cellSize - 1);
+  // GetImage() stores texel row t at image row size - 1 - t; written top row first, the file
+  // reads as Figure 4.2 (texel (0, 0) at the top left).
+  vtkImageData* image = texture->GetImage();
+  const int size = texture->GetTextureSize();
+  const double unitRange[2] = { 0.0, 1.0 };
+  const std::string note = mlaa::WriteImageFile(image, path,
+    OIIO::ImageSpec(size, size, 3, OIIO::TypeDesc::UINT8), OIIO::TypeDesc::UINT8, unitRange);
+  if (!note.empty())
+  {
+    std::cerr << "mlaa: warning: " << note << std::endl;
+  }
+}
+
+void Antialias(const CommandLine& cl)
+{
+  const std::string& inputPath = cl.Files[0];
+  const std::string& outputPath = cl.Files[1];
+  const mlaa::ImageFile input = mlaa::ReadImageFile(inputPath);
+  if (!input.Warning.empty())
+  {
+    std::cerr << "mlaa: warning: " << input.Warning << std::endl;
+  }
+
+  vtkNew<vtkImageMLAA> filter;
+  filter->SetOptions(cl.Options);
+  filter->SetValueRange(cl.ValueRange[0], cl.ValueRange[1]);
+  filter->SetInputData(input.Image);
+
+  mlaa::ImageFile depth;
+  if (!cl.DepthImage.empty())
+  {
+    depth = mlaa::ReadImageFile(cl.DepthImage);
+    if (!depth.Warning.empty())
+    {
+      std::cerr << "mlaa: warning: " << depth.Warning << std::endl;
+    }
+    if (depth.Spec.nchannels != 1)
+    {
+      throw mlaa::Error("the depth image '" + cl.DepthImage + "' has " +
+        std::to_string(depth.Spec.nchannels) + " channels; it must have 1");
+    }
+    if (depth.Spec.width != input.Spec.width || depth.Spec.height != input.Spec.height)
+    {
+      throw mlaa::Error("the depth image '" + cl.DepthImage + "' is " +
+        std::to_string(depth.Spec.width) + "x" + std::to_string(depth.Spec.height) + ", '" +
+        inputPath + "' is " + std::to_string(input.Spec.width) + "x" +
+        std::to_string(input.Spec.height));
+    }
+    filter->SetDepthInputData(depth.Image);
+  }
+
+  VTKMessages messages(filter);
+  filter->Update();
+  vtkImageData* result = filter->GetOutput();
+  int dims[3];
+  result->GetDimensions(dims);
+  vtkDataArray* scalars = result->GetPointData()->GetScalars();
+  const std::string error = messages.GetError();
+  if (!error.empty() || !scalars || dims[0] != input.Spec.width || dims[1] != input.Spec.height)
+  {
+    throw mlaa::Error("cannot antialias '" + inputPath +
+      "': " + (error.empty() ? std::string("vtkImageMLAA produced no image") : error));
+  }
+  const std::string warnings = messages.GetWarnings();
+  if (!warnings.empty())
+  {
+    std::cerr << "mlaa: warning: " << warnings << std::endl;
+  }
+
+  // The antialiased image keeps the input's description and pixel type; a debug image is
+  // 8-bit RGBA whose alpha is data, not coverage, so it must be written as it is.
+  OIIO::ImageSpec description = input.Spec;
+  OIIO::TypeDesc pixelType = input.PixelType;
+  if (cl.Options->GetDebugOutput() != vtkMLAAOptions::NO_DEBUG_OUTPUT)
+  {
+    description = OIIO::ImageSpec(dims[0], dims[1], 4, OIIO::TypeDesc::UINT8);
+    description.x = input.Spec.x;
+    description.y = input.Spec.y;
+    description.full_x = input.Spec.full_x;
+    description.full_y = input.Spec.full_y;
+    description.full_width = input.Spec.full_width;
+    description.full_height = input.Spec.full_height;
+    description.attribute("oiio:UnassociatedAlpha", 1);
+    pixelType = OIIO::TypeDesc::UINT8;
+  }
+  const std::string note =
+    mlaa::WriteImageFile(result, outputPath, description, pixelType, cl.ValueRange);
+  if (!note.empty())
+  {
+    std::cerr << "mlaa: warning: " << note << std::endl;
+  }
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+int main(int argc, char* argv[])
+{
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  int status = EXIT_SUCCESS;
+  try
+  {
+    CommandLine cl;
+    ParseCommandLine(args, cl);
+    if (cl.Help)
+    {
+      PrintUsage(std::cout);
+    }
+    else if (cl.AreaTextureCellSize)
+    {
+      WriteAreaTexture(cl.AreaTextureCellSize, cl.Files[0]);
+    }
+    else
+    {
+      Antialias(cl);
+    }
+  }
+  catch (const UsageError& e)
+  {
+    std::cerr << "mlaa: " << e.what() << " (see mlaa --help)" << std::endl;
+    status = ExitUsage;
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << "mlaa: " << e.what() << std::endl;
+    status = ExitFailure;
+  }
+  // Any error OpenImageIO still holds was reported above; leaving it would make OpenImageIO
+  // print it again at exit.
+  OIIO::geterror();
+  return status;
+}

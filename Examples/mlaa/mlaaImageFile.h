@@ -1,0 +1,89 @@
+/**
+ * Image files for the `mlaa` tool: reading any file OpenImageIO reads into a vtkImageData, and
+ * writing a vtkImageData so that the destination is either the complete new image or left as
+ * it was.
+ *
+ * Orientation: OpenImageIO's scanline 0 is the top row of the picture; vtkImageData's row 0 is
+ * the bottom row (y grows upwards, as in OpenGL textures and in vtkMLAAOptions' "top"). Both
+ * functions flip with a negative row stride, so a picture keeps its orientation.
+ *
+ * Pixel values are moved as they are stored: no colour-space conversion, and alpha is kept
+ * unassociated where the format stores it so (PNG, TIFF), so that pixels the filter leaves
+ * alone come back bit for bit.
+ *
+ * Every failure throws mlaa::Error, whose message is one line without the "mlaa: " prefix.
+ * What the image libraries print on stderr themselves (libpng does) is captured: it is part of
+ * OpenImageIO's error message on failure, and a warning otherwise.
+ */
+
+#ifndef mlaaImageFile_h
+#define mlaaImageFile_h
+
+#include "vtkSmartPointer.h" // For vtkSmartPointer
+
+#include <OpenImageIO/imageio.h> // For OIIO::ImageSpec, OIIO::TypeDesc
+
+#include <stdexcept> // For std::runtime_error
+#include <string>    // For std::string
+
+class vtkImageData;
+
+namespace mlaa
+{
+/** A failure to report: one line, without the "mlaa: " prefix. */
+class Error : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
+/** An image read from a file. */
+struct ImageFile
+{
+  /** The pixels, bottom row first, one point scalar array with the file's channels. */
+  vtkSmartPointer<vtkImageData> Image;
+  /** The file's description: size, channel names, metadata. */
+  OIIO::ImageSpec Spec;
+  /** The file's pixel type (OIIO::TypeHalf for half, though Image holds it as float). */
+  OIIO::TypeDesc PixelType;
+  /** The OpenImageIO format name, e.g. "png", "openexr". */
+  std::string FormatName;
+  /** What the image libraries printed while reading (one line), or "". */
+  std::string Warning;
+};
+
+/**
+ * The VTK scalar type that holds pixels of `type` without loss: uint8 -> VTK_UNSIGNED_CHAR,
+ * uint16 -> VTK_UNSIGNED_SHORT, half and float -> VTK_FLOAT, double -> VTK_DOUBLE, and the
+ * matching VTK types for the other integers. 0 for a type that is not a pixel type.
+ */
+int GetVTKScalarType(OIIO::TypeDesc type);
+
+/**
+ * Reads subimage 0, MIP level 0 of `path`. Throws for a missing or unreadable file, deep data
+ * and volumes (images deeper than one slice).
+ */
+ImageFile ReadImageFile(const std::string& path);
+
+/**
+ * Writes `image` (bottom row first, 2D, scalars of any pixel type of GetVTKScalarType) to
+ * `path`, in the format of the file name's extension, with pixels of type `pixelType` or, where
+ * the format cannot hold it, the closest type that OpenImageIO's writer chooses. `description`
+ * gives the channel names and the metadata to carry over (its size, channel count and pixel
+ * type are replaced by those of the image).
+ *
+ * When floating-point pixels end up in an integer format, the values in `valueRange` are mapped
+ * to the whole integer range and the others clamped (OpenImageIO's conversion maps [0, 1]).
+ *
+ * The image goes to a new temporary file in the destination's directory, with the same
+ * extension; only once it is completely written is it renamed over `path`. On any failure the
+ * temporary file is removed and an existing `path` is left untouched.
+ *
+ * Returns a one-line note when the written pixel type differs from `pixelType` or the image
+ * libraries printed something, else "".
+ */
+std::string WriteImageFile(vtkImageData* image, const std::string& path,
+  const OIIO::ImageSpec& description, OIIO::TypeDesc pixelType, const double valueRange[2]);
+} // namespace mlaa
+
+#endif
