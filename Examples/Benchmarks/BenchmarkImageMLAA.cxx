@@ -1,0 +1,289 @@
+// mlaa-benchmark-cpu: the CPU speed measure of the project's MEASURING.md.
+//
+// On one RGB image (by default a 1920x1080 single-sample render of the "mixed" scene, or a PNG
+// file) it times, in one run and interleaved repetition by repetition:
+//   MLAA        vtkImageMLAA, default options (vtkSMPTools, Initialize(n));
+//   Gaussian    vtkImageGaussianSmooth, standard deviations (1, 1), radius factors (1.5, 1.5), 2D,
+//               with EnableSMP on, so that it runs on the same vtkSMPTools backend and thread
+//               count as MLAA (the comparison MEASURING.md asks for);
+//   Gaussian-MT the same filter with EnableSMP off and SetNumberOfThreads(n) (vtkMultiThreader;
+//               VTK 9.1's default for imaging filters), for reference;
+//   DeepCopy    vtkImageData::DeepCopy of the image (allocation + copy, as a filter output is);
+//   memcpy      a copy of the scalars into a preallocated buffer (the memory-bandwidth floor);
+// for each thread count n (default 1 and 2), and reports the median time per operation and the
+// ratios MLAA / Gaussian and MLAA / copy.
+#include "BenchmarkUtilities.h"
+#include "vtkMLAAScenes.h"
+
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkImageGaussianSmooth.h"
+#include "vtkImageMLAA.h"
+#include "vtkNew.h"
+#include "vtkPNGReader.h"
+#include "vtkPointData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
+#include "vtkThreadedImageAlgorithm.h"
+
+#include <cstring>
+#include <functional>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace
+{
+void Usage(const char* program)
+{
+  std::cout << "Usage: " << program << " [options]\n"
+            << "Times vtkImageMLAA against vtkImageGaussianSmooth and a plain copy (MEASURING.md).\n"
+            << "  --size WxH          render size (default 1920x1080)\n"
+            << "  --scene NAME        scene to render (default mixed)\n"
+            << "  --image FILE.png    use this PNG instead of a render\n"
+            << "  --repetitions N     timed repetitions per operation and thread count (default 30)\n"
+            << "  --warmup N          untimed repetitions first (default 3)\n"
+            << "  --threads a,b       thread counts (default 1,2)\n";
+}
+
+// One timed operation.
+struct Operation
+{
+  std::string Name;
+  std::function<void()> Run;
+  std::vector<double> Times;
+};
+}
+
+int main(int argc, char* argv[])
+{
+  int width = 1920, height = 1080, repetitions = 30, warmup = 3;
+  std::string scene = "mixed", imageFile;
+  std::vector<int> threadCounts = { 1, 2 };
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    const bool hasValue = i + 1 < argc;
+    if (arg == "--help" || arg == "-h")
+    {
+      Usage(argv[0]);
+      return EXIT_SUCCESS;
+    }
+    else if (arg == "--size" && hasValue && mlaaBenchmark::ParseSize(argv[i + 1], width, height))
+    {
+      ++i;
+    }
+    else if (arg == "--scene" && hasValue)
+    {
+      scene = argv[++i];
+    }
+    else if (arg == "--image" && hasValue)
+    {
+      imageFile = argv[++i];
+    }
+    else if (arg == "--repetitions" && hasValue &&
+      mlaaBenchmark::ParsePositive(argv[i + 1], repetitions))
+    {
+      ++i;
+    }
+    else if (arg == "--warmup" && hasValue && mlaaBenchmark::ParsePositive(argv[i + 1], warmup))
+    {
+      ++i;
+    }
+    else if (arg == "--threads" && hasValue)
+    {
+      threadCounts.clear();
+      for (const auto& item : mlaaBenchmark::SplitList(argv[++i]))
+      {
+        int n = 0;
+        if (!mlaaBenchmark::ParsePositive(item, n))
+        {
+          std::cerr << "bad thread count: " << item << std::endl;
+          return EXIT_FAILURE;
+        }
+        threadCounts.push_back(n);
+      }
+    }
+    else
+    {
+      std::cerr << "bad or incomplete argument: " << arg << std::endl;
+      Usage(argv[0]);
+      return EXIT_FAILURE;
+    }
+  }
+
+  // The input image.
+  vtkNew<vtkImageData> image;
+  std::string source;
+  if (!imageFile.empty())
+  {
+    vtkNew<vtkPNGReader> reader;
+    if (!reader->CanReadFile(imageFile.c_str()))
+    {
+      std::cerr << "cannot read PNG file " << imageFile << std::endl;
+      return EXIT_FAILURE;
+    }
+    reader->SetFileName(imageFile.c_str());
+    reader->Update();
+    image->DeepCopy(reader->GetOutput());
+    source = imageFile;
+  }
+  else
+  {
+    if (vtkMLAAScenes::Describe(scene).empty())
+    {
+      std::cerr << "unknown scene: " << scene << std::endl;
+      return EXIT_FAILURE;
+    }
+    auto window = vtkMLAAScenes::NewOffscreenWindow(width, height);
+    vtkNew<vtkRenderer> renderer;
+    window->AddRenderer(renderer);
+    vtkMLAAScenes::Build(scene, renderer);
+    image->DeepCopy(vtkMLAAScenes::Capture(window));
+    source = "scene '" + scene + "' rendered offscreen, single-sample";
+  }
+  int dims[3];
+  image->GetDimensions(dims);
+  const int components = image->GetNumberOfScalarComponents();
+  std::cout << "mlaa-benchmark-cpu: " << dims[0] << "x" << dims[1] << " x " << components << " "
+            << image->GetScalarTypeAsString() << " (" << source << "), " << repetitions
+            << " timed repetitions after " << warmup << " warm-up, median ms" << std::endl;
+  std::cout << "vtkSMPTools backend: " << vtkSMPTools::GetBackend()
+            << "; hardware threads: " << std::thread::hardware_concurrency()
+            << "; vtkThreadedImageAlgorithm global default EnableSMP: "
+            << (vtkThreadedImageAlgorithm::GetGlobalDefaultEnableSMP() ? "on" : "off") << std::endl;
+
+  vtkNew<vtkImageMLAA> mlaa;
+  mlaa->SetInputData(image);
+  vtkNew<vtkImageGaussianSmooth> gaussianSMP;
+  gaussianSMP->SetInputData(image);
+  gaussianSMP->SetDimensionality(2);
+  gaussianSMP->SetStandardDeviations(1.0, 1.0);
+  gaussianSMP->SetRadiusFactors(1.5, 1.5);
+  gaussianSMP->SetEnableSMP(true);
+  vtkNew<vtkImageGaussianSmooth> gaussianMT;
+  gaussianMT->SetInputData(image);
+  gaussianMT->SetDimensionality(2);
+  gaussianMT->SetStandardDeviations(1.0, 1.0);
+  gaussianMT->SetRadiusFactors(1.5, 1.5);
+  gaussianMT->SetEnableSMP(false);
+  vtkNew<vtkImageData> copy;
+  const std::size_t bytes = static_cast<std::size_t>(image->GetPointData()->GetScalars()->GetDataSize()) *
+    image->GetPointData()->GetScalars()->GetDataTypeSize();
+  std::vector<unsigned char> buffer(bytes);
+  const void* scalars = image->GetScalarPointer();
+  volatile unsigned char sink = 0;
+
+  struct Row
+  {
+    int Threads;
+    std::map<std::string, double> Median;
+  };
+  std::vector<Row> rows;
+  const std::vector<std::string> order = { "MLAA", "Gaussian", "Gaussian-MT", "DeepCopy", "memcpy" };
+  for (int threads : threadCounts)
+  {
+    vtkSMPTools::Initialize(threads);
+    gaussianSMP->SetNumberOfThreads(threads); // ignored with EnableSMP on; set for clarity
+    gaussianMT->SetNumberOfThreads(threads);
+    std::vector<Operation> operations = {
+      { "MLAA",
+        [&]() {
+          mlaa->Modified();
+          mlaa->Update();
+        },
+        {} },
+      { "Gaussian",
+        [&]() {
+          gaussianSMP->Modified();
+          gaussianSMP->Update();
+        },
+        {} },
+      { "Gaussian-MT",
+        [&]() {
+          gaussianMT->Modified();
+          gaussianMT->Update();
+        },
+        {} },
+      { "DeepCopy",
+        [&]() {
+          copy->Initialize();
+          copy->DeepCopy(image);
+        },
+        {} },
+      { "memcpy",
+        [&]() {
+          std::memcpy(buffer.data(), scalars, bytes);
+          sink = sink + buffer[bytes / 2];
+        },
+        {} },
+    };
+    for (int w = 0; w < warmup; ++w)
+    {
+      for (auto& op : operations)
+      {
+        op.Run();
+      }
+    }
+    // Interleaved: load changes on a shared machine hit every operation alike.
+    for (int r = 0; r < repetitions; ++r)
+    {
+      for (auto& op : operations)
+      {
+        mlaaBenchmark::Stopwatch clock;
+        op.Run();
+        op.Times.push_back(clock.Milliseconds());
+      }
+    }
+    Row row;
+    row.Threads = threads;
+    std::cout << "\nthreads " << threads << " (vtkSMPTools::GetEstimatedNumberOfThreads() = "
+              << vtkSMPTools::GetEstimatedNumberOfThreads() << ")\n";
+    std::cout << "  " << std::left << std::setw(13) << "operation" << std::right << std::setw(10)
+              << "median" << std::setw(10) << "min" << std::setw(10) << "p90" << "  ms\n";
+    for (const auto& op : operations)
+    {
+      row.Median[op.Name] = mlaaBenchmark::Median(op.Times);
+      std::cout << "  " << std::left << std::setw(13) << op.Name << std::right << std::fixed
+                << std::setprecision(2) << std::setw(10) << row.Median[op.Name] << std::setw(10)
+                << mlaaBenchmark::Quantile(op.Times, 0.0) << std::setw(10)
+                << mlaaBenchmark::Quantile(op.Times, 0.9) << std::defaultfloat << "\n";
+    }
+    rows.push_back(row);
+  }
+
+  std::cout << "\nratios of medians (same run):\n"
+            << std::right << std::setw(8) << "threads" << std::setw(16) << "MLAA/Gaussian"
+            << std::setw(18) << "MLAA/Gaussian-MT" << std::setw(16) << "MLAA/DeepCopy"
+            << std::setw(13) << "MLAA/memcpy" << "\n";
+  for (const auto& row : rows)
+  {
+    const double m = row.Median.at("MLAA");
+    std::cout << std::setw(8) << row.Threads << std::fixed << std::setprecision(2) << std::setw(16)
+              << m / row.Median.at("Gaussian") << std::setw(18) << m / row.Median.at("Gaussian-MT")
+              << std::setw(16) << m / row.Median.at("DeepCopy") << std::setw(13)
+              << m / row.Median.at("memcpy") << std::defaultfloat << "\n";
+  }
+  if (rows.size() > 1)
+  {
+    std::cout << "\nspeed-up from " << rows.front().Threads << " to " << rows.back().Threads
+              << " threads:";
+    for (const auto& name : { "MLAA", "Gaussian", "Gaussian-MT" })
+    {
+      std::cout << " " << name << " " << std::fixed << std::setprecision(2)
+                << rows.front().Median.at(name) / rows.back().Median.at(name) << "x";
+    }
+    std::cout << std::defaultfloat << "\n";
+  }
+  std::cout << "Gaussian: vtkImageGaussianSmooth (sd 1, radius factor 1.5, 2D) with EnableSMP on "
+               "(vtkSMPTools, same thread count as MLAA); Gaussian-MT: EnableSMP off, "
+               "SetNumberOfThreads(n). Absolute times drift on shared machines: quote the ratios."
+            << std::endl;
+  (void)sink;
+  return EXIT_SUCCESS;
+}

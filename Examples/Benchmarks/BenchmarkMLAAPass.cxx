@@ -1,0 +1,249 @@
+// mlaa-benchmark-gpu: the GPU speed measure of the project's MEASURING.md.
+//
+// Renders one scene (default "mixed") offscreen, single-sample (SetMultiSamples(0)), at one size
+// (default 1920x1080) with each of these renderer configurations:
+//   default       no pass set (vtkOpenGLRenderer's own render steps);
+//   steps         a vtkRenderStepsPass set as the renderer's pass (the delegate of the two below);
+//   FXAA-pass     vtkOpenGLFXAAPass, delegate vtkRenderStepsPass, default vtkFXAAOptions;
+//   MLAA-pass     vtkOpenGLMLAAPass, delegate vtkRenderStepsPass, default vtkMLAAOptions;
+//   FXAA-builtin  no pass, renderer->UseFXAAOn() (for reference);
+// and times frames: each frame turns the camera by a small azimuth, calls window->Render() and
+// then WaitForCompletion() (glFinish), so that the time includes the GL work. Configurations are
+// visited in rounds (a few frames each, after two untimed frames) so that load changes on a
+// shared machine hit them alike; every configuration starts each round from the same camera.
+// It reports the median frame time per configuration and
+//   overhead(X) = median(X) - median(steps),   ratio = overhead(MLAA-pass) / overhead(FXAA-pass),
+// and the MLAA pass's render-target memory relative to an RGBA8 back buffer (W * H * 4 bytes).
+#include "BenchmarkUtilities.h"
+#include "vtkMLAAScenes.h"
+
+#include "vtkCamera.h"
+#include "vtkNew.h"
+#include "vtkOpenGLFXAAPass.h"
+#include "vtkOpenGLMLAAPass.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+
+#include <cstdlib>
+#include <iomanip>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace
+{
+void Usage(const char* program)
+{
+  std::cout << "Usage: " << program << " [options]\n"
+            << "Times frames with and without the MLAA and FXAA passes (MEASURING.md).\n"
+            << "  --size WxH       window size (default 1920x1080)\n"
+            << "  --scene NAME     scene (default mixed)\n"
+            << "  --frames N       timed frames per configuration (default 100)\n"
+            << "  --warmup N       untimed frames per configuration first (default 10)\n"
+            << "  --rounds N       split the timed frames into N interleaved rounds (default 5)\n"
+            << "  --azimuth DEG    camera azimuth step per frame (default 0.2; 0 = still)\n";
+}
+
+struct Configuration
+{
+  std::string Name;
+  vtkRenderPass* Pass; // nullptr: the renderer's own steps
+  bool BuiltinFXAA;
+  std::vector<double> Times;
+};
+}
+
+int main(int argc, char* argv[])
+{
+  int width = 1920, height = 1080, frames = 100, warmup = 10, rounds = 5;
+  double azimuth = 0.2;
+  std::string scene = "mixed";
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    const bool hasValue = i + 1 < argc;
+    if (arg == "--help" || arg == "-h")
+    {
+      Usage(argv[0]);
+      return EXIT_SUCCESS;
+    }
+    else if (arg == "--size" && hasValue && mlaaBenchmark::ParseSize(argv[i + 1], width, height))
+    {
+      ++i;
+    }
+    else if (arg == "--scene" && hasValue)
+    {
+      scene = argv[++i];
+    }
+    else if (arg == "--frames" && hasValue && mlaaBenchmark::ParsePositive(argv[i + 1], frames))
+    {
+      ++i;
+    }
+    else if (arg == "--warmup" && hasValue && mlaaBenchmark::ParsePositive(argv[i + 1], warmup))
+    {
+      ++i;
+    }
+    else if (arg == "--rounds" && hasValue && mlaaBenchmark::ParsePositive(argv[i + 1], rounds))
+    {
+      ++i;
+    }
+    else if (arg == "--azimuth" && hasValue)
+    {
+      azimuth = std::atof(argv[++i]);
+    }
+    else
+    {
+      std::cerr << "bad or incomplete argument: " << arg << std::endl;
+      Usage(argv[0]);
+      return EXIT_FAILURE;
+    }
+  }
+  if (vtkMLAAScenes::Describe(scene).empty())
+  {
+    std::cerr << "unknown scene: " << scene << std::endl;
+    return EXIT_FAILURE;
+  }
+  rounds = std::min(rounds, frames);
+
+  auto window = vtkMLAAScenes::NewOffscreenWindow(width, height);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  vtkMLAAScenes::Build(scene, renderer);
+  window->Render();
+  auto* glWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
+  if (!glWindow)
+  {
+    std::cerr << "not an OpenGL render window" << std::endl;
+    return EXIT_FAILURE;
+  }
+  int actual[2] = { window->GetSize()[0], window->GetSize()[1] };
+  std::cout << "mlaa-benchmark-gpu: scene '" << scene << "', " << actual[0] << "x" << actual[1]
+            << " offscreen, MultiSamples " << window->GetMultiSamples() << ", " << frames
+            << " timed frames per configuration in " << rounds << " rounds after " << warmup
+            << " warm-up frames, azimuth step " << azimuth << " deg, Render() + WaitForCompletion()"
+            << std::endl;
+  mlaaBenchmark::PrintRasteriserNote(mlaaBenchmark::OpenGLRenderer(window));
+  if (const char* lp = std::getenv("LP_NUM_THREADS"))
+  {
+    std::cout << "LP_NUM_THREADS=" << lp << std::endl;
+  }
+
+  vtkNew<vtkRenderStepsPass> steps;
+  vtkNew<vtkRenderStepsPass> fxaaSteps;
+  vtkNew<vtkOpenGLFXAAPass> fxaa;
+  fxaa->SetDelegatePass(fxaaSteps);
+  vtkNew<vtkRenderStepsPass> mlaaSteps;
+  vtkNew<vtkOpenGLMLAAPass> mlaa;
+  mlaa->SetDelegatePass(mlaaSteps);
+
+  std::vector<Configuration> configurations = {
+    { "default", nullptr, false, {} },
+    { "steps", steps, false, {} },
+    { "FXAA-pass", fxaa, false, {} },
+    { "MLAA-pass", mlaa, false, {} },
+    { "FXAA-builtin", nullptr, true, {} },
+  };
+
+  vtkCamera* camera = renderer->GetActiveCamera();
+  vtkNew<vtkCamera> start;
+  start->DeepCopy(camera);
+  auto frame = [&]() {
+    camera->Azimuth(azimuth);
+    mlaaBenchmark::Stopwatch clock;
+    window->Render();
+    glWindow->WaitForCompletion();
+    return clock.Milliseconds();
+  };
+  auto use = [&](const Configuration& c) {
+    renderer->SetPass(c.Pass);
+    renderer->SetUseFXAA(c.BuiltinFXAA);
+    camera->DeepCopy(start);
+  };
+
+  for (auto& c : configurations)
+  {
+    use(c);
+    for (int f = 0; f < warmup; ++f)
+    {
+      frame();
+    }
+  }
+  for (int r = 0; r < rounds; ++r)
+  {
+    const int count = frames / rounds + (r < frames % rounds ? 1 : 0);
+    for (auto& c : configurations)
+    {
+      use(c);
+      frame();
+      frame();
+      camera->DeepCopy(start);
+      for (int f = 0; f < count; ++f)
+      {
+        c.Times.push_back(frame());
+      }
+    }
+  }
+  // Memory, measured while the MLAA pass still holds its targets.
+  use(configurations[3]);
+  window->Render();
+  const double backBuffer = static_cast<double>(actual[0]) * actual[1] * 4.0;
+  const double targets = static_cast<double>(mlaa->GetTargetMemorySize());
+  const double mlaaTargets = static_cast<double>(mlaa->GetMLAATargetMemorySize());
+
+  std::cout << "\n"
+            << std::left << std::setw(14) << "configuration" << std::right << std::setw(10)
+            << "median" << std::setw(10) << "min" << std::setw(10) << "p90" << std::setw(12)
+            << "-steps" << "  ms/frame\n";
+  double stepsMedian = 0.0;
+  for (const auto& c : configurations)
+  {
+    if (c.Name == "steps")
+    {
+      stepsMedian = mlaaBenchmark::Median(c.Times);
+    }
+  }
+  double fxaaOverhead = 0.0, mlaaOverhead = 0.0;
+  for (const auto& c : configurations)
+  {
+    const double median = mlaaBenchmark::Median(c.Times);
+    if (c.Name == "FXAA-pass")
+    {
+      fxaaOverhead = median - stepsMedian;
+    }
+    if (c.Name == "MLAA-pass")
+    {
+      mlaaOverhead = median - stepsMedian;
+    }
+    std::cout << std::left << std::setw(14) << c.Name << std::right << std::fixed
+              << std::setprecision(2) << std::setw(10) << median << std::setw(10)
+              << mlaaBenchmark::Quantile(c.Times, 0.0) << std::setw(10)
+              << mlaaBenchmark::Quantile(c.Times, 0.9) << std::setw(12) << median - stepsMedian
+              << std::defaultfloat << "\n";
+  }
+  std::cout << std::fixed << std::setprecision(2) << "\noverhead (median - median(steps)): FXAA-pass "
+            << fxaaOverhead << " ms, MLAA-pass " << mlaaOverhead << " ms\n"
+            << "overhead(MLAA-pass) / overhead(FXAA-pass) = ";
+  if (fxaaOverhead > 0.0)
+  {
+    std::cout << mlaaOverhead / fxaaOverhead << "\n";
+  }
+  else
+  {
+    std::cout << "n/a (FXAA overhead not positive: within noise)\n";
+  }
+  std::cout << "MLAA pass render targets: " << targets / (1024.0 * 1024.0) << " MiB = "
+            << targets / backBuffer << " x the RGBA8 back buffer (" << backBuffer / (1024.0 * 1024.0)
+            << " MiB); MLAA-specific targets (edges + blending weights): "
+            << mlaaTargets / (1024.0 * 1024.0) << " MiB = " << mlaaTargets / backBuffer
+            << " x the back buffer" << std::defaultfloat << std::endl;
+
+  renderer->SetPass(nullptr);
+  renderer->UseFXAAOff();
+  mlaa->ReleaseGraphicsResources(window);
+  fxaa->ReleaseGraphicsResources(window);
+  steps->ReleaseGraphicsResources(window);
+  return EXIT_SUCCESS;
+}

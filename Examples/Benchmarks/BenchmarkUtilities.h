@@ -1,0 +1,139 @@
+// Small helpers shared by the three benchmark programs of Examples/Benchmarks: command-line
+// parsing, a stopwatch and order statistics. Header-only; not part of any library.
+#ifndef BenchmarkUtilities_h
+#define BenchmarkUtilities_h
+
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkRenderWindow.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace mlaaBenchmark
+{
+// Parses "WxH" (for example "1920x1080") into positive width and height.
+inline bool ParseSize(const std::string& text, int& width, int& height)
+{
+  const std::size_t x = text.find_first_of("xX");
+  if (x == std::string::npos)
+  {
+    return false;
+  }
+  char* end = nullptr;
+  const long w = std::strtol(text.c_str(), &end, 10);
+  if (end != text.c_str() + x)
+  {
+    return false;
+  }
+  const long h = std::strtol(text.c_str() + x + 1, &end, 10);
+  if (*end != '\0' || w < 1 || h < 1 || w > 16384 || h > 16384)
+  {
+    return false;
+  }
+  width = static_cast<int>(w);
+  height = static_cast<int>(h);
+  return true;
+}
+
+// Parses a positive integer.
+inline bool ParsePositive(const std::string& text, int& value)
+{
+  char* end = nullptr;
+  const long v = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || v < 1 || v > 1000000)
+  {
+    return false;
+  }
+  value = static_cast<int>(v);
+  return true;
+}
+
+// Splits "a,b,c" into its non-empty items.
+inline std::vector<std::string> SplitList(const std::string& text)
+{
+  std::vector<std::string> items;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ','))
+  {
+    if (!item.empty())
+    {
+      items.push_back(item);
+    }
+  }
+  return items;
+}
+
+// Wall-clock stopwatch in milliseconds (steady clock).
+class Stopwatch
+{
+public:
+  void Start() { this->Begin = std::chrono::steady_clock::now(); }
+  double Milliseconds() const
+  {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - this->Begin)
+      .count();
+  }
+
+private:
+  std::chrono::steady_clock::time_point Begin = std::chrono::steady_clock::now();
+};
+
+// The q-quantile (0 = min, 0.5 = median, 1 = max) of `values`, linear interpolation.
+inline double Quantile(std::vector<double> values, double q)
+{
+  if (values.empty())
+  {
+    return 0.0;
+  }
+  std::sort(values.begin(), values.end());
+  const double position = q * (values.size() - 1);
+  const std::size_t below = static_cast<std::size_t>(position);
+  const std::size_t above = std::min(below + 1, values.size() - 1);
+  const double t = position - below;
+  return values[below] * (1.0 - t) + values[above] * t;
+}
+
+inline double Median(const std::vector<double>& values)
+{
+  return Quantile(values, 0.5);
+}
+
+// The "OpenGL renderer string" line of the window's capabilities (after a first render), so the
+// output says what rasterised the frames.
+inline std::string OpenGLRenderer(vtkRenderWindow* window)
+{
+  const char* report = window->ReportCapabilities();
+  std::stringstream stream(report ? report : "");
+  std::string line;
+  while (std::getline(stream, line))
+  {
+    if (line.find("renderer string") != std::string::npos)
+    {
+      const std::size_t colon = line.find(':');
+      return colon == std::string::npos ? line : line.substr(colon + 1);
+    }
+  }
+  return "unknown";
+}
+
+// A note for output taken on Mesa's software rasteriser.
+inline void PrintRasteriserNote(const std::string& renderer)
+{
+  std::cout << "OpenGL renderer:" << renderer << std::endl;
+  if (renderer.find("llvmpipe") != std::string::npos ||
+    renderer.find("softpipe") != std::string::npos)
+  {
+    std::cout << "NOTE: llvmpipe is Mesa's CPU rasteriser: 'GPU' work runs on the CPU cores here, "
+                 "so GPU timings are not representative of graphics hardware."
+              << std::endl;
+  }
+}
+}
+
+#endif
