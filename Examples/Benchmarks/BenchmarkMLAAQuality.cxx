@@ -44,6 +44,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -338,12 +339,13 @@ bool WriteMosaic(const std::string& path, const std::vector<const Image*>& image
   return writer->GetErrorCode() == 0;
 }
 
-void WritePNG(const Image& image, const std::string& path)
+bool WritePNG(const Image& image, const std::string& path)
 {
   vtkNew<vtkPNGWriter> writer;
   writer->SetInputData(ToVTK(image));
   writer->SetFileName(path.c_str());
   writer->Write();
+  return writer->GetErrorCode() == 0;
 }
 
 bool Capture(vtkRenderWindow* window, Image& image)
@@ -440,6 +442,14 @@ int main(int argc, char* argv[])
   }
   cropW = std::min(cropW, width);
   cropH = std::min(cropH, height);
+  std::error_code directoryError;
+  std::filesystem::create_directories(outputDir, directoryError);
+  if (directoryError)
+  {
+    std::cerr << "mlaa-quality: cannot create " << outputDir << ": " << directoryError.message()
+              << std::endl;
+    return EXIT_FAILURE;
+  }
 
   std::cout << "mlaa-quality: " << width << "x" << height << ", reference " << samples << "x"
             << samples << " shifted renders, E: |none - reference| > 4/255 in some channel, "
@@ -586,7 +596,12 @@ int main(int argc, char* argv[])
     {
       for (const auto& entry : images)
       {
-        WritePNG(entry.second, outputDir + "/quality-" + scene + "-" + entry.first + ".png");
+        const std::string path = outputDir + "/quality-" + scene + "-" + entry.first + ".png";
+        if (!WritePNG(entry.second, path))
+        {
+          std::cerr << "could not write " << path << std::endl;
+          ++problems;
+        }
       }
     }
     // The crop origin as the PNG shows it (row 0 at the top).
@@ -603,6 +618,11 @@ int main(int argc, char* argv[])
             << std::setw(8) << "AAR" << std::setw(10) << "damage%" << std::setw(9) << "PSNR_E"
             << std::setw(10) << "PSNR_all" << std::setw(10) << "changed%" << "\n";
   std::ofstream csv(outputDir + "/quality.csv");
+  if (!csv)
+  {
+    std::cerr << "could not write " << outputDir << "/quality.csv" << std::endl;
+    ++problems;
+  }
   csv << "scene,method,E_pixels,F_pixels,AAR,damage_percent,damaged_pixels,psnr_E_dB,psnr_all_dB,"
          "changed_percent\n";
   for (const auto& result : results)
