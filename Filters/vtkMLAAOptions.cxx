@@ -67,6 +67,30 @@ void vtkMLAAOptions::DeepCopy(vtkMLAAOptions* other)
 }
 
 //------------------------------------------------------------------------------
+bool vtkMLAAOptions::Assign(vtkObject* owner, vtkMLAAOptions*& member, vtkMLAAOptions* options)
+{
+  if (options && options == member)
+  {
+    return false;
+  }
+  vtkMLAAOptions* old = member;
+  if (options)
+  {
+    options->Register(owner);
+    member = options;
+  }
+  else
+  {
+    member = vtkMLAAOptions::New(); // owned by `owner`: the reference New gives
+  }
+  if (old)
+  {
+    old->UnRegister(owner);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkMLAAOptions::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

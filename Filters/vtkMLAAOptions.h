@@ -136,6 +136,13 @@ public:
    */
   void DeepCopy(vtkMLAAOptions* other);
 
+  /**
+   * For the classes that own options (vtkImageMLAA, vtkOpenGLMLAAPass), whose options are never
+   * null: make `member` refer to `options` (registered to `owner`), or to a fresh default object
+   * when `options` is null, releasing the previous one. Returns true when `member` changed.
+   */
+  static bool Assign(vtkObject* owner, vtkMLAAOptions*& member, vtkMLAAOptions* options);
+
 protected:
   vtkMLAAOptions() = default;
   ~vtkMLAAOptions() override = default;

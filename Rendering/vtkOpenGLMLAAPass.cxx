@@ -117,18 +117,10 @@ vtkOpenGLMLAAPass::~vtkOpenGLMLAAPass()
 //------------------------------------------------------------------------------
 void vtkOpenGLMLAAPass::SetOptions(vtkMLAAOptions* options)
 {
-  if (options == this->Options)
+  if (vtkMLAAOptions::Assign(this, this->Options, options))
   {
-    return;
+    this->Modified();
   }
-  vtkMLAAOptions* old = this->Options;
-  this->Options = options ? options : vtkMLAAOptions::New();
-  if (options)
-  {
-    options->Register(this);
-  }
-  old->UnRegister(this);
-  this->Modified();
 }
 
 //------------------------------------------------------------------------------
