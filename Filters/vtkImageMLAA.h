@@ -8,8 +8,9 @@
  * passes of Jimenez et al., "Practical Morphological Antialiasing" (GPU Pro 2, chapter 4):
  * 1. edge detection (section 4.2): each pixel boundary whose difference exceeds the threshold;
  * 2. blending weights (section 4.3): for every edgel, the distance to both ends of its line
- *    (two edgels read per step, section 4.3.1), the crossing edges at those ends (4.3.2) and
- *    the precomputed area (4.3.3, vtkMLAAAreaTexture);
+ *    (two edgels read per step, section 4.3.1; unlike the chapter's search, it stops at crossing
+ *    edges, which keeps the two outlines of one-pixel-wide lines apart), the crossing edges at
+ *    those ends (4.3.2) and the precomputed area (4.3.3, vtkMLAAAreaTexture);
  * 3. neighbourhood blending (section 4.4): each pixel mixed with its four neighbours by those
  *    weights.
  * It follows the GPU pass vtkOpenGLMLAAPass step for step: the same search (clamped at the image

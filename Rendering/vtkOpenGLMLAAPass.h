@@ -9,8 +9,8 @@
  *    without an edge are marked in a depth buffer so that the second pass skips them (the
  *    chapter's stencil trick);
  * 2. blending weights into an RGBA8 texture: distance search reading two edgels per bilinear
- *    fetch, crossing edges read with a quarter-pixel offset, and the area texture of
- *    vtkMLAAAreaTexture, uploaded once per maximum distance;
+ *    fetch and stopping at crossing edges, crossing edges read with a quarter-pixel offset, and
+ *    the area texture of vtkMLAAAreaTexture, uploaded once per maximum distance;
  * 3. blending of each pixel with its four neighbours.
  * It reads the same vtkMLAAOptions as the CPU filter vtkImageMLAA (share one object with
  * SetOptions), and the two produce the same image within 1/255 on the same input: the shaders are
