@@ -90,29 +90,23 @@ vtkSmartPointer<vtkImageData> PadToWidth(vtkImageData* image, int width)
   return out;
 }
 
+// `a` then `b` along `axis` (0: side by side, 1: stacked; stacked images are first padded to
+// the same width).
 vtkSmartPointer<vtkImageData> Append(vtkImageData* a, vtkImageData* b, int axis)
 {
+  vtkSmartPointer<vtkImageData> first = a;
+  vtkSmartPointer<vtkImageData> second = b;
   if (axis == 1)
   {
-    // Stacking: give both the same width first.
     const int width = std::max(a->GetDimensions()[0], b->GetDimensions()[0]);
-    auto paddedA = PadToWidth(a, width);
-    auto paddedB = PadToWidth(b, width);
-    vtkNew<vtkImageAppend> append;
-    append->SetAppendAxis(1);
-    append->PreserveExtentsOff();
-    append->AddInputData(paddedA);
-    append->AddInputData(paddedB);
-    append->Update();
-    auto out = vtkSmartPointer<vtkImageData>::New();
-    out->DeepCopy(append->GetOutput());
-    return out;
+    first = PadToWidth(a, width);
+    second = PadToWidth(b, width);
   }
   vtkNew<vtkImageAppend> append;
   append->SetAppendAxis(axis);
   append->PreserveExtentsOff();
-  append->AddInputData(a);
-  append->AddInputData(b);
+  append->AddInputData(first);
+  append->AddInputData(second);
   append->Update();
   auto out = vtkSmartPointer<vtkImageData>::New();
   out->DeepCopy(append->GetOutput());
