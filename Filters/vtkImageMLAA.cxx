@@ -213,7 +213,6 @@ public:
     });
   }
 
-  const std::vector<unsigned char>& GetEdges() const { return this->Edges; }
 
 private:
   // The values compared across a boundary, normalised to [0, 1]: luma or the colour channels
