@@ -213,7 +213,6 @@ public:
     });
   }
 
-
 private:
   // The values compared across a boundary, normalised to [0, 1]: luma or the colour channels
   // or the depth, then alpha. A pixel with a non-finite value gets NaN features, which are
