@@ -13,7 +13,6 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 
-#include <cstring>
 
 namespace vtkMLAATest
 {
@@ -55,18 +54,6 @@ inline vtkSmartPointer<vtkImageData> Crop(vtkImageData* image, int x0, int y0, i
   out->GetExtent(ext);
   out->SetExtent(0, ext[1] - ext[0], 0, ext[3] - ext[2], 0, 0);
   return out;
-}
-
-inline std::string Argument(int argc, char* argv[], const char* flag)
-{
-  for (int i = 1; i + 1 < argc; ++i)
-  {
-    if (std::strcmp(argv[i], flag) == 0)
-    {
-      return argv[i + 1];
-    }
-  }
-  return std::string();
 }
 
 // Compares the antialiased render `result` of `window` with the baseline given by -V:

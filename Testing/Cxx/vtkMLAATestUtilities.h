@@ -16,6 +16,7 @@
 #include "vtkSmartPointer.h"
 
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <functional>
 #include <initializer_list>
@@ -89,6 +90,46 @@ inline void FillImage(vtkImageData* image, const std::function<double(int, int, 
 inline double GetValue(vtkImageData* image, int x, int y, int component = 0, int z = 0)
 {
   return image->GetScalarComponentAsDouble(x, y, z, component);
+}
+
+// Whether the (2 radius + 1)^2 neighbourhood of pixel (x, y) (clamped to the image) holds one
+// value within `tolerance`, in component `component` or, when it is -1, in every component.
+inline bool IsFlatAround(vtkImageData* image, int x, int y, int radius = 2, double tolerance = 0.0,
+  int component = -1)
+{
+  int dims[3];
+  image->GetDimensions(dims);
+  const int first = component < 0 ? 0 : component;
+  const int last = component < 0 ? image->GetNumberOfScalarComponents() - 1 : component;
+  for (int dy = -radius; dy <= radius; ++dy)
+  {
+    for (int dx = -radius; dx <= radius; ++dx)
+    {
+      const int nx = std::min(std::max(x + dx, 0), dims[0] - 1);
+      const int ny = std::min(std::max(y + dy, 0), dims[1] - 1);
+      for (int k = first; k <= last; ++k)
+      {
+        if (std::abs(GetValue(image, nx, ny, k) - GetValue(image, x, y, k)) > tolerance)
+        {
+          return false;
+        }
+      }
+    }
+  }
+  return true;
+}
+
+// The value after `flag` on a test's command line (-I, -V, -T), or "" when absent.
+inline std::string Argument(int argc, char* argv[], const char* flag)
+{
+  for (int i = 1; i + 1 < argc; ++i)
+  {
+    if (std::strcmp(argv[i], flag) == 0)
+    {
+      return argv[i + 1];
+    }
+  }
+  return std::string();
 }
 
 // Runs vtkImageMLAA on `input` with `options` (defaults when null).

@@ -6,45 +6,7 @@
 // Arguments: -I <input png> -V <baseline png> -T <directory for the result on failure>.
 #include "vtkMLAATestUtilities.h"
 
-#include <cstring>
-
 using namespace vtkMLAATest;
-
-namespace
-{
-std::string Argument(int argc, char* argv[], const char* flag)
-{
-  for (int i = 1; i + 1 < argc; ++i)
-  {
-    if (std::strcmp(argv[i], flag) == 0)
-    {
-      return argv[i + 1];
-    }
-  }
-  return std::string();
-}
-
-// Pixels whose 5 x 5 neighbourhood in `image` is one colour: far from every edge.
-bool IsFlat(vtkImageData* image, int x, int y, const int dims[3])
-{
-  for (int dy = -2; dy <= 2; ++dy)
-  {
-    for (int dx = -2; dx <= 2; ++dx)
-    {
-      const int nx = std::min(std::max(x + dx, 0), dims[0] - 1);
-      const int ny = std::min(std::max(y + dy, 0), dims[1] - 1);
-      for (int k = 0; k < image->GetNumberOfScalarComponents(); ++k)
-      {
-        if (GetValue(image, nx, ny, k) != GetValue(image, x, y, k))
-        {
-          return false;
-        }
-      }
-    }
-  }
-  return true;
-}
-}
 
 int TestImageMLAARegression(int argc, char* argv[])
 {
@@ -91,7 +53,7 @@ int TestImageMLAARegression(int argc, char* argv[])
         differs = differs || GetValue(input, x, y, k) != GetValue(output, x, y, k);
       }
       changed += differs ? 1 : 0;
-      if (IsFlat(input, x, y, dims))
+      if (IsFlatAround(input, x, y))
       {
         ++flat;
         flatChanged += differs ? 1 : 0;

@@ -30,25 +30,6 @@ void SetVisibility(vtkRenderer* renderer, bool actors3D, bool actors2D)
   }
 }
 
-bool FlatAround(vtkImageData* image, int x, int y, const int dims[3])
-{
-  for (int dy = -2; dy <= 2; ++dy)
-  {
-    for (int dx = -2; dx <= 2; ++dx)
-    {
-      const int nx = std::min(std::max(x + dx, 0), dims[0] - 1);
-      const int ny = std::min(std::max(y + dy, 0), dims[1] - 1);
-      for (int k = 0; k < 3; ++k)
-      {
-        if (GetValue(image, nx, ny, k) != GetValue(image, x, y, k))
-        {
-          return false;
-        }
-      }
-    }
-  }
-  return true;
-}
 }
 
 int TestMLAAPassTextOverlay(int argc, char* argv[])
@@ -82,7 +63,7 @@ int TestMLAAPassTextOverlay(int argc, char* argv[])
         same = same && GetValue(result, x, y, k) == GetValue(scene.Plain, x, y, k);
         sameAA = sameAA && GetValue(overlaysAntialiased, x, y, k) == GetValue(scene.Plain, x, y, k);
       }
-      if (isOverlay && FlatAround(geometryOnly, x, y, dims))
+      if (isOverlay && IsFlatAround(geometryOnly, x, y))
       {
         ++overlayPixels;
         untouched += same ? 1 : 0;

@@ -62,14 +62,8 @@ int TestMLAAPassToneMapping(int, char*[])
   {
     for (int x = 2; x < dims[0] - 2; ++x)
     {
-      bool flat = true;
-      for (int dy = -2; dy <= 2 && flat; ++dy)
-      {
-        for (int dx = -2; dx <= 2 && flat; ++dx)
-        {
-          flat = std::abs(GetValue(toneMapped, x + dx, y + dy, 1) - GetValue(toneMapped, x, y, 1)) <= 4.0;
-        }
-      }
+      // Flat: green within 4/255 over the 5 x 5 neighbourhood.
+      const bool flat = IsFlatAround(toneMapped, x, y, 2, 4.0, 1);
       const bool differs = std::abs(GetValue(toneMapped, x, y, 1) - GetValue(mlaaBefore, x, y, 1)) > 1.0;
       changed += differs ? 1 : 0;
       flatChanged += (differs && flat) ? 1 : 0;
