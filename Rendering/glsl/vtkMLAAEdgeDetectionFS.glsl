@@ -37,9 +37,9 @@ bool differs(float a, float b)
   return d >= threshold && d > 0.0;
 }
 
-bool isEdge(ivec2 p, ivec2 q)
+// Whether the boundary between this pixel (colour a, depth da) and pixel q is an edge.
+bool isEdge(vec4 a, float da, ivec2 q)
 {
-  vec4 a = texelFetch(colorTexture, p, 0);
   vec4 b = texelFetch(colorTexture, q, 0);
   // Non-finite pixels (float buffers) never take part in an edge, so they never spread.
   if (!isFiniteColor(a) || !isFiniteColor(b))
@@ -56,7 +56,7 @@ bool isEdge(ivec2 p, ivec2 q)
   }
   if (edgeDetection == 2)
   {
-    return differs(texelFetch(depthTexture, p, 0).r, texelFetch(depthTexture, q, 0).r);
+    return differs(da, texelFetch(depthTexture, q, 0).r);
   }
   return differs(dot(a.rgb, lumaWeights), dot(b.rgb, lumaWeights));
 }
@@ -67,8 +67,10 @@ void main()
   ivec2 p = ivec2(texCoord * vec2(size)); // this fragment's pixel (texCoord is at its centre)
   // The image border is never an edge (as reads clamped to the border would compare a pixel
   // with itself).
-  float left = (p.x > 0 && isEdge(p, p - ivec2(1, 0))) ? 1.0 : 0.0;
-  float top = (p.y < size.y - 1 && isEdge(p, p + ivec2(0, 1))) ? 1.0 : 0.0;
+  vec4 color = texelFetch(colorTexture, p, 0);
+  float depth = edgeDetection == 2 ? texelFetch(depthTexture, p, 0).r : 0.0;
+  float left = (p.x > 0 && isEdge(color, depth, p - ivec2(1, 0))) ? 1.0 : 0.0;
+  float top = (p.y < size.y - 1 && isEdge(color, depth, p + ivec2(0, 1))) ? 1.0 : 0.0;
   if (left == 0.0 && top == 0.0)
   {
     discard;
