@@ -104,6 +104,9 @@ struct SliceSetup
   const float* Area = nullptr; // 8-bit quantised area texture
   int CellSize = 17;           // D
   int AreaSize = 85;           // 5 D
+  bool Diagonals = true;                // vtkMLAAOptions::DiagonalDetection
+  const float* DiagonalArea = nullptr;  // 8-bit quantised diagonal areas
+  int DiagonalAreaSize = 51;            // 3 D
 };
 
 //------------------------------------------------------------------------------
@@ -378,20 +381,28 @@ private:
   // Section 4.3: the four blending weights of a pixel with edgels.
   // w[0]: this pixel takes the colour above it; w[1]: the pixel above takes this one's;
   // w[2]: this pixel takes its left neighbour's; w[3]: the left neighbour takes this one's.
+  // With DiagonalDetection, an edgel that is part of a 45-degree staircase takes its weights
+  // from the diagonal line instead (ComputeDiagonalWeights).
   void ComputeWeights(int x, int y, float* w) const
   {
     const unsigned char e = this->EdgesAt(x, y);
     w[0] = w[1] = w[2] = w[3] = 0.0f;
-    if (e & TopEdge)
+    bool top = (e & TopEdge) != 0;
+    bool left = (e & LeftEdge) != 0;
+    if (this->S.Diagonals)
+    {
+      this->ComputeDiagonalWeights(x, y, top, left, w);
+    }
+    if (top)
     {
       // A horizontal line: its ends lie to the left and to the right.
-      const int left = this->SearchTopEdges(x, y, -1);
-      const int right = this->SearchTopEdges(x, y, +1);
-      const int e1 = this->CrossingLeftEdges(x - left, y, y + 1);
-      const int e2 = this->CrossingLeftEdges(x + right + 1, y, y + 1);
-      this->LookUpArea(e1, e2, left, right, w);
+      const int leftEnd = this->SearchTopEdges(x, y, -1);
+      const int rightEnd = this->SearchTopEdges(x, y, +1);
+      const int e1 = this->CrossingLeftEdges(x - leftEnd, y, y + 1);
+      const int e2 = this->CrossingLeftEdges(x + rightEnd + 1, y, y + 1);
+      this->LookUpArea(e1, e2, leftEnd, rightEnd, w);
     }
-    if (e & LeftEdge)
+    if (left)
     {
       // A vertical line: its first end is the upper one.
       const int up = this->SearchLeftEdges(x, y, +1);
@@ -400,6 +411,147 @@ private:
       const int e2 = this->CrossingTopEdges(x, x - 1, y - down - 1);
       this->LookUpArea(e1, e2, up, down, w + 2);
     }
+  }
+
+  // Edgels for the diagonal search: none outside the image.
+  int DiagonalTopAt(int x, int y) const
+  {
+    return this->S.Whole.Contains(x, y) ? this->TopAt(x, y) : 0;
+  }
+  int DiagonalLeftAt(int x, int y) const
+  {
+    return this->S.Whole.Contains(x, y) ? this->LeftAt(x, y) : 0;
+  }
+  // A unit of a rising staircase: a pixel with both edgels. A unit of a falling one, named by its
+  // pixel q: q's top edgel and its right neighbour's left edgel.
+  bool IsRisingUnit(int x, int y) const
+  {
+    return this->DiagonalTopAt(x, y) && this->DiagonalLeftAt(x, y);
+  }
+  bool IsFallingUnit(int x, int y) const
+  {
+    return this->DiagonalTopAt(x, y) && this->DiagonalLeftAt(x + 1, y);
+  }
+
+  // Number of further units of the staircase through the unit at (x, y) in direction
+  // (dx, dy), at most the maximum distance; `reachedEnd` tells whether the staircase ended
+  // within it.
+  template <typename IsUnit>
+  int SearchDiagonal(int x, int y, int dx, int dy, IsUnit isUnit, bool& reachedEnd) const
+  {
+    const int maxDistance = this->S.CellSize - 1;
+    for (int k = 1; k <= maxDistance; ++k)
+    {
+      if (!isUnit(x + k * dx, y + k * dy))
+      {
+        reachedEnd = true;
+        return k - 1;
+      }
+    }
+    reachedEnd = false;
+    return maxDistance;
+  }
+
+  // End code of vtkMLAAAreaTexture::ComputeDiagonalAreas from what the staircase does past its
+  // end: a run along x ("flatter") or along y ("steeper"), each of which shifts the line into or
+  // out of the unit's pixel depending on the end and on the slope. Both or neither: nothing.
+  static int DiagonalEndCode(bool reachedEnd, bool flatter, bool steeper, int flatterCode)
+  {
+    if (!reachedEnd || flatter == steeper)
+    {
+      return 0;
+    }
+    return flatter ? flatterCode : 3 - flatterCode;
+  }
+
+  // Weights of the edgels of (x, y) that belong to a staircase of at least
+  // vtkMLAAOptions::MinimumDiagonalLength units; `top` and `left` are cleared for the edgels
+  // handled here, which the orthogonal search then skips.
+  //
+  // Rising (up and to the right): units (x0 + k, y0 + k); the unit's pixel takes the colour above
+  // and left of it, the pixels above and left of it take its colour. The first end is the
+  // lower-left one.
+  // Falling (down and to the right): units q = (x0 + k, y0 - k) with r = q + (1, 0); q takes the
+  // colour above it (r of the unit before) and right of it (r); r takes q's colour. The first end
+  // is the upper-left one.
+  void ComputeDiagonalWeights(int x, int y, bool& top, bool& left, float* w) const
+  {
+    constexpr int minLength = vtkMLAAOptions::MinimumDiagonalLength;
+    constexpr int Out = 1;
+    constexpr int In = 2;
+    if (top && left)
+    {
+      auto isUnit = [this](int u, int v) { return this->IsRisingUnit(u, v); };
+      bool end1, end2;
+      const int d1 = this->SearchDiagonal(x, y, -1, -1, isUnit, end1);
+      const int d2 = this->SearchDiagonal(x, y, +1, +1, isUnit, end2);
+      if (d1 + d2 + 1 >= minLength)
+      {
+        const int x1 = x - d1, y1 = y - d1; // first unit
+        const int x2 = x + d2, y2 = y + d2; // last unit
+        const int e1 = DiagonalEndCode(
+          end1, this->DiagonalTopAt(x1 - 1, y1 - 1) != 0, this->DiagonalLeftAt(x1, y1 - 1) != 0, Out);
+        const int e2 = DiagonalEndCode(
+          end2, this->DiagonalTopAt(x2 + 1, y2) != 0, this->DiagonalLeftAt(x2 + 1, y2 + 1) != 0, In);
+        float a[3];
+        this->LookUpDiagonalArea(e1, e2, d1, d2, a);
+        w[0] = w[2] = a[0];
+        w[1] = a[2]; // the pixel above lies after this unit along the line
+        w[3] = a[1]; // the pixel to the left lies before it
+        top = left = false;
+        return;
+      }
+    }
+    auto isFalling = [this](int u, int v) { return this->IsFallingUnit(u, v); };
+    // Falling staircases: this pixel as q (its top edgel) or as r (its left edgel).
+    for (int role = 0; role < 2; ++role)
+    {
+      const bool asQ = role == 0;
+      if (!(asQ ? top : left))
+      {
+        continue;
+      }
+      const int qx = asQ ? x : x - 1;
+      if (!this->IsFallingUnit(qx, y))
+      {
+        continue;
+      }
+      bool end1, end2;
+      const int d1 = this->SearchDiagonal(qx, y, -1, +1, isFalling, end1);
+      const int d2 = this->SearchDiagonal(qx, y, +1, -1, isFalling, end2);
+      if (d1 + d2 + 1 < minLength)
+      {
+        continue;
+      }
+      const int x1 = qx - d1, y1 = y + d1; // first unit (upper left)
+      const int x2 = qx + d2, y2 = y - d2; // last unit (lower right)
+      const int e1 = DiagonalEndCode(
+        end1, this->DiagonalTopAt(x1 - 1, y1) != 0, this->DiagonalLeftAt(x1, y1 + 1) != 0, In);
+      const int e2 = DiagonalEndCode(end2, this->DiagonalTopAt(x2 + 1, y2 - 1) != 0,
+        this->DiagonalLeftAt(x2 + 1, y2 - 1) != 0, Out);
+      float a[3];
+      this->LookUpDiagonalArea(e1, e2, d1, d2, a);
+      if (asQ)
+      {
+        w[0] = a[0]; // q takes the colour above it
+        w[1] = a[1]; // the pixel above q is the r of the unit before
+        top = false;
+      }
+      else
+      {
+        w[2] = a[2]; // r lies after q along the line
+        w[3] = a[0]; // q takes r's colour
+        left = false;
+      }
+    }
+  }
+
+  void LookUpDiagonalArea(int e1, int e2, int d1, int d2, float* a) const
+  {
+    const int d = this->S.CellSize;
+    const size_t texel =
+      static_cast<size_t>(d * e2 + d2) * this->S.DiagonalAreaSize + (d * e1 + d1);
+    std::copy(this->S.DiagonalArea + 3 * texel, this->S.DiagonalArea + 3 * texel + 3, a);
   }
 
   void LookUpArea(int e1, int e2, int d1, int d2, float* w) const
@@ -541,16 +693,15 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
   slice.BlendOrDebug(output, debug);
 }
 
-// The 8-bit quantised area table: blending weights are stored as 8-bit values, as in the
+// An area table quantised to 8 bits: blending weights are stored as 8-bit values, as in the
 // chapter's RGBA8 blending-weights texture, so the CPU filter and the GPU pass use the same
 // weights.
-std::vector<float> QuantisedAreaTable(int maxDistance)
+std::vector<float> Quantised(const std::vector<float>& table)
 {
-  auto table = vtkMLAAAreaTexture::GetSharedTable(maxDistance);
-  std::vector<float> quantised(table->size());
-  for (size_t i = 0; i < table->size(); ++i)
+  std::vector<float> quantised(table.size());
+  for (size_t i = 0; i < table.size(); ++i)
   {
-    quantised[i] = std::nearbyint((*table)[i] * 255.0f) / 255.0f;
+    quantised[i] = std::nearbyint(table[i] * 255.0f) / 255.0f;
   }
   return quantised;
 }
@@ -601,8 +752,9 @@ int vtkImageMLAA::GetInputPadding()
 {
   // The blending reads the weights of the right and lower neighbours (1 pixel); a weight reads
   // edgels up to 2 * MaxSearchSteps pixels along its line and the crossing edge one further
-  // (2 * MaxSearchSteps + 1); an edgel compares two pixels.
-  return 2 * this->Options->GetMaxSearchSteps() + 2;
+  // (2 * MaxSearchSteps + 1); an edgel compares two pixels. The diagonal search reads up to
+  // 2 * MaxSearchSteps units along x and y, and the edgels two pixels past the last one.
+  return 2 * this->Options->GetMaxSearchSteps() + (this->Options->GetDiagonalDetection() ? 4 : 2);
 }
 
 //------------------------------------------------------------------------------
@@ -768,10 +920,17 @@ int vtkImageMLAA::RequestData(
   setup.DebugOutput = debugOutput;
   setup.SearchSteps = this->Options->GetMaxSearchSteps();
   setup.Threshold = this->Options->GetThreshold();
-  const std::vector<float> area = QuantisedAreaTable(this->Options->GetMaxDistance());
+  const int maxDistance = this->Options->GetMaxDistance();
+  const std::vector<float> area = Quantised(*vtkMLAAAreaTexture::GetSharedTable(maxDistance));
   setup.Area = area.data();
-  setup.CellSize = this->Options->GetMaxDistance() + 1;
+  setup.CellSize = maxDistance + 1;
   setup.AreaSize = vtkMLAAAreaTexture::NumberOfCodes * setup.CellSize;
+  setup.Diagonals = this->Options->GetDiagonalDetection();
+  const std::vector<float> diagonalArea = setup.Diagonals
+    ? Quantised(*vtkMLAAAreaTexture::GetSharedDiagonalTable(maxDistance))
+    : std::vector<float>();
+  setup.DiagonalArea = diagonalArea.data();
+  setup.DiagonalAreaSize = vtkMLAAAreaTexture::NumberOfDiagonalCodes * setup.CellSize;
 
   // The depth image, for depth edges.
   vtkImageData* depth = nullptr;

@@ -133,6 +133,67 @@ std::shared_ptr<const std::vector<float>> vtkMLAAAreaTexture::GetSharedTable(int
 }
 
 //------------------------------------------------------------------------------
+void vtkMLAAAreaTexture::ComputeDiagonalAreas(int e1, int e2, int d1, int d2, double areas[3])
+{
+  areas[0] = areas[1] = areas[2] = 0.0;
+  if (d1 < 0 || d2 < 0)
+  {
+    return;
+  }
+  auto endShift = [](int code) { return code == 1 ? -0.5 : (code == 2 ? 0.5 : 0.0); };
+  const double h1 = endShift(e1);
+  const double h2 = endShift(e2);
+  const double length = d1 + d2 + 1.0;
+  const double middle = 0.5 * length;
+  // The revectorised line's shift at t along the staircase: h1 at t = 0, 0 at the middle, h2 at
+  // t = length.
+  auto shift = [&](double t) {
+    const double s = (t < middle) ? h1 * (1.0 - t / middle) : h2 * (1.0 - (length - t) / middle);
+    return std::min(0.5, std::max(-0.5, s));
+  };
+  const double in = 0.5 + shift(d1 + 0.5);
+  const double before = 0.5 - shift(d1);
+  const double after = 0.5 - shift(d1 + 1.0);
+  areas[0] = 0.5 * in * in;
+  areas[1] = 0.5 * before * before;
+  areas[2] = 0.5 * after * after;
+}
+
+//------------------------------------------------------------------------------
+std::shared_ptr<const std::vector<float>> vtkMLAAAreaTexture::GetSharedDiagonalTable(
+  int maxDistance)
+{
+  static std::mutex cacheMutex;
+  static std::map<int, std::shared_ptr<const std::vector<float>>> cache;
+
+  maxDistance = std::max(1, maxDistance);
+  std::lock_guard<std::mutex> lock(cacheMutex);
+  auto found = cache.find(maxDistance);
+  if (found != cache.end())
+  {
+    return found->second;
+  }
+  const int d = maxDistance + 1;
+  const int size = NumberOfDiagonalCodes * d;
+  auto table = std::make_shared<std::vector<float>>(static_cast<size_t>(size) * size * 3, 0.0f);
+  for (int t = 0; t < size; ++t)
+  {
+    for (int s = 0; s < size; ++s)
+    {
+      double areas[3];
+      ComputeDiagonalAreas(s / d, t / d, s % d, t % d, areas);
+      float* texel = table->data() + 3 * (static_cast<size_t>(t) * size + s);
+      for (int c = 0; c < 3; ++c)
+      {
+        texel[c] = static_cast<float>(areas[c]);
+      }
+    }
+  }
+  cache[maxDistance] = table;
+  return table;
+}
+
+//------------------------------------------------------------------------------
 vtkMLAAAreaTexture::vtkMLAAAreaTexture() = default;
 
 //------------------------------------------------------------------------------

@@ -110,6 +110,39 @@ public:
    */
   static std::shared_ptr<const std::vector<float>> GetSharedTable(int maxDistance);
 
+  ///@{
+  /**
+   * Diagonal lines (vtkMLAAOptions::DiagonalDetection). A staircase of one-pixel steps is a line
+   * at 45 degrees; its "units" are the pixels where the staircase turns (both edgels of one pixel
+   * for a rising line, a top edgel and the next pixel's left edgel for a falling one). Across one
+   * unit the staircase reads as the 45-degree line through the middles of its two edgels, which
+   * cuts 1/8 of a pixel from each side, as the orthogonal search already does. Where the
+   * staircase ends, in a run of two pixels along x or y, the real line is half a pixel to one
+   * side of that 45-degree line; the line is revectorised as in section 4.1, but along the
+   * diagonal: it starts at the shift of the first end, reaches the 45-degree line in the middle
+   * of the staircase and ends at the shift of the second end (U and Z shapes, along 45 degrees).
+   *
+   * End codes: 0 = nothing to tell (no run, a junction, or beyond the search), 1 = the line
+   * leaves the unit's pixel (shift -1/2), 2 = it enters the pixel (shift +1/2). The unit's pixel
+   * is the one whose corner the line cuts (its "outside" is up-left for a rising line, up-right
+   * for a falling one). For a unit at distance d1 from the first end and d2 from the second
+   * (length L = d1 + d2 + 1 units, the shift s(t) is evaluated at points t along the diagonal,
+   * t = 0 the first end), areas[0] = (1/2 + s)^2 / 2 at t = d1 + 1/2 (how much the unit's pixel
+   * takes of the colour on the other side), areas[1] = (1/2 - s)^2 / 2 at t = d1 (how much the
+   * other-side pixel before the unit takes of the unit's colour), areas[2] = the same at
+   * t = d1 + 1 (the other-side pixel after the unit). Shifts are clamped to [-1/2, 1/2].
+   */
+  static constexpr int NumberOfDiagonalCodes = 3;
+  static void ComputeDiagonalAreas(int e1, int e2, int d1, int d2, double areas[3]);
+  ///@}
+
+  /**
+   * The shared table of diagonal areas for cells of side D = maxDistance + 1: 3 x 3 cells (end
+   * codes e1, e2) of D x D texels, three floats per texel (ComputeDiagonalAreas), texel
+   * (D * e1 + d1, D * e2 + d2) at index 3 * (t * 3 D + s).
+   */
+  static std::shared_ptr<const std::vector<float>> GetSharedDiagonalTable(int maxDistance);
+
 protected:
   vtkMLAAAreaTexture();
   ~vtkMLAAAreaTexture() override;

@@ -64,6 +64,7 @@ void vtkMLAAOptions::DeepCopy(vtkMLAAOptions* other)
   this->SetEdgeDetection(other->EdgeDetection);
   this->SetMaxSearchSteps(other->MaxSearchSteps);
   this->SetDebugOutput(other->DebugOutput);
+  this->SetDiagonalDetection(other->DiagonalDetection);
 }
 
 //------------------------------------------------------------------------------
@@ -98,4 +99,5 @@ void vtkMLAAOptions::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EdgeDetection: " << GetEdgeDetectionAsString(this->EdgeDetection) << "\n";
   os << indent << "MaxSearchSteps: " << this->MaxSearchSteps << "\n";
   os << indent << "DebugOutput: " << GetDebugOutputAsString(this->DebugOutput) << "\n";
+  os << indent << "DiagonalDetection: " << (this->DiagonalDetection ? "On" : "Off") << "\n";
 }

@@ -152,26 +152,34 @@ void vtkOpenGLMLAAPass::PrepareTargets(
     DeleteObject(this->MLAAFramebuffer, renWin);
   }
 
-  // The area texture, uploaded once per maximum distance from the shared generator.
+  // The area textures (orthogonal and diagonal lines), uploaded once per maximum distance from
+  // the shared generator.
   const int maxDistance = this->Options->GetMaxDistance();
-  if (!this->AreaTexture || this->AreaTextureMaxDistance != maxDistance)
+  if (!this->AreaTexture || !this->DiagonalAreaTexture ||
+    this->AreaTextureMaxDistance != maxDistance)
   {
-    if (this->AreaTexture)
-    {
-      this->AreaTexture->ReleaseGraphicsResources(renWin);
-    }
-    else
-    {
-      this->AreaTexture = NewTexture(renWin);
-    }
-    vtkNew<vtkMLAAAreaTexture> area;
-    area->SetMaxDistance(maxDistance);
-    this->AreaTexture->SetWrapS(vtkTextureObject::ClampToEdge);
-    this->AreaTexture->SetWrapT(vtkTextureObject::ClampToEdge);
-    this->AreaTexture->SetMinificationFilter(vtkTextureObject::Nearest);
-    this->AreaTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
-    this->AreaTexture->Create2DFromRaw(area->GetTextureSize(), area->GetTextureSize(), 2,
-      VTK_FLOAT, const_cast<float*>(area->GetTable()));
+    auto upload = [renWin](vtkTextureObject*& texture, int width, int components,
+                    const std::vector<float>& table) {
+      if (texture)
+      {
+        texture->ReleaseGraphicsResources(renWin);
+      }
+      else
+      {
+        texture = NewTexture(renWin);
+      }
+      texture->SetWrapS(vtkTextureObject::ClampToEdge);
+      texture->SetWrapT(vtkTextureObject::ClampToEdge);
+      texture->SetMinificationFilter(vtkTextureObject::Nearest);
+      texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+      texture->Create2DFromRaw(
+        width, width, components, VTK_FLOAT, const_cast<float*>(table.data()));
+    };
+    const int cellSize = maxDistance + 1;
+    upload(this->AreaTexture, vtkMLAAAreaTexture::NumberOfCodes * cellSize, 2,
+      *vtkMLAAAreaTexture::GetSharedTable(maxDistance));
+    upload(this->DiagonalAreaTexture, vtkMLAAAreaTexture::NumberOfDiagonalCodes * cellSize, 3,
+      *vtkMLAAAreaTexture::GetSharedDiagonalTable(maxDistance));
     this->AreaTextureMaxDistance = maxDistance;
   }
 
@@ -281,11 +289,16 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   program = this->WeightsQuad->Program;
   this->EdgesTexture->Activate();
   this->AreaTexture->Activate();
+  this->DiagonalAreaTexture->Activate();
   program->SetUniformi("edgesTexture", this->EdgesTexture->GetTextureUnit());
   program->SetUniformi("areaTexture", this->AreaTexture->GetTextureUnit());
+  program->SetUniformi("diagonalAreaTexture", this->DiagonalAreaTexture->GetTextureUnit());
   program->SetUniformi("maxSearchSteps", this->Options->GetMaxSearchSteps());
   program->SetUniformi("cellSize", this->AreaTextureMaxDistance + 1);
+  program->SetUniformi("diagonalDetection", this->Options->GetDiagonalDetection() ? 1 : 0);
+  program->SetUniformi("minimumDiagonalLength", vtkMLAAOptions::MinimumDiagonalLength);
   this->WeightsQuad->Render();
+  this->DiagonalAreaTexture->Deactivate();
   this->AreaTexture->Deactivate();
   this->EdgesTexture->Deactivate();
   ostate->vtkglDepthMask(GL_TRUE);
@@ -434,7 +447,8 @@ void vtkOpenGLMLAAPass::ReleaseGraphicsResources(vtkWindow* w)
   DeleteObject(this->DelegateFramebuffer, w);
   DeleteObject(this->MLAAFramebuffer, w);
   for (vtkTextureObject** texture : { &this->ColorTexture, &this->DepthTexture,
-         &this->EdgesTexture, &this->WeightsTexture, &this->MaskTexture, &this->AreaTexture })
+         &this->EdgesTexture, &this->WeightsTexture, &this->MaskTexture, &this->AreaTexture,
+         &this->DiagonalAreaTexture })
   {
     DeleteObject(*texture, w);
   }
@@ -455,7 +469,7 @@ vtkIdType vtkOpenGLMLAAPass::GetTargetMemorySize()
     : 4;
   return TextureBytes(this->ColorTexture, colorBytes) + TextureBytes(this->DepthTexture, 4) +
     this->GetMLAATargetMemorySize() + TextureBytes(this->MaskTexture, 2) +
-    TextureBytes(this->AreaTexture, 8);
+    TextureBytes(this->AreaTexture, 8) + TextureBytes(this->DiagonalAreaTexture, 12);
 }
 
 //------------------------------------------------------------------------------

@@ -137,6 +137,7 @@ private:
   vtkTextureObject* WeightsTexture = nullptr;
   vtkTextureObject* MaskTexture = nullptr;
   vtkTextureObject* AreaTexture = nullptr;
+  vtkTextureObject* DiagonalAreaTexture = nullptr;
   int AreaTextureMaxDistance = 0;
   vtkOpenGLQuadHelper* EdgesQuad = nullptr;
   vtkOpenGLQuadHelper* WeightsQuad = nullptr;

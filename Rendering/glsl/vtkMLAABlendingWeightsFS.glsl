@@ -16,6 +16,11 @@
 // the left neighbour. GL's y grows upwards, so "above" is y + 1 and the published shader's -0.25
 // offset towards the upper row becomes +0.25 here.
 //
+// With diagonalDetection, edgels that belong to a staircase of one-pixel steps (at least
+// minimumDiagonalLength units) take their weights from the 45-degree line through it instead,
+// from the diagonal area table (vtkMLAAAreaTexture::ComputeDiagonalAreas). Exact texel reads are
+// used there; the staircase is followed one unit per step.
+//
 // Must match vtkImageMLAA's blending weights (Filters/vtkImageMLAA.cxx).
 
 in vec2 texCoord;
@@ -24,6 +29,9 @@ uniform sampler2D edgesTexture; // RG8, red = left edgel, green = top edgel; LIN
 uniform sampler2D areaTexture;  // vtkMLAAAreaTexture's table, RG32F (texelFetch only)
 uniform int maxSearchSteps;     // vtkMLAAOptions::MaxSearchSteps
 uniform int cellSize;           // D = 2 * maxSearchSteps + 1, the area texture's cell size
+uniform sampler2D diagonalAreaTexture; // vtkMLAAAreaTexture's diagonal table, RGB32F
+uniform int diagonalDetection;         // vtkMLAAOptions::DiagonalDetection
+uniform int minimumDiagonalLength;     // vtkMLAAOptions::MinimumDiagonalLength
 
 vec2 edgesSize;
 
@@ -104,6 +112,63 @@ vec2 area(int e1, int e2, int d1, int d2)
   return texelFetch(areaTexture, ivec2(cellSize * e1 + d1, cellSize * e2 + d2), 0).rg;
 }
 
+// Exact edgels of a pixel; none outside the image.
+vec2 edgelsAt(ivec2 p)
+{
+  ivec2 size = textureSize(edgesTexture, 0);
+  if (any(lessThan(p, ivec2(0))) || any(greaterThanEqual(p, size)))
+  {
+    return vec2(0.0);
+  }
+  return texelFetch(edgesTexture, p, 0).rg;
+}
+bool topAt(ivec2 p) { return edgelsAt(p).g > 0.5; }
+bool leftAt(ivec2 p) { return edgelsAt(p).r > 0.5; }
+
+// A unit of a rising staircase (up and to the right) is a pixel with both edgels; a unit of a
+// falling one, named by its pixel q, is q's top edgel and its right neighbour's left edgel.
+bool isUnit(ivec2 p, bool rising)
+{
+  return rising ? all(greaterThan(edgelsAt(p), vec2(0.5)))
+                : topAt(p) && leftAt(p + ivec2(1, 0));
+}
+
+// Number of further units of the staircase through p in `direction`, at most the maximum
+// distance; reachedEnd tells whether the staircase ended within it.
+int searchDiagonal(ivec2 p, ivec2 direction, bool rising, out bool reachedEnd)
+{
+  int maxDistance = cellSize - 1;
+  for (int k = 1; k <= maxDistance; ++k)
+  {
+    if (!isUnit(p + k * direction, rising))
+    {
+      reachedEnd = true;
+      return k - 1;
+    }
+  }
+  reachedEnd = false;
+  return maxDistance;
+}
+
+// End code of the diagonal table (0 nothing, 1 out of the unit's pixel, 2 into it) from what the
+// staircase does past its end: a run along x (flatter) or along y (steeper).
+int diagonalEndCode(bool reachedEnd, bool flatter, bool steeper, int flatterCode)
+{
+  if (!reachedEnd || flatter == steeper)
+  {
+    return 0;
+  }
+  return flatter ? flatterCode : 3 - flatterCode;
+}
+
+vec3 diagonalArea(int e1, int e2, int d1, int d2)
+{
+  return texelFetch(diagonalAreaTexture, ivec2(cellSize * e1 + d1, cellSize * e2 + d2), 0).rgb;
+}
+
+const int OUT = 1;
+const int IN = 2;
+
 void main()
 {
   ivec2 size = textureSize(edgesTexture, 0);
@@ -112,8 +177,67 @@ void main()
   vec2 center = vec2(p) + 0.5;
   vec2 e = texelFetch(edgesTexture, p, 0).rg;
   vec4 weights = vec4(0.0);
+  bool top = e.g > 0.5;
+  bool left = e.r > 0.5;
 
-  if (e.g > 0.5) // edge at the top: a horizontal line, ends to the left and to the right
+  if (diagonalDetection != 0)
+  {
+    if (top && left) // a unit of a rising staircase: the first end is the lower-left one
+    {
+      bool end1, end2;
+      int d1 = searchDiagonal(p, ivec2(-1, -1), true, end1);
+      int d2 = searchDiagonal(p, ivec2(1, 1), true, end2);
+      if (d1 + d2 + 1 >= minimumDiagonalLength)
+      {
+        ivec2 p1 = p - ivec2(d1);
+        ivec2 p2 = p + ivec2(d2);
+        int e1 = diagonalEndCode(end1, topAt(p1 - ivec2(1)), leftAt(p1 - ivec2(0, 1)), OUT);
+        int e2 = diagonalEndCode(end2, topAt(p2 + ivec2(1, 0)), leftAt(p2 + ivec2(1)), IN);
+        vec3 a = diagonalArea(e1, e2, d1, d2);
+        // This pixel takes the colours above and left of it; the pixel above lies after it
+        // along the line, the one to the left before it.
+        weights = vec4(a.x, a.z, a.x, a.y);
+        top = false;
+        left = false;
+      }
+    }
+    // Falling staircases (the first end is the upper-left one): this pixel as q (its top edgel)
+    // or as r (its left edgel, q being its left neighbour).
+    for (int role = 0; role < 2; ++role)
+    {
+      bool asQ = role == 0;
+      ivec2 q = asQ ? p : p - ivec2(1, 0);
+      if (!(asQ ? top : left) || !isUnit(q, false))
+      {
+        continue;
+      }
+      bool end1, end2;
+      int d1 = searchDiagonal(q, ivec2(-1, 1), false, end1);
+      int d2 = searchDiagonal(q, ivec2(1, -1), false, end2);
+      if (d1 + d2 + 1 < minimumDiagonalLength)
+      {
+        continue;
+      }
+      ivec2 q1 = q + ivec2(-d1, d1);
+      ivec2 q2 = q + ivec2(d2, -d2);
+      int e1 = diagonalEndCode(end1, topAt(q1 - ivec2(1, 0)), leftAt(q1 + ivec2(0, 1)), IN);
+      int e2 = diagonalEndCode(
+        end2, topAt(q2 + ivec2(1, -1)), leftAt(q2 + ivec2(1, -1)), OUT);
+      vec3 a = diagonalArea(e1, e2, d1, d2);
+      if (asQ)
+      {
+        weights.rg = a.xy; // q takes the colour above it, the r of the unit before
+        top = false;
+      }
+      else
+      {
+        weights.ba = a.zx; // r lies after q along the line; q takes r's colour
+        left = false;
+      }
+    }
+  }
+
+  if (top) // edge at the top: a horizontal line, ends to the left and to the right
   {
     int left = int(round(searchTopEdges(center, -1.0)));
     int right = int(round(searchTopEdges(center, 1.0)));
@@ -124,7 +248,7 @@ void main()
     weights.rg = area(e1, e2, left, right);
   }
 
-  if (e.r > 0.5) // edge at the left: a vertical line, its first end is the upper one
+  if (left) // edge at the left: a vertical line, its first end is the upper one
   {
     int up = int(round(searchLeftEdges(center, 1.0)));
     int down = int(round(searchLeftEdges(center, -1.0)));

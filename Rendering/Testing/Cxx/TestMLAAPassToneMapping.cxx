@@ -51,10 +51,10 @@ int TestMLAAPassToneMapping(int, char*[])
   renderer->SetPass(outer);
   auto mlaaBefore = vtkMLAAScenes::Capture(scene.Window, true);
   // The pass rendered into 32-bit float colour (16 bytes per pixel) plus depth, edges, weights,
-  // mask and the area texture.
+  // mask and the two area textures.
   const vtkIdType pixels = 400 * 300;
   MLAA_CHECK(before->GetTargetMemorySize() ==
-    pixels * (16 + 4 + 2 + 4 + 2) + 85 * 85 * 8);
+    pixels * (16 + 4 + 2 + 4 + 2) + 85 * 85 * 8 + 51 * 51 * 12);
   int dims[3];
   toneMapped->GetDimensions(dims);
   int changed = 0, flatChanged = 0;
