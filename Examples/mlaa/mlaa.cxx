@@ -209,6 +209,12 @@ void PrintUsage(std::ostream& os)
   option("--max-search-steps N", text);
 
   text.str("");
+  text << "Whether staircases of one-pixel steps are smoothed as 45-degree lines (on) or only "
+          "horizontal and vertical lines are followed, as in the chapter (off). Default: "
+       << (defaults->GetDiagonalDetection() ? "on" : "off") << ".";
+  option("--diagonals on|off", text);
+
+  text.str("");
   text << "Write an intermediate image instead of the antialiased one, as 8-bit RGBA (all but "
        << noDebugName
        << "). Default: " << vtkMLAAOptions::GetDebugOutputAsString(defaults->GetDebugOutput())
@@ -415,6 +421,15 @@ void ParseCommandLine(const std::vector<std::string>& args, CommandLine& cl)
           std::to_string(lo) + ", " + std::to_string(hi) + "]");
       }
       options->SetMaxSearchSteps(static_cast<int>(value));
+    }
+    else if (name == "--diagonals")
+    {
+      const std::string text = takeValues(1)[0];
+      if (text != "on" && text != "off")
+      {
+        throw UsageError("--diagonals: '" + text + "' is neither on nor off");
+      }
+      options->SetDiagonalDetection(text == "on");
     }
     else if (name == "--depth-image")
     {

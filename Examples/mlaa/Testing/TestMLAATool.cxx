@@ -482,7 +482,7 @@ void HelpListsEveryOption()
       }
     }
     for (const char* option : { "--threshold T", "--edges MODE", "--depth-image FILE",
-           "--max-search-steps N", "--debug", "--value-range LO HI", "--area-texture D",
+           "--max-search-steps N", "--diagonals on|off", "--debug", "--value-range LO HI", "--area-texture D",
            "-h, --help", "Usage: mlaa [options] INPUT OUTPUT" })
     {
       if (!MLAA_CHECK(words.find(option) != std::string::npos))
@@ -759,6 +759,24 @@ void OptionMaxSearchSteps()
   MLAA_CHECK(Compare(expected, Filter(pixels)).Count > 0);
 }
 
+void OptionDiagonals()
+{
+  // A staircase of one-pixel steps that turns flatter every fifth step: the diagonal search
+  // smooths it differently from the orthogonal one, and --diagonals off gives the latter.
+  auto pixels = TwoToneImage(
+    48, 48, VTK_UNSIGNED_CHAR, { 0 }, { 255 }, [](int x, int y) { return 5 * y < 4 * x; });
+  const fs::path input = WorkFile("in.png");
+  const fs::path output = WorkFile("out.png");
+  WriteFile(pixels, input, OIIO::TypeDesc::UINT8);
+  ExpectSuccess({ "--diagonals", "off", input.string(), output.string() }, output);
+  auto expected =
+    Filter(pixels, [](vtkImageMLAA* f) { f->GetOptions()->DiagonalDetectionOff(); });
+  CheckFile(output, expected, OIIO::TypeDesc::UINT8);
+  MLAA_CHECK(Compare(expected, Filter(pixels)).Count > 0);
+  ExpectSuccess({ "--diagonals=on", input.string(), output.string() }, output);
+  CheckFile(output, Filter(pixels), OIIO::TypeDesc::UINT8);
+}
+
 void DebugEdgesRgba8TopRowFirst()
 {
   // The top half of the picture white, the bottom half black. In the file the top row comes
@@ -1002,6 +1020,16 @@ void ErrorBadMaxSearchSteps()
   }
 }
 
+void ErrorBadDiagonals()
+{
+  const fs::path input = GoodInput();
+  const fs::path output = WorkFile("out.png");
+  for (const char* value : { "yes", "1", "ON", "" })
+  {
+    ExpectFailure({ "--diagonals", value, input.string(), output.string() }, output, Usage);
+  }
+}
+
 void ErrorBadValueRange()
 {
   const fs::path input = GoodInput("in.exr");
@@ -1111,6 +1139,7 @@ int main(int argc, char* argv[])
     { "option-edges-color", OptionEdgesColor },
     { "option-edges-depth", OptionEdgesDepth },
     { "option-max-search-steps", OptionMaxSearchSteps },
+    { "option-diagonals", OptionDiagonals },
     { "debug-edges-rgba8-top-row-first", DebugEdgesRgba8TopRowFirst },
     { "debug-weights-rgba8", DebugWeightsRgba8 },
     { "area-texture-9", AreaTexture9 },
@@ -1124,6 +1153,7 @@ int main(int argc, char* argv[])
     { "error-unknown-edges-name", ErrorUnknownEdgesName },
     { "error-unknown-debug-name", ErrorUnknownDebugName },
     { "error-bad-max-search-steps", ErrorBadMaxSearchSteps },
+    { "error-bad-diagonals", ErrorBadDiagonals },
     { "error-bad-value-range", ErrorBadValueRange },
     { "error-missing-argument", ErrorMissingArgument },
     { "error-extra-argument", ErrorExtraArgument },

@@ -1,6 +1,7 @@
 // Exact expected pixels of vtkImageMLAA on small synthetic images: a straight step edge, the
-// L, U and Z patterns of the GPU Pro 2 chapter, a line longer than the search distance, and
-// one-pixel-wide images. The expected blending weights were worked out by hand from sections
+// L, U and Z patterns of the GPU Pro 2 chapter, a line longer than the search distance,
+// one-pixel-wide images, and a diagonal staircase (DiagonalDetection), whose effect on the error
+// against exact coverage is measured too. The expected blending weights were worked out by hand from sections
 // 4.3.1-4.3.3 (search, crossing edges, areas); see the comments at each case.
 #include "vtkMLAATestUtilities.h"
 
@@ -35,11 +36,13 @@ vtkSmartPointer<vtkImageData> Grey(int w, int h, const std::function<bool(int, i
   return image;
 }
 
-vtkSmartPointer<vtkImageData> Weights(vtkImageData* input, int searchSteps = 8)
+vtkSmartPointer<vtkImageData> Weights(
+  vtkImageData* input, int searchSteps = 8, bool diagonals = true)
 {
   vtkNew<vtkMLAAOptions> options;
   options->SetDebugOutputToBlendingWeights();
   options->SetMaxSearchSteps(searchSteps);
+  options->SetDiagonalDetection(diagonals);
   return RunMLAA(input, options);
 }
 
@@ -266,6 +269,114 @@ void ThinImages()
 }
 }
 
+void DiagonalStaircase()
+{
+  // White below the height h(x) = 3 for x <= 4, x - 1 for x = 5..8, 7 for x >= 8, in a 16 x 12
+  // image: a rising staircase of four units, the white corner pixels (5, 3), (6, 4), (7, 5),
+  // (8, 6), each with a top and a left edgel. Past both ends the boundary runs along x (the top
+  // edgels of (4, 2) and (9, 6)): the line is flatter than 45 degrees, out of the corner pixels
+  // at the lower-left end (code 1) and into them at the upper-right end (code 2), a Z of four
+  // units along the diagonal. Shift s(t) = -1/2 (1 - t/2) for t < 2, 1/2 (1 - (4 - t)/2) after;
+  // unit k takes (1/2 + s(k + 1/2))^2 / 2 from above and from the left (1/128, 9/128, 25/128,
+  // 49/128), the pixel above it gives (1/2 - s(k + 1))^2 / 2 (9/32, 1/8, 1/32, 0) and the one
+  // left of it (1/2 - s(k))^2 / 2 (1/2, 9/32, 1/8, 1/32).
+  auto in = Grey(16, 12, [](int x, int y) {
+    const int h = x <= 4 ? 3 : (x >= 8 ? 7 : x - 1);
+    return y < h;
+  });
+  auto w = Weights(in);
+  const double in_[4] = { 1.0 / 128, 9.0 / 128, 25.0 / 128, 49.0 / 128 };
+  const double above[4] = { 9.0 / 32, 1.0 / 8, 1.0 / 32, 0.0 };
+  const double left[4] = { 0.5, 9.0 / 32, 1.0 / 8, 1.0 / 32 };
+  for (int k = 0; k < 4; ++k)
+  {
+    const int x = 5 + k, y = 3 + k;
+    MLAA_CHECK(GetValue(w, x, y, 0) == Q(in_[k]) && GetValue(w, x, y, 2) == Q(in_[k]));
+    MLAA_CHECK(GetValue(w, x, y, 1) == Q(above[k]));
+    MLAA_CHECK(GetValue(w, x, y, 3) == Q(left[k]));
+  }
+  // Without diagonal detection, the inner corners' edgels are Z shapes of one pixel: 1/8
+  // everywhere.
+  auto plain = Weights(in, 8, false);
+  for (int k = 1; k < 3; ++k)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      MLAA_CHECK(GetValue(plain, 5 + k, 3 + k, c) == Q(0.125));
+    }
+  }
+  // A single corner (a staircase of one unit) keeps the orthogonal weights.
+  auto box = Grey(12, 10, [](int x, int y) { return x >= 4 && y < 6; });
+  MLAA_CHECK(Compare(Weights(box), Weights(box, 8, false)).Count == 0);
+
+  // The same staircase mirrored left to right is a falling one: the same weights on the mirrored
+  // edgels. Pixel (x, y) maps to (15 - x, y); the corner's top edgel stays with the white pixel
+  // q = (10 - k, 3 + k), its left edgel moves to r = (11 - k, 3 + k), the black pixel right of q.
+  auto mirrored = Grey(16, 12, [](int x, int y) {
+    const int m = 15 - x;
+    const int h = m <= 4 ? 3 : (m >= 8 ? 7 : m - 1);
+    return y < h;
+  });
+  auto wm = Weights(mirrored);
+  for (int k = 0; k < 4; ++k)
+  {
+    const int qx = 10 - k, y = 3 + k;
+    MLAA_CHECK(GetValue(wm, qx, y, 0) == Q(in_[k]));      // q takes the black above it
+    MLAA_CHECK(GetValue(wm, qx, y, 1) == Q(above[k]));    // the pixel above q takes white
+    MLAA_CHECK(GetValue(wm, qx + 1, y, 2) == Q(left[k])); // r takes white from q
+    MLAA_CHECK(GetValue(wm, qx + 1, y, 3) == Q(in_[k]));  // q takes black from r
+  }
+}
+
+// Half-plane edges at angles around 45 degrees against their exact pixel coverage (16 x 16
+// samples per pixel): diagonal detection must at least halve the squared error that the
+// orthogonal search leaves. At exactly 45 degrees the staircase has no ends within the search,
+// so nothing tells the shift and both give 1/8: the same error.
+void DiagonalCoverage()
+{
+  const int size = 96;
+  for (double degrees : { 38.0, 45.0, 52.0 })
+  {
+    const double t = degrees * 3.14159265358979 / 180.0;
+    auto inside = [&](double x, double y) {
+      return -std::sin(t) * (x - 48.37) + std::cos(t) * (y - 48.21) < 0.0;
+    };
+    auto in = Grey(size, size, [&](int x, int y) { return inside(x + 0.5, y + 0.5); });
+    std::vector<double> exact(size * size);
+    for (int y = 0; y < size; ++y)
+    {
+      for (int x = 0; x < size; ++x)
+      {
+        int covered = 0;
+        for (int i = 0; i < 256; ++i)
+        {
+          covered += inside(x + (i % 16 + 0.5) / 16.0, y + (i / 16 + 0.5) / 16.0) ? 1 : 0;
+        }
+        exact[y * size + x] = White * covered / 256.0;
+      }
+    }
+    double error[3] = { 0.0, 0.0, 0.0 }; // none, orthogonal only, with diagonals
+    vtkNew<vtkMLAAOptions> orthogonal;
+    orthogonal->DiagonalDetectionOff();
+    vtkSmartPointer<vtkImageData> images[3] = { in, RunMLAA(in, orthogonal), RunMLAA(in) };
+    for (int y = 8; y < size - 8; ++y)
+    {
+      for (int x = 8; x < size - 8; ++x)
+      {
+        for (int m = 0; m < 3; ++m)
+        {
+          const double d = GetValue(images[m], x, y) - exact[y * size + x];
+          error[m] += d * d;
+        }
+      }
+    }
+    std::cout << degrees << " degrees: squared error none " << error[0] << ", orthogonal "
+              << error[1] << ", diagonal " << error[2] << std::endl;
+    MLAA_CHECK(error[1] < error[0]);
+    MLAA_CHECK(degrees == 45.0 ? error[2] == error[1] : error[2] < 0.5 * error[1]);
+  }
+}
+
 int TestImageMLAAPatterns(int, char*[])
 {
   StraightEdges();
@@ -278,5 +389,7 @@ int TestImageMLAAPatterns(int, char*[])
     LongLine(steps);
   }
   ThinImages();
+  DiagonalStaircase();
+  DiagonalCoverage();
   return Result();
 }

@@ -1,6 +1,7 @@
 // Tests of vtkMLAAAreaTexture: the layout of Figure 4.2 (GPU Pro 2, section 4.3.3), mirror
 // symmetry, the trapeze formula of the topological-reconstruction paper (section 3.4) for
-// L shapes, hand-computed texels of the L, U and Z shapes, and the 8-bit image.
+// L shapes, hand-computed texels of the L, U and Z shapes, the 8-bit image, and the diagonal
+// table.
 #include "vtkImageData.h"
 #include "vtkMLAAAreaTexture.h"
 #include "vtkNew.h"
@@ -228,6 +229,73 @@ int TestMLAAAreaTexture(int, char*[])
   // Tables are shared per size.
   EXPECT(vtkMLAAAreaTexture::GetSharedTable(8) == vtkMLAAAreaTexture::GetSharedTable(8));
   EXPECT(vtkMLAAAreaTexture::GetSharedTable(8) != vtkMLAAAreaTexture::GetSharedTable(16));
+
+  // Diagonal areas, worked by hand: (in, before, after) = ((1/2 + s)^2 / 2 at the unit's middle,
+  // (1/2 - s)^2 / 2 at its two ends), s the revectorised line's shift.
+  auto expectDiagonal = [](int e1, int e2, int d1, int d2, double in, double before,
+                          double after, int line) {
+    double a[3];
+    vtkMLAAAreaTexture::ComputeDiagonalAreas(e1, e2, d1, d2, a);
+    if (!Near(a[0], in) || !Near(a[1], before) || !Near(a[2], after))
+    {
+      std::cerr << "line " << line << ": diagonal e1=" << e1 << " e2=" << e2 << " d1=" << d1
+                << " d2=" << d2 << " gives (" << a[0] << ", " << a[1] << ", " << a[2]
+                << "), expected (" << in << ", " << before << ", " << after << ")" << std::endl;
+      ++Failures;
+    }
+  };
+  // No end tells a shift: the 45-degree line through the edgels' middles, 1/8 on each side, as
+  // the orthogonal search gives a pure staircase.
+  expectDiagonal(0, 0, 0, 0, 0.125, 0.125, 0.125, __LINE__);
+  expectDiagonal(0, 0, 5, 9, 0.125, 0.125, 0.125, __LINE__);
+  // Z of 4 units (out at the first end, in at the second), first unit: s = -3/8 at its middle,
+  // -1/2 and -1/4 at its ends.
+  expectDiagonal(1, 2, 0, 3, 0.0078125, 0.5, 0.28125, __LINE__);
+  // Z of 3 units, middle unit: s = 0 at its middle, -1/6 and +1/6 at its ends.
+  expectDiagonal(1, 2, 1, 1, 0.125, 2.0 / 9.0, 1.0 / 18.0, __LINE__);
+  // U of one unit into the pixel: s = 0 in the middle, +1/2 at both ends.
+  expectDiagonal(2, 2, 0, 0, 0.125, 0.0, 0.0, __LINE__);
+  // One end only ("L" along the diagonal), second half of 2 units: s = +1/4 at the middle of the
+  // second unit, 0 and +1/2 at its ends.
+  expectDiagonal(0, 2, 1, 0, 0.28125, 0.125, 0.0, __LINE__);
+  // Mirror symmetry: swapping the ends swaps the two other-side pixels.
+  bool diagonalMirror = true;
+  for (int e1 = 0; e1 < 3; ++e1)
+  {
+    for (int e2 = 0; e2 < 3; ++e2)
+    {
+      for (int d1 = 0; d1 <= 16; ++d1)
+      {
+        for (int d2 = 0; d2 <= 16; ++d2)
+        {
+          double a[3], b[3];
+          vtkMLAAAreaTexture::ComputeDiagonalAreas(e1, e2, d1, d2, a);
+          vtkMLAAAreaTexture::ComputeDiagonalAreas(e2, e1, d2, d1, b);
+          diagonalMirror = diagonalMirror && Near(a[0], b[0], 1e-12) &&
+            Near(a[1], b[2], 1e-12) && Near(a[2], b[1], 1e-12);
+        }
+      }
+    }
+  }
+  EXPECT(diagonalMirror);
+  // The shared diagonal table: 3 x 3 cells of D x D texels, three areas each.
+  auto diagonal = vtkMLAAAreaTexture::GetSharedDiagonalTable(16);
+  EXPECT(diagonal->size() == static_cast<size_t>(51 * 51 * 3));
+  EXPECT(diagonal == vtkMLAAAreaTexture::GetSharedDiagonalTable(16));
+  bool diagonalLayout = true;
+  for (int t = 0; t < 51; ++t)
+  {
+    for (int s = 0; s < 51; ++s)
+    {
+      double a[3];
+      vtkMLAAAreaTexture::ComputeDiagonalAreas(s / 17, t / 17, s % 17, t % 17, a);
+      for (int c = 0; c < 3; ++c)
+      {
+        diagonalLayout = diagonalLayout && Near((*diagonal)[3 * (t * 51 + s) + c], a[c]);
+      }
+    }
+  }
+  EXPECT(diagonalLayout);
 
   if (Failures)
   {

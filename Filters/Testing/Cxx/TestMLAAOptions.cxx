@@ -25,6 +25,7 @@ int TestMLAAOptions(int, char*[])
   CHECK(options->GetMaxSearchSteps() == 8);
   CHECK(options->GetMaxDistance() == 16);
   CHECK(options->GetDebugOutput() == vtkMLAAOptions::NO_DEBUG_OUTPUT);
+  CHECK(options->GetDiagonalDetection());
 
   // Clamping to the documented ranges.
   options->SetThreshold(-1.0);
@@ -57,7 +58,9 @@ int TestMLAAOptions(int, char*[])
   vtkNew<vtkMLAAOptions> copy;
   options->SetThreshold(0.25);
   options->SetDebugOutputToEdges();
+  options->DiagonalDetectionOff();
   copy->DeepCopy(options);
+  CHECK(!copy->GetDiagonalDetection());
   CHECK(copy->GetThreshold() == 0.25);
   CHECK(copy->GetEdgeDetection() == vtkMLAAOptions::DEPTH);
   CHECK(copy->GetMaxSearchSteps() == 64);
