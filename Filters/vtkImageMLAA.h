@@ -10,7 +10,9 @@
  * 2. blending weights (section 4.3): for every edgel, the distance to both ends of its line
  *    (two edgels read per step, section 4.3.1; unlike the chapter's search, it stops at crossing
  *    edges, which keeps the two outlines of one-pixel-wide lines apart), the crossing edges at
- *    those ends (4.3.2) and the precomputed area (4.3.3, vtkMLAAAreaTexture);
+ *    those ends (4.3.2) and the precomputed area (4.3.3, vtkMLAAAreaTexture); with
+ *    DiagonalDetection (default), edgels on a staircase of one-pixel steps take their weights
+ *    from the 45-degree line through it instead (vtkMLAAAreaTexture::ComputeDiagonalAreas);
  * 3. neighbourhood blending (section 4.4): each pixel mixed with its four neighbours by those
  *    weights.
  * It follows the GPU pass vtkOpenGLMLAAPass step for step: the same search (clamped at the image
@@ -18,7 +20,7 @@
  * so the two produce the same image within 1/255 on the same input.
  *
  * Settings are those of a vtkMLAAOptions object (GetOptions; SetOptions to share one with a
- * vtkOpenGLMLAAPass): Threshold, EdgeDetection, MaxSearchSteps, DebugOutput.
+ * vtkOpenGLMLAAPass): Threshold, EdgeDetection, MaxSearchSteps, DiagonalDetection, DebugOutput.
  *
  * Input: vtkImageData of any numeric scalar type with 1 to 4 components (grey, grey + alpha,
  * RGB, RGBA). 2D images and 3D volumes; each z slice is antialiased on its own. Integer values are

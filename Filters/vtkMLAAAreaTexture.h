@@ -126,7 +126,7 @@ public:
    * leaves the unit's pixel (shift -1/2), 2 = it enters the pixel (shift +1/2). The unit's pixel
    * is the one whose corner the line cuts (its "outside" is up-left for a rising line, up-right
    * for a falling one). For a unit at distance d1 from the first end and d2 from the second
-   * (length L = d1 + d2 + 1 units, the shift s(t) is evaluated at points t along the diagonal,
+   * (length L = d1 + d2 + 1 units), the shift s(t) is evaluated at points t along the diagonal,
    * t = 0 the first end), areas[0] = (1/2 + s)^2 / 2 at t = d1 + 1/2 (how much the unit's pixel
    * takes of the colour on the other side), areas[1] = (1/2 - s)^2 / 2 at t = d1 (how much the
    * other-side pixel before the unit takes of the unit's colour), areas[2] = the same at

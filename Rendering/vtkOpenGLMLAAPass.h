@@ -10,7 +10,9 @@
  *    chapter's stencil trick);
  * 2. blending weights into an RGBA8 texture: distance search reading two edgels per bilinear
  *    fetch and stopping at crossing edges, crossing edges read with a quarter-pixel offset, and
- *    the area texture of vtkMLAAAreaTexture, uploaded once per maximum distance;
+ *    the area texture of vtkMLAAAreaTexture, uploaded once per maximum distance; with
+ *    DiagonalDetection, staircases of one-pixel steps are followed texel by texel and take their
+ *    weights from vtkMLAAAreaTexture's diagonal table;
  * 3. blending of each pixel with its four neighbours.
  * It reads the same vtkMLAAOptions as the CPU filter vtkImageMLAA (share one object with
  * SetOptions), and the two produce the same image within 1/255 on the same input: the shaders are
