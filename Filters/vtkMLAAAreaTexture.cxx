@@ -36,6 +36,24 @@ double IntegrateFallingRamp(double h, double m, double a, double b)
 {
   return h * ((b - a) - (b * b - a * a) / (2.0 * m));
 }
+
+using SharedTable = std::shared_ptr<const std::vector<float>>;
+
+// The table of one kind for `maxDistance` (at least 1) from that kind's cache, made by
+// `build(maxDistance)` on first use. Thread-safe.
+template <typename Build>
+SharedTable CachedTable(
+  std::mutex& cacheMutex, std::map<int, SharedTable>& cache, int maxDistance, Build build)
+{
+  maxDistance = std::max(1, maxDistance);
+  std::lock_guard<std::mutex> lock(cacheMutex);
+  SharedTable& table = cache[maxDistance];
+  if (!table)
+  {
+    table = build(maxDistance);
+  }
+  return table;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -94,42 +112,35 @@ void vtkMLAAAreaTexture::ComputeAreas(int e1, int e2, int left, int right, doubl
 std::shared_ptr<const std::vector<float>> vtkMLAAAreaTexture::GetSharedTable(int maxDistance)
 {
   static std::mutex cacheMutex;
-  static std::map<int, std::shared_ptr<const std::vector<float>>> cache;
-
-  maxDistance = std::max(1, maxDistance);
-  std::lock_guard<std::mutex> lock(cacheMutex);
-  auto found = cache.find(maxDistance);
-  if (found != cache.end())
-  {
-    return found->second;
-  }
-
-  const int d = maxDistance + 1;
-  const int size = NumberOfCodes * d;
-  auto table = std::make_shared<std::vector<float>>(static_cast<size_t>(size) * size * 2, 0.0f);
-  for (int e2 = 0; e2 < NumberOfCodes; ++e2)
-  {
-    for (int e1 = 0; e1 < NumberOfCodes; ++e1)
+  static std::map<int, SharedTable> cache;
+  return CachedTable(cacheMutex, cache, maxDistance, [](int distance) {
+    const int d = distance + 1;
+    const int size = NumberOfCodes * d;
+    auto table =
+      std::make_shared<std::vector<float>>(static_cast<size_t>(size) * size * 2, 0.0f);
+    for (int e2 = 0; e2 < NumberOfCodes; ++e2)
     {
-      if (e1 == 2 || e2 == 2)
+      for (int e1 = 0; e1 < NumberOfCodes; ++e1)
       {
-        continue; // code 2 cannot occur: its cells stay empty
-      }
-      for (int right = 0; right < d; ++right)
-      {
-        for (int left = 0; left < d; ++left)
+        if (e1 == 2 || e2 == 2)
         {
-          double areas[2];
-          ComputeAreas(e1, e2, left, right, areas);
-          const size_t texel = static_cast<size_t>(d * e2 + right) * size + (d * e1 + left);
-          (*table)[2 * texel] = static_cast<float>(areas[0]);
-          (*table)[2 * texel + 1] = static_cast<float>(areas[1]);
+          continue; // code 2 cannot occur: its cells stay empty
+        }
+        for (int right = 0; right < d; ++right)
+        {
+          for (int left = 0; left < d; ++left)
+          {
+            double areas[2];
+            ComputeAreas(e1, e2, left, right, areas);
+            const size_t texel = static_cast<size_t>(d * e2 + right) * size + (d * e1 + left);
+            (*table)[2 * texel] = static_cast<float>(areas[0]);
+            (*table)[2 * texel + 1] = static_cast<float>(areas[1]);
+          }
         }
       }
     }
-  }
-  cache[maxDistance] = table;
-  return table;
+    return SharedTable(table);
+  });
 }
 
 //------------------------------------------------------------------------------
@@ -164,33 +175,27 @@ std::shared_ptr<const std::vector<float>> vtkMLAAAreaTexture::GetSharedDiagonalT
   int maxDistance)
 {
   static std::mutex cacheMutex;
-  static std::map<int, std::shared_ptr<const std::vector<float>>> cache;
-
-  maxDistance = std::max(1, maxDistance);
-  std::lock_guard<std::mutex> lock(cacheMutex);
-  auto found = cache.find(maxDistance);
-  if (found != cache.end())
-  {
-    return found->second;
-  }
-  const int d = maxDistance + 1;
-  const int size = NumberOfDiagonalCodes * d;
-  auto table = std::make_shared<std::vector<float>>(static_cast<size_t>(size) * size * 3, 0.0f);
-  for (int t = 0; t < size; ++t)
-  {
-    for (int s = 0; s < size; ++s)
+  static std::map<int, SharedTable> cache;
+  return CachedTable(cacheMutex, cache, maxDistance, [](int distance) {
+    const int d = distance + 1;
+    const int size = NumberOfDiagonalCodes * d;
+    auto table =
+      std::make_shared<std::vector<float>>(static_cast<size_t>(size) * size * 3, 0.0f);
+    for (int t = 0; t < size; ++t)
     {
-      double areas[3];
-      ComputeDiagonalAreas(s / d, t / d, s % d, t % d, areas);
-      float* texel = table->data() + 3 * (static_cast<size_t>(t) * size + s);
-      for (int c = 0; c < 3; ++c)
+      for (int s = 0; s < size; ++s)
       {
-        texel[c] = static_cast<float>(areas[c]);
+        double areas[3];
+        ComputeDiagonalAreas(s / d, t / d, s % d, t % d, areas);
+        float* texel = table->data() + 3 * (static_cast<size_t>(t) * size + s);
+        for (int c = 0; c < 3; ++c)
+        {
+          texel[c] = static_cast<float>(areas[c]);
+        }
       }
     }
-  }
-  cache[maxDistance] = table;
-  return table;
+    return SharedTable(table);
+  });
 }
 
 //------------------------------------------------------------------------------
