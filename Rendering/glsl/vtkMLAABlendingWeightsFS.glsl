@@ -115,8 +115,7 @@ vec2 area(int e1, int e2, int d1, int d2)
 // Exact edgels of a pixel; none outside the image.
 vec2 edgelsAt(ivec2 p)
 {
-  ivec2 size = textureSize(edgesTexture, 0);
-  if (any(lessThan(p, ivec2(0))) || any(greaterThanEqual(p, size)))
+  if (any(lessThan(p, ivec2(0))) || any(greaterThanEqual(p, ivec2(edgesSize))))
   {
     return vec2(0.0);
   }
