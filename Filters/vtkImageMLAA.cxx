@@ -101,6 +101,7 @@ struct SliceSetup
   int DebugOutput = vtkMLAAOptions::NO_DEBUG_OUTPUT;
   int SearchSteps = 8;
   double Threshold = 0.1;
+  double LocalContrastFactor = 2.0; // vtkMLAAOptions::LocalContrastFactor, 0 = off
   const float* Area = nullptr; // 8-bit quantised area texture
   int CellSize = 17;           // D
   int AreaSize = 85;           // 5 D
@@ -117,6 +118,13 @@ class MLAASlice
 public:
   using Acc = AccumulatorType<T>;
 
+  // The contrast across the left and the top boundary of a pixel (0: not an edge).
+  struct Boundary
+  {
+    Acc Left;
+    Acc Top;
+  };
+
   MLAASlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride, int components,
     double lo, double hi, const double* depth)
     : S(setup)
@@ -128,16 +136,29 @@ public:
     this->Lo = static_cast<Acc>(lo);
     this->InvRange = static_cast<Acc>(1.0 / (hi - lo));
     this->Threshold = static_cast<Acc>(setup.Threshold);
+    this->ContrastFactor = static_cast<Acc>(setup.LocalContrastFactor);
     this->HasAlpha = (components == 2 || components == 4);
     this->F = (setup.Mode == vtkMLAAOptions::COLOR) ? components : 1 + (this->HasAlpha ? 1 : 0);
     this->Edges.resize(static_cast<size_t>(setup.Input.Width()) * setup.Input.Height());
   }
 
-  // Pass 1 (section 4.2): the left and top edgels of every available pixel.
+  // Pass 1 (section 4.2): the left and top edgels of every available pixel. First the contrast
+  // across every boundary (0 where it is not an edge), then the edgels that local contrast
+  // adaptation keeps.
   void DetectEdges()
   {
     const Rect& in = this->S.Input;
-    vtkSMPTools::For(0, in.Height(), RowsPerTask, [this](vtkIdType begin, vtkIdType end) {
+    const int w = in.Width();
+    const int h = in.Height();
+    // A ring of zero contrasts around the available pixels: boundaries outside them are not
+    // edges. Every other entry is written below, so the grid is left uninitialised.
+    const int stride = w + 2;
+    this->Contrasts.reset(new Boundary[static_cast<size_t>(stride) * (h + 2)]);
+    Boundary* grid = this->Contrasts.get();
+    std::fill(grid, grid + stride, Boundary{});
+    std::fill(grid + static_cast<size_t>(h + 1) * stride, grid + static_cast<size_t>(h + 2) * stride,
+      Boundary{});
+    vtkSMPTools::For(0, h, RowsPerTask, [this, grid, stride](vtkIdType begin, vtkIdType end) {
       const Rect& r = this->S.Input;
       const int w = r.Width();
       std::vector<Acc> current(static_cast<size_t>(w) * this->F);
@@ -153,24 +174,29 @@ public:
         {
           this->ComputeFeatures(y + 1, above.data());
         }
-        unsigned char* edges = this->Edges.data() + static_cast<size_t>(row) * w;
-        const Acc* f = current.data();
-        const Acc* g = above.data();
-        edges[0] = (hasAbove && this->IsEdge(f, g)) ? TopEdge : 0;
-        for (int x = 1; x < w; ++x)
+        Boundary* b = grid + static_cast<size_t>(row + 1) * stride;
+        b[0] = b[w + 1] = Boundary{};
+        if (this->F == 1)
         {
-          f += this->F;
-          g += this->F;
-          unsigned char e = this->IsEdge(f, f - this->F) ? LeftEdge : 0;
-          if (hasAbove && this->IsEdge(f, g))
-          {
-            e |= TopEdge;
-          }
-          edges[x] = e;
+          this->RowContrasts<1>(current.data(), hasAbove ? above.data() : nullptr, b + 1, w);
+        }
+        else
+        {
+          this->RowContrasts<0>(current.data(), hasAbove ? above.data() : nullptr, b + 1, w);
         }
         std::swap(current, above);
       }
     });
+    vtkSMPTools::For(0, h, RowsPerTask, [this, grid, stride](vtkIdType begin, vtkIdType end) {
+      const int w = this->S.Input.Width();
+      for (vtkIdType row = begin; row < end; ++row)
+      {
+        this->KeepEdgels(grid + static_cast<size_t>(row + 1) * stride + 1, stride,
+          this->Edges.data() + static_cast<size_t>(row) * w, w);
+      }
+    });
+    // Only the edgels are read from here on.
+    this->Contrasts.reset();
   }
 
   // Passes 2 and 3 (sections 4.3 and 4.4), fused per group of rows: the blending weights of the
@@ -277,19 +303,74 @@ private:
     }
   }
 
-  // An edge: some feature differs by at least the threshold (and by more than nothing, so that
-  // a zero threshold means "any difference"). NaN differences are never edges.
-  bool IsEdge(const Acc* a, const Acc* b) const
+  // The contrast across a boundary: the largest difference of a feature, if it is at least the
+  // threshold (and more than nothing, so that a zero threshold means "any difference"), else 0.
+  // NaN differences are never edges. FixedF is the number of features when known at compile
+  // time (the common single-feature case), else 0.
+  template <int FixedF>
+  Acc Contrast(const Acc* a, const Acc* b) const
   {
-    for (int k = 0; k < this->F; ++k)
+    const int features = FixedF > 0 ? FixedF : this->F;
+    Acc contrast = 0;
+    for (int k = 0; k < features; ++k)
     {
       const Acc d = std::abs(a[k] - b[k]);
-      if (d >= this->Threshold && d > Acc(0))
+      if (d >= this->Threshold && d > contrast)
       {
-        return true;
+        contrast = d;
       }
     }
-    return false;
+    return contrast;
+  }
+
+  // The contrasts of one row of w pixels with features f, and the row above with features g
+  // (null for the top row of the available pixels: no top edges).
+  template <int FixedF>
+  void RowContrasts(const Acc* f, const Acc* g, Boundary* b, int w) const
+  {
+    const int features = FixedF > 0 ? FixedF : this->F;
+    b[0].Left = Acc(0);
+    for (int x = 1; x < w; ++x)
+    {
+      b[x].Left = this->Contrast<FixedF>(f + x * features, f + (x - 1) * features);
+    }
+    for (int x = 0; x < w; ++x)
+    {
+      b[x].Top = g ? this->Contrast<FixedF>(f + x * features, g + x * features) : Acc(0);
+    }
+  }
+
+  // The edgels of one row that local contrast adaptation keeps (vtkMLAAOptions::
+  // LocalContrastFactor), from the contrasts of the row (`b`, w entries of a grid with the given
+  // stride) and of the rows below and above it: an edge whose contrast, times the factor, is
+  // below the contrast of one of the six other boundaries of the two pixels it separates is
+  // dropped.
+  void KeepEdgels(const Boundary* b, int stride, unsigned char* edges, int w) const
+  {
+    const Boundary* below = b - stride;
+    const Boundary* above = b + stride;
+    const Acc factor = this->ContrastFactor;
+    for (int x = 0; x < w; ++x)
+    {
+      const Acc left = b[x].Left;
+      const Acc top = b[x].Top;
+      unsigned char e = 0;
+      if (left > Acc(0) &&
+        (factor == Acc(0) ||
+          factor * left >= std::max({ b[x - 1].Left, b[x + 1].Left, b[x - 1].Top, top,
+                             below[x - 1].Top, below[x].Top })))
+      {
+        e |= LeftEdge;
+      }
+      if (top > Acc(0) &&
+        (factor == Acc(0) ||
+          factor * top >= std::max({ below[x].Top, above[x].Top, left, b[x + 1].Left,
+                            above[x].Left, above[x + 1].Left })))
+      {
+        e |= TopEdge;
+      }
+      edges[x] = e;
+    }
   }
 
   // The edgels of an available pixel.
@@ -653,9 +734,11 @@ private:
   Acc Lo = 0;
   Acc InvRange = 1;
   Acc Threshold = 0;
+  Acc ContrastFactor = 0;
   bool HasAlpha = false;
   int F = 1; // features per pixel
   std::vector<unsigned char> Edges;
+  std::unique_ptr<Boundary[]> Contrasts; // pass 1 only
 };
 
 //------------------------------------------------------------------------------
@@ -753,8 +836,12 @@ int vtkImageMLAA::GetInputPadding()
   // The blending reads the weights of the right and lower neighbours (1 pixel); a weight reads
   // edgels up to 2 * MaxSearchSteps pixels along its line and the crossing edge one further
   // (2 * MaxSearchSteps + 1); an edgel compares two pixels. The diagonal search reads up to
-  // 2 * MaxSearchSteps units along x and y, and the edgels two pixels past the last one.
-  return 2 * this->Options->GetMaxSearchSteps() + (this->Options->GetDiagonalDetection() ? 4 : 2);
+  // 2 * MaxSearchSteps units along x and y, and the edgels two pixels past the last one. Local
+  // contrast adaptation decides an edgel from the other boundaries of its two pixels, which
+  // reach one pixel further; two are padded.
+  const int edgels =
+    2 * this->Options->GetMaxSearchSteps() + (this->Options->GetDiagonalDetection() ? 4 : 2);
+  return edgels + (this->Options->GetLocalContrastFactor() > 0.0 ? 2 : 0);
 }
 
 //------------------------------------------------------------------------------
@@ -920,6 +1007,7 @@ int vtkImageMLAA::RequestData(
   setup.DebugOutput = debugOutput;
   setup.SearchSteps = this->Options->GetMaxSearchSteps();
   setup.Threshold = this->Options->GetThreshold();
+  setup.LocalContrastFactor = this->Options->GetLocalContrastFactor();
   const int maxDistance = this->Options->GetMaxDistance();
   const std::vector<float> area = Quantised(*vtkMLAAAreaTexture::GetSharedTable(maxDistance));
   setup.Area = area.data();

@@ -61,6 +61,7 @@ void vtkMLAAOptions::DeepCopy(vtkMLAAOptions* other)
     return;
   }
   this->SetThreshold(other->Threshold);
+  this->SetLocalContrastFactor(other->LocalContrastFactor);
   this->SetEdgeDetection(other->EdgeDetection);
   this->SetMaxSearchSteps(other->MaxSearchSteps);
   this->SetDebugOutput(other->DebugOutput);
@@ -96,6 +97,7 @@ void vtkMLAAOptions::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Threshold: " << this->Threshold << "\n";
+  os << indent << "LocalContrastFactor: " << this->LocalContrastFactor << "\n";
   os << indent << "EdgeDetection: " << GetEdgeDetectionAsString(this->EdgeDetection) << "\n";
   os << indent << "MaxSearchSteps: " << this->MaxSearchSteps << "\n";
   os << indent << "DebugOutput: " << GetDebugOutputAsString(this->DebugOutput) << "\n";

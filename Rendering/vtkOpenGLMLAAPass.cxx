@@ -20,6 +20,8 @@
 #include "vtkMLAAEdgeDetectionFS.h"
 #include "vtkMLAANeighborhoodBlendingFS.h"
 
+#include <string>
+
 #include "vtk_glew.h" // For GL enums only: every call goes through VTK's classes
 
 vtkStandardNewMacro(vtkOpenGLMLAAPass);
@@ -84,6 +86,19 @@ vtkIdType TextureBytes(vtkTextureObject* texture, int bytesPerTexel)
   return texture && texture->GetHandle()
     ? static_cast<vtkIdType>(texture->GetWidth()) * texture->GetHeight() * bytesPerTexel
     : 0;
+}
+
+// The local contrast adaptation variant of the edge detection shader (one .glsl file, two
+// builds).
+const std::string& LocalContrastShader()
+{
+  static const std::string source = [] {
+    std::string fs = vtkMLAAEdgeDetectionFS;
+    vtkShaderProgram::Substitute(
+      fs, "//VTK::MLAALocalContrast::Dec", "#define MLAA_LOCAL_CONTRAST", false);
+    return fs;
+  }();
+  return source;
 }
 
 template <typename T>
@@ -238,6 +253,18 @@ bool vtkOpenGLMLAAPass::ReadyQuad(
 }
 
 //------------------------------------------------------------------------------
+void vtkOpenGLMLAAPass::SetEdgeUniforms(vtkShaderProgram* program, bool useAlpha)
+{
+  program->SetUniformi("colorTexture", this->ColorTexture->GetTextureUnit());
+  program->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
+  program->SetUniformi("edgeDetection", this->Options->GetEdgeDetection());
+  program->SetUniformf("threshold", static_cast<float>(this->Options->GetThreshold()));
+  program->SetUniformf(
+    "localContrastFactor", static_cast<float>(this->Options->GetLocalContrastFactor()));
+  program->SetUniformi("useAlpha", useAlpha ? 1 : 0);
+}
+
+//------------------------------------------------------------------------------
 bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   vtkOpenGLRenderWindow* renWin, int width, int height, bool useAlpha)
 {
@@ -267,12 +294,23 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   vtkShaderProgram* program = this->EdgesQuad->Program;
   this->ColorTexture->Activate();
   this->DepthTexture->Activate();
-  program->SetUniformi("colorTexture", this->ColorTexture->GetTextureUnit());
-  program->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
-  program->SetUniformi("edgeDetection", this->Options->GetEdgeDetection());
-  program->SetUniformf("threshold", static_cast<float>(this->Options->GetThreshold()));
-  program->SetUniformi("useAlpha", useAlpha ? 1 : 0);
+  this->SetEdgeUniforms(program, useAlpha);
   this->EdgesQuad->Render();
+
+  // Local contrast adaptation: the edge pixels (those whose mask depth was written) rewrite
+  // their edges, keeping those not much weaker than their neighbours.
+  ostate->vtkglDepthMask(GL_FALSE);
+  ostate->vtkglDepthFunc(GL_EQUAL);
+  if (this->Options->GetLocalContrastFactor() > 0.0)
+  {
+    if (!this->ReadyQuad(renWin, this->LocalContrastQuad, LocalContrastShader().c_str()))
+    {
+      return false;
+    }
+    program = this->LocalContrastQuad->Program;
+    this->SetEdgeUniforms(program, useAlpha);
+    this->LocalContrastQuad->Render();
+  }
   this->DepthTexture->Deactivate();
   this->ColorTexture->Deactivate();
 
@@ -280,8 +318,6 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   fbo->AddColorAttachment(0, this->WeightsTexture);
   fbo->ActivateDrawBuffer(0);
   ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
-  ostate->vtkglDepthMask(GL_FALSE);
-  ostate->vtkglDepthFunc(GL_EQUAL);
   if (!this->ReadyQuad(renWin, this->WeightsQuad, vtkMLAABlendingWeightsFS))
   {
     return false;
@@ -435,7 +471,8 @@ void vtkOpenGLMLAAPass::Render(const vtkRenderState* s)
 void vtkOpenGLMLAAPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
-  for (vtkOpenGLQuadHelper** quad : { &this->EdgesQuad, &this->WeightsQuad, &this->BlendQuad })
+  for (vtkOpenGLQuadHelper** quad :
+    { &this->EdgesQuad, &this->LocalContrastQuad, &this->WeightsQuad, &this->BlendQuad })
   {
     if (*quad)
     {

@@ -128,6 +128,8 @@ private:
   bool ComputeEdgesAndWeights(vtkOpenGLRenderWindow* renWin, int width, int height, bool useAlpha);
   // Pass 3 (or a debug output) into the target viewport.
   bool Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int width, int height);
+  // The uniforms of both variants of the edge detection shader.
+  void SetEdgeUniforms(vtkShaderProgram* program, bool useAlpha);
   // Builds a quad helper for a fragment shader, or binds the existing one.
   bool ReadyQuad(vtkOpenGLRenderWindow* renWin, vtkOpenGLQuadHelper*& quad, const char* fs);
 
@@ -142,6 +144,7 @@ private:
   vtkTextureObject* DiagonalAreaTexture = nullptr;
   int AreaTextureMaxDistance = 0;
   vtkOpenGLQuadHelper* EdgesQuad = nullptr;
+  vtkOpenGLQuadHelper* LocalContrastQuad = nullptr;
   vtkOpenGLQuadHelper* WeightsQuad = nullptr;
   vtkOpenGLQuadHelper* BlendQuad = nullptr;
 };

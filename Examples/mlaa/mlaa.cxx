@@ -183,6 +183,16 @@ void PrintUsage(std::ostream& os)
   option("--threshold T", text);
 
   text.str("");
+  text << "Local contrast adaptation: an edge is kept only if F times its contrast is at least "
+          "the contrast of every other boundary of its two pixels, so that faint shading next "
+          "to a strong silhouette does not cut it into pieces; in ["
+       << defaults->GetLocalContrastFactorMinValue() << ", "
+       << defaults->GetLocalContrastFactorMaxValue()
+       << "], 0 keeps every edge above the threshold. Default: "
+       << defaults->GetLocalContrastFactor() << ".";
+  option("--local-contrast F", text);
+
+  text.str("");
   text << "What edge detection compares (section 4.2). Default: "
        << vtkMLAAOptions::GetEdgeDetectionAsString(defaults->GetEdgeDetection()) << ".";
   option("--edges MODE", text);
@@ -386,6 +396,19 @@ void ParseCommandLine(const std::vector<std::string>& args, CommandLine& cl)
           ToString(hi) + "]");
       }
       options->SetThreshold(value);
+    }
+    else if (name == "--local-contrast")
+    {
+      const std::string text = takeValues(1)[0];
+      double value;
+      const double lo = options->GetLocalContrastFactorMinValue();
+      const double hi = options->GetLocalContrastFactorMaxValue();
+      if (!ParseDouble(text, value) || value < lo || value > hi)
+      {
+        throw UsageError("--local-contrast: '" + text + "' is not a number in [" + ToString(lo) +
+          ", " + ToString(hi) + "]");
+      }
+      options->SetLocalContrastFactor(value);
     }
     else if (name == "--edges")
     {

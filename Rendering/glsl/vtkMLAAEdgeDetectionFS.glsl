@@ -1,25 +1,34 @@
 //VTK::System::Dec
 //VTK::Output::Dec
+//VTK::MLAALocalContrast::Dec
 
 // MLAA pass 1 of 3: edge detection (Jimenez et al., "Practical Morphological Antialiasing",
-// GPU Pro 2, section 4.2, Listing 4.1; luma as in section 4.2.1).
+// GPU Pro 2, section 4.2, Listing 4.1; luma as in section 4.2.1), built in two variants.
 //
-// Writes, for the pixel under this fragment, whether its left boundary (red) and its top
-// boundary (green) are edges. "Top" is the next row up (GL's y + 1, the top of the displayed
-// image). Pixels with no edge are discarded: the edges texture was cleared to 0, and the depth
-// buffer, cleared to 1, keeps the quad's depth only where an edge was written. The
-// blending-weights pass tests depth for equality, so it runs on edge pixels only: the chapter's
-// stencil trick, done with a depth buffer.
+// Detection (the default build): writes, for the pixel under this fragment, whether its left
+// boundary (red) and its top boundary (green) are edges. "Top" is the next row up (GL's y + 1,
+// the top of the displayed image). Pixels with no edge are discarded: the edges texture was
+// cleared to 0, and the depth buffer, cleared to 1, keeps the quad's depth only where an edge
+// was written. The later passes test depth for equality, so they run on edge pixels only: the
+// chapter's stencil trick, done with a depth buffer.
+//
+// Local contrast adaptation (built with MLAA_LOCAL_CONTRAST defined, run when
+// vtkMLAAOptions::LocalContrastFactor > 0 on the edge pixels only): rewrites the edges of each
+// edge pixel, dropping an edge when the factor times its contrast is below the contrast of one
+// of the six other boundaries of the two pixels it separates. Doing this in a pass of its own
+// keeps its extra reads off the pixels without edges (the depth test rejects them before the
+// shader runs), which matters on rasterisers that run both sides of every branch.
 //
 // Must match vtkImageMLAA's edge detection (Filters/vtkImageMLAA.cxx).
 
 in vec2 texCoord;
 
-uniform sampler2D colorTexture; // the delegate's image (texelFetch only)
-uniform sampler2D depthTexture; // its depth buffer, for depth edges
-uniform int edgeDetection;      // vtkMLAAOptions: 0 luma, 1 colour, 2 depth
-uniform float threshold;        // vtkMLAAOptions::Threshold
-uniform bool useAlpha;          // also an edge where alpha alone changes
+uniform sampler2D colorTexture;    // the delegate's image (texelFetch only)
+uniform sampler2D depthTexture;    // its depth buffer, for depth edges
+uniform int edgeDetection;         // vtkMLAAOptions: 0 luma, 1 colour, 2 depth
+uniform float threshold;           // vtkMLAAOptions::Threshold
+uniform float localContrastFactor; // vtkMLAAOptions::LocalContrastFactor (> 0 here)
+uniform bool useAlpha;             // also an edge where alpha alone changes
 
 // Rec. 709 luma weights.
 const vec3 lumaWeights = vec3(0.2126, 0.7152, 0.0722);
@@ -29,51 +38,87 @@ bool isFiniteColor(vec4 c)
   return !any(isnan(c)) && !any(isinf(c));
 }
 
-// An edge: a difference of at least the threshold, and of more than nothing (so that a zero
-// threshold means "any difference"). NaN differences are never edges.
-bool differs(float a, float b)
+// The difference of two values if it is at least the threshold (and more than nothing, so that
+// a zero threshold means "any difference"), else 0. NaN differences are never edges.
+float kept(float d)
 {
-  float d = abs(a - b);
-  return d >= threshold && d > 0.0;
+  return (d >= threshold && d > 0.0) ? d : 0.0;
 }
 
-// Whether the boundary between this pixel (colour a, depth da) and pixel q is an edge.
-bool isEdge(vec4 a, float da, ivec2 q)
+// The contrast across the boundary between a pixel (colour a, depth da) and pixel q: the
+// largest difference of what edge detection compares (luma, colour channels or depth, and
+// alpha when it counts) that is at least the threshold, else 0. Pixels with a non-finite
+// colour (float buffers) take part in no edge, so they never spread.
+float contrast(vec4 a, float da, ivec2 q)
 {
   vec4 b = texelFetch(colorTexture, q, 0);
-  // Non-finite pixels (float buffers) never take part in an edge, so they never spread.
   if (!isFiniteColor(a) || !isFiniteColor(b))
   {
-    return false;
+    return 0.0;
   }
-  if (useAlpha && differs(a.a, b.a))
-  {
-    return true;
-  }
+  float c = useAlpha ? kept(abs(a.a - b.a)) : 0.0;
   if (edgeDetection == 1)
   {
-    return differs(a.r, b.r) || differs(a.g, b.g) || differs(a.b, b.b);
+    vec3 d = abs(a.rgb - b.rgb);
+    return max(c, max(kept(d.r), max(kept(d.g), kept(d.b))));
   }
   if (edgeDetection == 2)
   {
-    return differs(da, texelFetch(depthTexture, q, 0).r);
+    return max(c, kept(abs(da - texelFetch(depthTexture, q, 0).r)));
   }
-  return differs(dot(a.rgb, lumaWeights), dot(b.rgb, lumaWeights));
+  return max(c, kept(abs(dot(a.rgb, lumaWeights) - dot(b.rgb, lumaWeights))));
+}
+
+// The contrast across the boundary between pixels p and q (q = p + (1, 0) or p + (0, 1)); 0
+// where either is outside the image, whose border is never an edge.
+float contrastBetween(ivec2 p, ivec2 q, ivec2 size)
+{
+  if (any(lessThan(p, ivec2(0))) || any(greaterThanEqual(q, size)))
+  {
+    return 0.0;
+  }
+  vec4 a = texelFetch(colorTexture, p, 0);
+  float da = edgeDetection == 2 ? texelFetch(depthTexture, p, 0).r : 0.0;
+  return contrast(a, da, q);
 }
 
 void main()
 {
   ivec2 size = textureSize(colorTexture, 0);
   ivec2 p = ivec2(texCoord * vec2(size)); // this fragment's pixel (texCoord is at its centre)
-  // The image border is never an edge (as reads clamped to the border would compare a pixel
-  // with itself).
+
+  // The two boundaries this pixel owns: with its left neighbour and with the pixel above.
   vec4 color = texelFetch(colorTexture, p, 0);
   float depth = edgeDetection == 2 ? texelFetch(depthTexture, p, 0).r : 0.0;
-  float left = (p.x > 0 && isEdge(color, depth, p - ivec2(1, 0))) ? 1.0 : 0.0;
-  float top = (p.y < size.y - 1 && isEdge(color, depth, p + ivec2(0, 1))) ? 1.0 : 0.0;
+  float left = p.x > 0 ? contrast(color, depth, p - ivec2(1, 0)) : 0.0;
+  float top = p.y < size.y - 1 ? contrast(color, depth, p + ivec2(0, 1)) : 0.0;
+
+#ifdef MLAA_LOCAL_CONTRAST
+  ivec2 dx = ivec2(1, 0);
+  ivec2 dy = ivec2(0, 1);
+  // Shared by both edges: this pixel's right and bottom boundaries.
+  float around = max(contrastBetween(p, p + dx, size), contrastBetween(p - dy, p, size));
+  if (left > 0.0)
+  {
+    ivec2 l = p - dx;
+    float strongest = max(max(around, top),
+      max(contrastBetween(l - dx, l, size),
+        max(contrastBetween(l, l + dy, size), contrastBetween(l - dy, l, size))));
+    left = localContrastFactor * left >= strongest ? left : 0.0;
+  }
+  if (top > 0.0)
+  {
+    ivec2 t = p + dy;
+    float strongest = max(max(around, p.x > 0 ? contrast(color, depth, p - dx) : 0.0),
+      max(contrastBetween(t, t + dy, size),
+        max(contrastBetween(t - dx, t, size), contrastBetween(t, t + dx, size))));
+    top = localContrastFactor * top >= strongest ? top : 0.0;
+  }
+#else
   if (left == 0.0 && top == 0.0)
   {
     discard;
   }
-  gl_FragData[0] = vec4(left, top, 0.0, 0.0);
+#endif
+  gl_FragData[0] = vec4(left > 0.0 ? 1.0 : 0.0, top > 0.0 ? 1.0 : 0.0, 0.0, 0.0);
 }

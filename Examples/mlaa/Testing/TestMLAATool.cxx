@@ -482,7 +482,7 @@ void HelpListsEveryOption()
       }
     }
     for (const char* option : { "--threshold T", "--edges MODE", "--depth-image FILE",
-           "--max-search-steps N", "--diagonals on|off", "--debug", "--value-range LO HI", "--area-texture D",
+           "--max-search-steps N", "--diagonals on|off", "--local-contrast F", "--debug", "--value-range LO HI", "--area-texture D",
            "-h, --help", "Usage: mlaa [options] INPUT OUTPUT" })
     {
       if (!MLAA_CHECK(words.find(option) != std::string::npos))
@@ -777,6 +777,29 @@ void OptionDiagonals()
   CheckFile(output, Filter(pixels), OIIO::TypeDesc::UINT8);
 }
 
+void OptionLocalContrast()
+{
+  // A white square on a dark background whose lower half is a little lighter (0 and 40, a
+  // shading edge of 0.157 that meets the square's sides): --local-contrast 0 keeps the shading
+  // edge where it meets the silhouette, the default drops it there; both as the filter does.
+  auto pixels = MakeImage(40, 40, 1);
+  FillImage(pixels, [](int x, int y, int, int) {
+    return (x >= 10 && x < 30 && y >= 12 && y < 28) ? 255.0 : (y < 20 ? 0.0 : 40.0);
+  });
+  const fs::path input = WorkFile("in.png");
+  const fs::path output = WorkFile("out.png");
+  WriteFile(pixels, input, OIIO::TypeDesc::UINT8);
+  ExpectSuccess({ "--local-contrast", "0", input.string(), output.string() }, output);
+  auto expected =
+    Filter(pixels, [](vtkImageMLAA* f) { f->GetOptions()->SetLocalContrastFactor(0.0); });
+  CheckFile(output, expected, OIIO::TypeDesc::UINT8);
+  MLAA_CHECK(Compare(expected, Filter(pixels)).Count > 0);
+  ExpectSuccess({ "--local-contrast=2.5", input.string(), output.string() }, output);
+  CheckFile(output,
+    Filter(pixels, [](vtkImageMLAA* f) { f->GetOptions()->SetLocalContrastFactor(2.5); }),
+    OIIO::TypeDesc::UINT8);
+}
+
 void DebugEdgesRgba8TopRowFirst()
 {
   // The top half of the picture white, the bottom half black. In the file the top row comes
@@ -1020,6 +1043,16 @@ void ErrorBadMaxSearchSteps()
   }
 }
 
+void ErrorBadLocalContrast()
+{
+  const fs::path input = GoodInput();
+  const fs::path output = WorkFile("out.png");
+  for (const char* value : { "-1", "101", "two", "nan", "" })
+  {
+    ExpectFailure({ "--local-contrast", value, input.string(), output.string() }, output, Usage);
+  }
+}
+
 void ErrorBadDiagonals()
 {
   const fs::path input = GoodInput();
@@ -1140,6 +1173,7 @@ int main(int argc, char* argv[])
     { "option-edges-depth", OptionEdgesDepth },
     { "option-max-search-steps", OptionMaxSearchSteps },
     { "option-diagonals", OptionDiagonals },
+    { "option-local-contrast", OptionLocalContrast },
     { "debug-edges-rgba8-top-row-first", DebugEdgesRgba8TopRowFirst },
     { "debug-weights-rgba8", DebugWeightsRgba8 },
     { "area-texture-9", AreaTexture9 },
@@ -1154,6 +1188,7 @@ int main(int argc, char* argv[])
     { "error-unknown-debug-name", ErrorUnknownDebugName },
     { "error-bad-max-search-steps", ErrorBadMaxSearchSteps },
     { "error-bad-diagonals", ErrorBadDiagonals },
+    { "error-bad-local-contrast", ErrorBadLocalContrast },
     { "error-bad-value-range", ErrorBadValueRange },
     { "error-missing-argument", ErrorMissingArgument },
     { "error-extra-argument", ErrorExtraArgument },

@@ -1,7 +1,8 @@
 // What counts as an edge: luma (default) misses colours of equal luminance that colour edges
 // find; depth edges follow a depth image instead of the colours; alpha edges give a silhouette
 // over a transparent background a soft alpha border; the threshold decides how faint an edge may
-// be; zero threshold means any difference.
+// be; zero threshold means any difference; local contrast adaptation drops faint edges next to
+// strong ones only.
 #include "vtkMLAATestUtilities.h"
 
 using namespace vtkMLAATest;
@@ -148,6 +149,46 @@ void Threshold()
   FillImage(full, [](int x, int y, int, int) { return Inside(x, y) ? 255.0 : 0.0; });
   MLAA_CHECK(ChangedPixels(full, RunMLAA(full, options)) > 5);
 }
+
+void LocalContrast()
+{
+  // A straight vertical silhouette, white (x < 6) against a dark region in which shading steps
+  // from 0 to 40 (0.157, above the threshold) between rows 4 and 5. The shading edge is a line
+  // of top edgels on row 4 from x = 6 to the right border.
+  auto input = MakeImage(16, 12, 1);
+  FillImage(input, [](int x, int y, int, int) { return x < 6 ? 255.0 : (y < 5 ? 0.0 : 40.0); });
+  vtkNew<vtkMLAAOptions> options;
+  options->SetDebugOutputToEdges();
+  for (double factor : { 0.0, 2.0, 6.0, 7.0 })
+  {
+    options->SetLocalContrastFactor(factor);
+    auto edges = RunMLAA(input, options);
+    for (int y = 0; y < 12; ++y)
+    {
+      for (int x = 0; x < 16; ++x)
+      {
+        // The silhouette's edgels are always kept (the strongest around). The shading edgel of
+        // (6, 4) shares pixel (6, 4) with the silhouette's edgel of contrast 1 (255/255) and
+        // that of (6, 5) of contrast 215/255: kept when factor * 40 >= 255, so with factors 0
+        // (off) and 7, not with 2 or 6. The rest of the shading line has no stronger
+        // neighbour and is kept.
+        const bool left = x == 6;
+        const bool top = y == 4 && x >= 6 && (x > 6 || factor == 0.0 || factor * 40.0 >= 255.0);
+        MLAA_CHECK(GetValue(edges, x, y, 0) == (left ? 255.0 : 0.0));
+        MLAA_CHECK(GetValue(edges, x, y, 1) == (top ? 255.0 : 0.0));
+      }
+    }
+  }
+
+  // Without adaptation the shading edgel is a crossing edge that cuts the silhouette in two at
+  // row 4/5, and each half ends in an L whose pixels are blended. With the default factor the
+  // silhouette is one straight line with no crossing edge, so nothing is blended, and the
+  // shading line, which starts with no crossing edge either, is left alone too.
+  vtkNew<vtkMLAAOptions> off;
+  off->SetLocalContrastFactor(0.0);
+  MLAA_CHECK(ChangedPixels(input, RunMLAA(input, off)) > 0);
+  MLAA_CHECK(ChangedPixels(input, RunMLAA(input)) == 0);
+}
 }
 
 int TestImageMLAAEdgeModes(int, char*[])
@@ -156,5 +197,6 @@ int TestImageMLAAEdgeModes(int, char*[])
   Depth();
   Alpha();
   Threshold();
+  LocalContrast();
   return Result();
 }

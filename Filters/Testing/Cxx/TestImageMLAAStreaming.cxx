@@ -10,6 +10,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTrivialProducer.h"
 
+#include <algorithm>
 #include <cmath>
 
 using namespace vtkMLAATest;
@@ -18,7 +19,9 @@ namespace
 {
 // An odd-sized colour image full of edges of every slope: three overlapping discs and
 // half-planes in different colours, plus long nearly-horizontal and nearly-vertical lines that
-// exceed the search distance.
+// exceed the search distance. Faint shading bands (steps of 30, about 0.12) run across
+// everything, so that local contrast adaptation drops edges next to stronger ones everywhere,
+// piece borders included.
 vtkSmartPointer<vtkImageData> Picture()
 {
   auto image = MakeImage(97, 83, 3);
@@ -40,7 +43,7 @@ vtkSmartPointer<vtkImageData> Picture()
     {
       v = 10.0 + 100.0 * (k == 1);
     }
-    return v;
+    return std::min(255.0, v + 30.0 * ((x / 3 + y / 4) % 3 == 0));
   });
   return image;
 }

@@ -26,6 +26,7 @@ int TestMLAAOptions(int, char*[])
   CHECK(options->GetMaxDistance() == 16);
   CHECK(options->GetDebugOutput() == vtkMLAAOptions::NO_DEBUG_OUTPUT);
   CHECK(options->GetDiagonalDetection());
+  CHECK(options->GetLocalContrastFactor() == 2.0);
 
   // Clamping to the documented ranges.
   options->SetThreshold(-1.0);
@@ -38,6 +39,10 @@ int TestMLAAOptions(int, char*[])
   CHECK(options->GetMaxSearchSteps() == 64);
   options->SetEdgeDetection(17);
   CHECK(options->GetEdgeDetection() == vtkMLAAOptions::DEPTH);
+  options->SetLocalContrastFactor(-1.0);
+  CHECK(options->GetLocalContrastFactor() == 0.0);
+  options->SetLocalContrastFactor(1e9);
+  CHECK(options->GetLocalContrastFactor() == 100.0);
 
   // Names used by the command-line tool, both ways.
   for (int mode = vtkMLAAOptions::LUMA; mode <= vtkMLAAOptions::DEPTH; ++mode)
@@ -59,8 +64,10 @@ int TestMLAAOptions(int, char*[])
   options->SetThreshold(0.25);
   options->SetDebugOutputToEdges();
   options->DiagonalDetectionOff();
+  options->SetLocalContrastFactor(3.5);
   copy->DeepCopy(options);
   CHECK(!copy->GetDiagonalDetection());
+  CHECK(copy->GetLocalContrastFactor() == 3.5);
   CHECK(copy->GetThreshold() == 0.25);
   CHECK(copy->GetEdgeDetection() == vtkMLAAOptions::DEPTH);
   CHECK(copy->GetMaxSearchSteps() == 64);
