@@ -6,7 +6,9 @@
  * L, U and Z patterns that the edges form, and blending each pixel next to an edge with the pixel
  * across it by the area that the revectorised (smooth) line would cover. It implements the three
  * passes of Jimenez et al., "Practical Morphological Antialiasing" (GPU Pro 2, chapter 4):
- * 1. edge detection (section 4.2): each pixel boundary whose difference exceeds the threshold;
+ * 1. edge detection (section 4.2): each pixel boundary whose difference exceeds the threshold,
+ *    unless local contrast adaptation (LocalContrastFactor, an addition after SMAA) finds it
+ *    much fainter than another boundary of its two pixels;
  * 2. blending weights (section 4.3): for every edgel, the distance to both ends of its line
  *    (two edgels read per step, section 4.3.1; unlike the chapter's search, it stops at crossing
  *    edges, which keeps the two outlines of one-pixel-wide lines apart), the crossing edges at
@@ -20,7 +22,8 @@
  * so the two produce the same image within 1/255 on the same input.
  *
  * Settings are those of a vtkMLAAOptions object (GetOptions; SetOptions to share one with a
- * vtkOpenGLMLAAPass): Threshold, EdgeDetection, MaxSearchSteps, DiagonalDetection, DebugOutput.
+ * vtkOpenGLMLAAPass): Threshold, LocalContrastFactor, EdgeDetection, MaxSearchSteps,
+ * DiagonalDetection, DebugOutput.
  *
  * Input: vtkImageData of any numeric scalar type with 1 to 4 components (grey, grey + alpha,
  * RGB, RGBA). 2D images and 3D volumes; each z slice is antialiased on its own. Integer values are

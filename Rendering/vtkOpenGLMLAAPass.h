@@ -7,7 +7,8 @@
  * sections 4.2 to 4.4) and draws the result into the renderer's viewport:
  * 1. edge detection into an RG8 edges texture (luma, colour or the delegate's depth); pixels
  *    without an edge are marked in a depth buffer so that the second pass skips them (the
- *    chapter's stencil trick);
+ *    chapter's stencil trick); with a LocalContrastFactor, a second run of the edge shader on
+ *    the edge pixels only drops edges much fainter than a neighbouring one;
  * 2. blending weights into an RGBA8 texture: distance search reading two edgels per bilinear
  *    fetch and stopping at crossing edges, crossing edges read with a quarter-pixel offset, and
  *    the area texture of vtkMLAAAreaTexture, uploaded once per maximum distance; with

@@ -48,7 +48,8 @@ void Usage(const char* program)
             << "  --image FILE.png    use this PNG instead of a render\n"
             << "  --repetitions N     timed repetitions per operation and thread count (default 30)\n"
             << "  --warmup N          untimed repetitions first (default 3)\n"
-            << "  --threads a,b       thread counts (default 1,2)\n";
+            << "  --threads a,b       thread counts (default 1,2)\n"
+            << mlaaBenchmark::MLAAOptionsUsage();
 }
 
 // One timed operation.
@@ -65,6 +66,7 @@ int main(int argc, char* argv[])
   int width = 1920, height = 1080, repetitions = 30, warmup = 3;
   std::string scene = "mixed", imageFile;
   std::vector<int> threadCounts = { 1, 2 };
+  vtkNew<vtkMLAAOptions> options;
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -108,6 +110,10 @@ int main(int argc, char* argv[])
         }
         threadCounts.push_back(n);
       }
+    }
+    else if (mlaaBenchmark::ParseMLAAOption(argc, argv, i, options))
+    {
+      continue; // applied to `options`
     }
     else
     {
@@ -157,9 +163,11 @@ int main(int argc, char* argv[])
             << "; hardware threads: " << std::thread::hardware_concurrency()
             << "; vtkThreadedImageAlgorithm global default EnableSMP: "
             << (vtkThreadedImageAlgorithm::GetGlobalDefaultEnableSMP() ? "on" : "off") << std::endl;
+  std::cout << mlaaBenchmark::DescribeMLAAOptions(options) << std::endl;
 
   vtkNew<vtkImageMLAA> mlaa;
   mlaa->SetInputData(image);
+  mlaa->SetOptions(options);
   vtkNew<vtkImageGaussianSmooth> gaussianSMP;
   gaussianSMP->SetInputData(image);
   gaussianSMP->SetDimensionality(2);

@@ -44,7 +44,8 @@ void Usage(const char* program)
             << "  --frames N       timed frames per configuration (default 100)\n"
             << "  --warmup N       untimed frames per configuration first (default 10)\n"
             << "  --rounds N       split the timed frames into N interleaved rounds (default 5)\n"
-            << "  --azimuth DEG    camera azimuth step per frame (default 0.2; 0 = still)\n";
+            << "  --azimuth DEG    camera azimuth step per frame (default 0.2; 0 = still)\n"
+            << "For the MLAA pass, " << mlaaBenchmark::MLAAOptionsUsage();
 }
 
 struct Configuration
@@ -61,6 +62,7 @@ int main(int argc, char* argv[])
   int width = 1920, height = 1080, frames = 100, warmup = 10, rounds = 5;
   double azimuth = 0.2;
   std::string scene = "mixed";
+  vtkNew<vtkMLAAOptions> options;
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -94,6 +96,10 @@ int main(int argc, char* argv[])
     {
       azimuth = std::atof(argv[++i]);
     }
+    else if (mlaaBenchmark::ParseMLAAOption(argc, argv, i, options))
+    {
+      continue; // applied to `options`
+    }
     else
     {
       std::cerr << "bad or incomplete argument: " << arg << std::endl;
@@ -126,6 +132,7 @@ int main(int argc, char* argv[])
             << " warm-up frames, azimuth step " << azimuth << " deg, Render() + WaitForCompletion()"
             << std::endl;
   mlaaBenchmark::PrintRasteriserNote(mlaaBenchmark::OpenGLRenderer(window));
+  std::cout << mlaaBenchmark::DescribeMLAAOptions(options) << std::endl;
   if (const char* lp = std::getenv("LP_NUM_THREADS"))
   {
     std::cout << "LP_NUM_THREADS=" << lp << std::endl;
@@ -138,6 +145,7 @@ int main(int argc, char* argv[])
   vtkNew<vtkRenderStepsPass> mlaaSteps;
   vtkNew<vtkOpenGLMLAAPass> mlaa;
   mlaa->SetDelegatePass(mlaaSteps);
+  mlaa->SetOptions(options);
 
   std::vector<Configuration> configurations = {
     { "default", nullptr, false, {} },

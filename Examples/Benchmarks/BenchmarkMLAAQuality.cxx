@@ -29,6 +29,7 @@
 #include "vtkCamera.h"
 #include "vtkImageData.h"
 #include "vtkImageMLAA.h"
+#include "vtkMLAAOptions.h"
 #include "vtkNew.h"
 #include "vtkOpenGLMLAAPass.h"
 #include "vtkPNGWriter.h"
@@ -378,6 +379,7 @@ void Usage(const char* program)
     << "  --crop WxH        crop size before magnification (default 100x75)\n"
     << "  --zoom Z          crop magnification (default 4)\n"
     << "  --write-full      also write the full-size render of every method per scene\n"
+    << "For MLAA-CPU and MLAA-pass alike, " << mlaaBenchmark::MLAAOptionsUsage()
     << "Mosaic panel order, left to right: none | FXAA | MSAA4 | MLAA-CPU | MLAA-pass | reference\n";
 }
 }
@@ -388,6 +390,7 @@ int main(int argc, char* argv[])
   std::vector<std::string> scenes = vtkMLAAScenes::Names();
   std::string outputDir = ".";
   bool writeFull = false;
+  vtkNew<vtkMLAAOptions> options; // for MLAA-CPU and MLAA-pass
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -425,6 +428,10 @@ int main(int argc, char* argv[])
     {
       writeFull = true;
     }
+    else if (mlaaBenchmark::ParseMLAAOption(argc, argv, i, options))
+    {
+      continue; // applied to `options`
+    }
     else
     {
       std::cerr << "bad or incomplete argument: " << arg << std::endl;
@@ -458,6 +465,7 @@ int main(int argc, char* argv[])
                "0, geometry 1), so silhouettes against the background are edges to it whatever "
                "their luma contrast"
             << std::endl;
+  std::cout << mlaaBenchmark::DescribeMLAAOptions(options) << std::endl;
 
   std::vector<SceneResult> results;
   std::string rendererName;
@@ -528,6 +536,7 @@ int main(int argc, char* argv[])
       input->DeepCopy(ToVTK(images["none"]));
       vtkNew<vtkImageMLAA> filter;
       filter->SetInputData(input);
+      filter->SetOptions(options);
       filter->Update();
       ToImage(filter->GetOutput(), images["MLAA-CPU"]);
     }
@@ -537,6 +546,7 @@ int main(int argc, char* argv[])
       vtkNew<vtkRenderStepsPass> steps;
       vtkNew<vtkOpenGLMLAAPass> pass;
       pass->SetDelegatePass(steps);
+      pass->SetOptions(options);
       renderer->SetPass(pass);
       Capture(window, images["MLAA-pass"]);
       renderer->SetPass(nullptr);

@@ -3,6 +3,7 @@
 #ifndef BenchmarkUtilities_h
 #define BenchmarkUtilities_h
 
+#include "vtkMLAAOptions.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderWindow.h"
 
@@ -51,6 +52,82 @@ inline bool ParsePositive(const std::string& text, int& value)
   }
   value = static_cast<int>(v);
   return true;
+}
+
+// Parses a finite number in [lo, hi].
+inline bool ParseNumber(const std::string& text, double lo, double hi, double& value)
+{
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !(v >= lo && v <= hi))
+  {
+    return false;
+  }
+  value = v;
+  return true;
+}
+
+// The MLAA settings the benchmarks take (vtkMLAAOptions), for their usage text.
+inline const char* MLAAOptionsUsage()
+{
+  return "MLAA settings (vtkMLAAOptions; default: the library's defaults):\n"
+         "  --threshold T          edge threshold in [0, 1]\n"
+         "  --edges luma|color     what edge detection compares\n"
+         "  --max-search-steps N   search steps in [1, 64]\n"
+         "  --diagonals on|off     diagonal detection\n"
+         "  --local-contrast F     local contrast factor in [0, 100]\n";
+}
+
+// If argv[i] is one of the MLAA settings above with a valid value, applies it to `options`,
+// moves i to the value and returns true; otherwise returns false and leaves i alone.
+inline bool ParseMLAAOption(int argc, char* argv[], int& i, vtkMLAAOptions* options)
+{
+  if (i + 1 >= argc)
+  {
+    return false;
+  }
+  const std::string name = argv[i];
+  const std::string value = argv[i + 1];
+  double number = 0.0;
+  if (name == "--threshold" && ParseNumber(value, 0.0, 1.0, number))
+  {
+    options->SetThreshold(number);
+  }
+  else if (name == "--edges" && (value == "luma" || value == "color"))
+  {
+    options->SetEdgeDetection(vtkMLAAOptions::GetEdgeDetectionFromString(value.c_str()));
+  }
+  else if (name == "--max-search-steps" && ParseNumber(value, 1.0, 64.0, number) &&
+    number == static_cast<int>(number))
+  {
+    options->SetMaxSearchSteps(static_cast<int>(number));
+  }
+  else if (name == "--diagonals" && (value == "on" || value == "off"))
+  {
+    options->SetDiagonalDetection(value == "on");
+  }
+  else if (name == "--local-contrast" && ParseNumber(value, 0.0, 100.0, number))
+  {
+    options->SetLocalContrastFactor(number);
+  }
+  else
+  {
+    return false;
+  }
+  ++i;
+  return true;
+}
+
+// One line describing the MLAA settings in use.
+inline std::string DescribeMLAAOptions(vtkMLAAOptions* options)
+{
+  std::ostringstream text;
+  text << "MLAA settings: threshold " << options->GetThreshold() << ", edges "
+       << vtkMLAAOptions::GetEdgeDetectionAsString(options->GetEdgeDetection())
+       << ", max search steps " << options->GetMaxSearchSteps() << ", diagonals "
+       << (options->GetDiagonalDetection() ? "on" : "off") << ", local contrast factor "
+       << options->GetLocalContrastFactor();
+  return text.str();
 }
 
 // Splits "a,b,c" into its non-empty items.
