@@ -106,6 +106,7 @@ struct SliceSetup
   int CellSize = 17;           // D
   int AreaSize = 85;           // 5 D
   bool Diagonals = true;                // vtkMLAAOptions::DiagonalDetection
+  bool Dominant = true;                 // vtkMLAAOptions::DominantDirectionBlending
   const float* DiagonalArea = nullptr;  // 8-bit quantised diagonal areas
   int DiagonalAreaSize = 51;            // 3 D
 };
@@ -671,10 +672,24 @@ private:
         continue;
       }
       const float* w = weightsAt(x, y);
-      const Acc a[4] = { (own & TopEdge) ? static_cast<Acc>(w[0]) : Acc(0),
+      Acc a[4] = { (own & TopEdge) ? static_cast<Acc>(w[0]) : Acc(0),
         below ? static_cast<Acc>(weightsAt(x, y - 1)[1]) : Acc(0),
         (own & LeftEdge) ? static_cast<Acc>(w[2]) : Acc(0),
         right ? static_cast<Acc>(weightsAt(x + 1, y)[3]) : Acc(0) };
+      if (this->S.Dominant)
+      {
+        // DominantDirectionBlending: on a corner, only the line with the larger weight counts.
+        const Acc vertical = std::max(a[0], a[1]);
+        const Acc horizontal = std::max(a[2], a[3]);
+        if (vertical > horizontal)
+        {
+          a[2] = a[3] = Acc(0);
+        }
+        else if (horizontal > vertical)
+        {
+          a[0] = a[1] = Acc(0);
+        }
+      }
       const Acc sum = a[0] + a[1] + a[2] + a[3];
       if (!(sum > Acc(0)))
       {
@@ -1014,6 +1029,7 @@ int vtkImageMLAA::RequestData(
   setup.CellSize = maxDistance + 1;
   setup.AreaSize = vtkMLAAAreaTexture::NumberOfCodes * setup.CellSize;
   setup.Diagonals = this->Options->GetDiagonalDetection();
+  setup.Dominant = this->Options->GetDominantDirectionBlending();
   const std::vector<float> diagonalArea = setup.Diagonals
     ? Quantised(*vtkMLAAAreaTexture::GetSharedDiagonalTable(maxDistance))
     : std::vector<float>();

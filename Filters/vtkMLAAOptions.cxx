@@ -66,6 +66,7 @@ void vtkMLAAOptions::DeepCopy(vtkMLAAOptions* other)
   this->SetMaxSearchSteps(other->MaxSearchSteps);
   this->SetDebugOutput(other->DebugOutput);
   this->SetDiagonalDetection(other->DiagonalDetection);
+  this->SetDominantDirectionBlending(other->DominantDirectionBlending);
 }
 
 //------------------------------------------------------------------------------
@@ -102,4 +103,6 @@ void vtkMLAAOptions::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaxSearchSteps: " << this->MaxSearchSteps << "\n";
   os << indent << "DebugOutput: " << GetDebugOutputAsString(this->DebugOutput) << "\n";
   os << indent << "DiagonalDetection: " << (this->DiagonalDetection ? "On" : "Off") << "\n";
+  os << indent << "DominantDirectionBlending: " << (this->DominantDirectionBlending ? "On" : "Off")
+     << "\n";
 }

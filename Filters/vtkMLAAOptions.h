@@ -44,8 +44,14 @@
  *   such a staircase the same 1/8 weight however the real line drifts across it; near-45-degree
  *   silhouettes and wireframe lines are where MLAA otherwise does worst. Staircases shorter
  *   than MinimumDiagonalLength units (a box's corner, say) keep the orthogonal treatment. The
- *   diagonal search follows up to GetMaxDistance() units each way. Off gives the chapter's
- *   method exactly.
+ *   diagonal search follows up to GetMaxDistance() units each way. Off follows only horizontal
+ *   and vertical lines, as the chapter does.
+ * - DominantDirectionBlending (default on): in the neighbourhood blending, a pixel that lies on
+ *   both a horizontal and a vertical line (the corner of a staircase) is blended along the one
+ *   with the larger weight only, as SMAA (Jimenez et al., 2012) does; on a tie it keeps both.
+ *   The chapter (section 4.4) averages the blends with all four neighbours, which at every corner
+ *   mixes in a second, cross-wise share of the other colour that no revectorised line covers.
+ *   Off gives the chapter's blending.
  * - DebugOutput (default None): instead of the antialiased image, output one of the
  *   intermediate textures of Figure 4.1, as 8-bit RGBA:
  *   - Edges: red = 255 where the pixel has an edge at its left boundary, green = 255 where it
@@ -144,6 +150,17 @@ public:
   vtkBooleanMacro(DiagonalDetection, bool);
   ///@}
 
+  ///@{
+  /**
+   * Whether a pixel on both a horizontal and a vertical line is blended along the dominant one
+   * only (the larger weight; both on a tie). Default on; off averages all four neighbours'
+   * blends, as in the chapter.
+   */
+  vtkSetMacro(DominantDirectionBlending, bool);
+  vtkGetMacro(DominantDirectionBlending, bool);
+  vtkBooleanMacro(DominantDirectionBlending, bool);
+  ///@}
+
   /**
    * Fewest units (turns of the staircase) that DiagonalDetection treats as a diagonal line.
    */
@@ -194,6 +211,7 @@ protected:
   int MaxSearchSteps = 8;
   int DebugOutput = NO_DEBUG_OUTPUT;
   bool DiagonalDetection = true;
+  bool DominantDirectionBlending = true;
 
 private:
   vtkMLAAOptions(const vtkMLAAOptions&) = delete;

@@ -367,6 +367,8 @@ bool vtkOpenGLMLAAPass::Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int w
   program->SetUniformi("edgesTexture", this->EdgesTexture->GetTextureUnit());
   program->SetUniformi("weightsTexture", this->WeightsTexture->GetTextureUnit());
   program->SetUniformi("debugOutput", this->Options->GetDebugOutput());
+  program->SetUniformi(
+    "dominantDirection", this->Options->GetDominantDirectionBlending() ? 1 : 0);
   this->BlendQuad->Render();
   this->WeightsTexture->Deactivate();
   this->EdgesTexture->Deactivate();

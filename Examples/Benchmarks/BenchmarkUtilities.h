@@ -75,7 +75,8 @@ inline const char* MLAAOptionsUsage()
          "  --edges luma|color     what edge detection compares\n"
          "  --max-search-steps N   search steps in [1, 64]\n"
          "  --diagonals on|off     diagonal detection\n"
-         "  --local-contrast F     local contrast factor in [0, 100]\n";
+         "  --local-contrast F     local contrast factor in [0, 100]\n"
+         "  --dominant-blending on|off  dominant-direction blending\n";
 }
 
 // If argv[i] is one of the MLAA settings above with a valid value, applies it to `options`,
@@ -110,6 +111,10 @@ inline bool ParseMLAAOption(int argc, char* argv[], int& i, vtkMLAAOptions* opti
   {
     options->SetLocalContrastFactor(number);
   }
+  else if (name == "--dominant-blending" && (value == "on" || value == "off"))
+  {
+    options->SetDominantDirectionBlending(value == "on");
+  }
   else
   {
     return false;
@@ -126,7 +131,8 @@ inline std::string DescribeMLAAOptions(vtkMLAAOptions* options)
        << vtkMLAAOptions::GetEdgeDetectionAsString(options->GetEdgeDetection())
        << ", max search steps " << options->GetMaxSearchSteps() << ", diagonals "
        << (options->GetDiagonalDetection() ? "on" : "off") << ", local contrast factor "
-       << options->GetLocalContrastFactor();
+       << options->GetLocalContrastFactor() << ", dominant-direction blending "
+       << (options->GetDominantDirectionBlending() ? "on" : "off");
   return text.str();
 }
 

@@ -225,6 +225,13 @@ void PrintUsage(std::ostream& os)
   option("--diagonals on|off", text);
 
   text.str("");
+  text << "Whether a pixel on the corner of a staircase is blended along its dominant line only "
+          "(on, as SMAA does) or with every neighbour's share averaged, as in the chapter (off). "
+          "Default: "
+       << (defaults->GetDominantDirectionBlending() ? "on" : "off") << ".";
+  option("--dominant-blending on|off", text);
+
+  text.str("");
   text << "Write an intermediate image instead of the antialiased one, as 8-bit RGBA (all but "
        << noDebugName
        << "). Default: " << vtkMLAAOptions::GetDebugOutputAsString(defaults->GetDebugOutput())
@@ -453,6 +460,15 @@ void ParseCommandLine(const std::vector<std::string>& args, CommandLine& cl)
         throw UsageError("--diagonals: '" + text + "' is neither on nor off");
       }
       options->SetDiagonalDetection(text == "on");
+    }
+    else if (name == "--dominant-blending")
+    {
+      const std::string text = takeValues(1)[0];
+      if (text != "on" && text != "off")
+      {
+        throw UsageError("--dominant-blending: '" + text + "' is neither on nor off");
+      }
+      options->SetDominantDirectionBlending(text == "on");
     }
     else if (name == "--depth-image")
     {

@@ -8,9 +8,12 @@
 // The pixel's own texel holds the weights of its top and left edgels; the weight of its bottom
 // edgel is the green of the pixel below, that of its right edgel the alpha of the pixel to the
 // right. Each neighbour k is mixed in as mix(c, c_k, a_k), and the mixes are averaged with weights
-// a_k (a pixel may lie on up to four lines). The published shader makes each mix with one
-// bilinear fetch; exact fetches and mix() give the same result without the filtering's rounding,
-// and let a zero weight skip a neighbour entirely (so a NaN next door cannot leak in).
+// a_k (a pixel may lie on up to four lines). With dominantDirection
+// (vtkMLAAOptions::DominantDirectionBlending), a pixel on both a horizontal and a vertical line
+// keeps only the direction with the larger weight (both on a tie), as SMAA does. The published
+// shader makes each mix with one bilinear fetch; exact fetches and mix() give the same result
+// without the filtering's rounding, and let a zero weight skip a neighbour entirely (so a NaN
+// next door cannot leak in).
 // The depth of the delegate's render is written too, so that passes and layers drawn after this
 // one see the scene's depth.
 //
@@ -23,6 +26,7 @@ uniform sampler2D depthTexture;   // the delegate's depth
 uniform sampler2D edgesTexture;   // pass 1 output, for the debug output
 uniform sampler2D weightsTexture; // pass 2 output
 uniform int debugOutput;          // vtkMLAAOptions: 0 none, 1 edges, 2 blending weights
+uniform bool dominantDirection;   // vtkMLAAOptions::DominantDirectionBlending
 
 void main()
 {
@@ -45,6 +49,19 @@ void main()
   // Weights towards the neighbour above, below, to the left and to the right.
   vec4 a = vec4(w.r, p.y > 0 ? texelFetch(weightsTexture, p - ivec2(0, 1), 0).g : 0.0, w.b,
     p.x < size.x - 1 ? texelFetch(weightsTexture, p + ivec2(1, 0), 0).a : 0.0);
+  if (dominantDirection)
+  {
+    float vertical = max(a.x, a.y);
+    float horizontal = max(a.z, a.w);
+    if (vertical > horizontal)
+    {
+      a.zw = vec2(0.0);
+    }
+    else if (horizontal > vertical)
+    {
+      a.xy = vec2(0.0);
+    }
+  }
   float sum = a.x + a.y + a.z + a.w;
   vec4 c = texelFetch(colorTexture, p, 0);
   if (sum > 0.0)

@@ -482,7 +482,7 @@ void HelpListsEveryOption()
       }
     }
     for (const char* option : { "--threshold T", "--edges MODE", "--depth-image FILE",
-           "--max-search-steps N", "--diagonals on|off", "--local-contrast F", "--debug", "--value-range LO HI", "--area-texture D",
+           "--max-search-steps N", "--diagonals on|off", "--local-contrast F", "--dominant-blending on|off", "--debug", "--value-range LO HI", "--area-texture D",
            "-h, --help", "Usage: mlaa [options] INPUT OUTPUT" })
     {
       if (!MLAA_CHECK(words.find(option) != std::string::npos))
@@ -800,6 +800,24 @@ void OptionLocalContrast()
     OIIO::TypeDesc::UINT8);
 }
 
+void OptionDominantBlending()
+{
+  // A white bar on black: its end pixels lie on a vertical line (above and below) and a
+  // horizontal one (the side); --dominant-blending off averages both, as the filter does.
+  auto pixels = TwoToneImage(
+    16, 8, VTK_UNSIGNED_CHAR, { 0 }, { 255 }, [](int x, int y) { return y == 3 && x >= 5 && x <= 9; });
+  const fs::path input = WorkFile("in.png");
+  const fs::path output = WorkFile("out.png");
+  WriteFile(pixels, input, OIIO::TypeDesc::UINT8);
+  ExpectSuccess({ "--dominant-blending", "off", input.string(), output.string() }, output);
+  auto expected =
+    Filter(pixels, [](vtkImageMLAA* f) { f->GetOptions()->DominantDirectionBlendingOff(); });
+  CheckFile(output, expected, OIIO::TypeDesc::UINT8);
+  MLAA_CHECK(Compare(expected, Filter(pixels)).Count > 0);
+  ExpectSuccess({ "--dominant-blending=on", input.string(), output.string() }, output);
+  CheckFile(output, Filter(pixels), OIIO::TypeDesc::UINT8);
+}
+
 void DebugEdgesRgba8TopRowFirst()
 {
   // The top half of the picture white, the bottom half black. In the file the top row comes
@@ -1053,6 +1071,16 @@ void ErrorBadLocalContrast()
   }
 }
 
+void ErrorBadDominantBlending()
+{
+  const fs::path input = GoodInput();
+  const fs::path output = WorkFile("out.png");
+  for (const char* value : { "yes", "0", "Off", "" })
+  {
+    ExpectFailure({ "--dominant-blending", value, input.string(), output.string() }, output, Usage);
+  }
+}
+
 void ErrorBadDiagonals()
 {
   const fs::path input = GoodInput();
@@ -1174,6 +1202,7 @@ int main(int argc, char* argv[])
     { "option-max-search-steps", OptionMaxSearchSteps },
     { "option-diagonals", OptionDiagonals },
     { "option-local-contrast", OptionLocalContrast },
+    { "option-dominant-blending", OptionDominantBlending },
     { "debug-edges-rgba8-top-row-first", DebugEdgesRgba8TopRowFirst },
     { "debug-weights-rgba8", DebugWeightsRgba8 },
     { "area-texture-9", AreaTexture9 },
@@ -1189,6 +1218,7 @@ int main(int argc, char* argv[])
     { "error-bad-max-search-steps", ErrorBadMaxSearchSteps },
     { "error-bad-diagonals", ErrorBadDiagonals },
     { "error-bad-local-contrast", ErrorBadLocalContrast },
+    { "error-bad-dominant-blending", ErrorBadDominantBlending },
     { "error-bad-value-range", ErrorBadValueRange },
     { "error-missing-argument", ErrorMissingArgument },
     { "error-extra-argument", ErrorExtraArgument },

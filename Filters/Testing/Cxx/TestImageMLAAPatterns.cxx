@@ -46,6 +46,15 @@ vtkSmartPointer<vtkImageData> Weights(
   return RunMLAA(input, options);
 }
 
+// The output with the chapter's blending (DominantDirectionBlending off): every neighbour's
+// blend averaged.
+vtkSmartPointer<vtkImageData> ChapterBlending(vtkImageData* input)
+{
+  vtkNew<vtkMLAAOptions> options;
+  options->DominantDirectionBlendingOff();
+  return RunMLAA(input, options);
+}
+
 // Every pixel other than the listed ones is unchanged.
 bool OthersUnchanged(vtkImageData* in, vtkImageData* out, const std::vector<std::pair<int, int>>& changed)
 {
@@ -144,10 +153,15 @@ void UShape()
   MLAA_CHECK(GetValue(weights, 8, 2, 2) == 0.0);
 
   auto out = RunMLAA(in);
-  // End pixels: weights 96, 96 (above, below) and 64 (side); c' = 255 sum a(1 - a) / sum a,
-  // which is 42752 / 256 = 167 exactly.
-  MLAA_CHECK(GetValue(out, 4, 2) == 167.0);
-  MLAA_CHECK(GetValue(out, 7, 2) == 167.0);
+  // End pixels: weights 96, 96 (above, below) and 64 (side). The vertical line dominates, so
+  // only it blends: 255 (1 - 96/255) = 159. The chapter's blending averages all three:
+  // c' = 255 sum a(1 - a) / sum a, which is 42752 / 256 = 167 exactly.
+  MLAA_CHECK(GetValue(out, 4, 2) == 159.0);
+  MLAA_CHECK(GetValue(out, 7, 2) == 159.0);
+  auto chapter = ChapterBlending(in);
+  MLAA_CHECK(GetValue(chapter, 4, 2) == 167.0);
+  MLAA_CHECK(GetValue(chapter, 7, 2) == 167.0);
+  MLAA_CHECK(GetValue(chapter, 5, 2) == 223.0);
   // Inner pixels: 32 above and below: 255 - 32.
   MLAA_CHECK(GetValue(out, 5, 2) == 223.0);
   MLAA_CHECK(GetValue(out, 6, 2) == 223.0);
@@ -179,9 +193,11 @@ void ZShape()
   MLAA_CHECK(GetValue(weights, 9, 3, 0) == Q(LArea(1, 18)));
 
   auto out = RunMLAA(in);
-  // (3, 2) is black: it takes white from below (120/255) and from the right (32/255):
+  // (3, 2) is black: it takes white from below (120/255) and from the right (32/255). The
+  // vertical weight dominates: 120. The chapter's blending averages both:
   // 255 (a1^2 + a2^2) / (a1 + a2) = (120^2 + 32^2) / 152 = 101.47.
-  MLAA_CHECK(GetValue(out, 3, 2) == 101.0);
+  MLAA_CHECK(GetValue(out, 3, 2) == 120.0);
+  MLAA_CHECK(GetValue(ChapterBlending(in), 3, 2) == 101.0);
   // (5, 2) is white and takes black from above only: 255 - 32.
   MLAA_CHECK(GetValue(out, 5, 2) == 223.0);
   // (6, 3) is black and takes white from below only: 32.
@@ -217,10 +233,12 @@ void ThinLine()
   auto out = RunMLAA(in);
   // A line pixel that loses 1/8 to the white above; a white pixel that takes 1/8 of the line
   // below it; a white pixel under the start of run B taking 3/8 from above and 1/8 from its
-  // black left neighbour: 255 (96 * 159 + 32 * 223) / 255^2 / (128 / 255) = 22400 / 128 = 175.
+  // black left neighbour: the vertical weight dominates, 255 - 96 = 159; the chapter's blending
+  // averages both, 255 (96 * 159 + 32 * 223) / 255^2 / (128 / 255) = 22400 / 128 = 175.
   MLAA_CHECK(GetValue(out, 5, 3) == q1);
   MLAA_CHECK(GetValue(out, 6, 4) == White - q1);
-  MLAA_CHECK(GetValue(out, 4, 2) == 175.0);
+  MLAA_CHECK(GetValue(out, 4, 2) == 159.0);
+  MLAA_CHECK(GetValue(ChapterBlending(in), 4, 2) == 175.0);
 }
 
 void LongLine(int searchSteps)

@@ -27,6 +27,7 @@ int TestMLAAOptions(int, char*[])
   CHECK(options->GetDebugOutput() == vtkMLAAOptions::NO_DEBUG_OUTPUT);
   CHECK(options->GetDiagonalDetection());
   CHECK(options->GetLocalContrastFactor() == 2.0);
+  CHECK(options->GetDominantDirectionBlending());
 
   // Clamping to the documented ranges.
   options->SetThreshold(-1.0);
@@ -65,7 +66,9 @@ int TestMLAAOptions(int, char*[])
   options->SetDebugOutputToEdges();
   options->DiagonalDetectionOff();
   options->SetLocalContrastFactor(3.5);
+  options->DominantDirectionBlendingOff();
   copy->DeepCopy(options);
+  CHECK(!copy->GetDominantDirectionBlending());
   CHECK(!copy->GetDiagonalDetection());
   CHECK(copy->GetLocalContrastFactor() == 3.5);
   CHECK(copy->GetThreshold() == 0.25);
