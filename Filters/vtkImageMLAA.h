@@ -16,14 +16,15 @@
  *    DiagonalDetection (default), edgels on a staircase of one-pixel steps take their weights
  *    from the 45-degree line through it instead (vtkMLAAAreaTexture::ComputeDiagonalAreas);
  * 3. neighbourhood blending (section 4.4): each pixel mixed with its four neighbours by those
- *    weights.
+ *    weights; with DominantDirectionBlending (default), a pixel on both a horizontal and a
+ *    vertical line only along the one with the larger weight, as in SMAA.
  * It follows the GPU pass vtkOpenGLMLAAPass step for step: the same search (clamped at the image
  * border the way a GPU clamps texture reads), the same area texture and 8-bit blending weights,
  * so the two produce the same image within 1/255 on the same input.
  *
  * Settings are those of a vtkMLAAOptions object (GetOptions; SetOptions to share one with a
  * vtkOpenGLMLAAPass): Threshold, LocalContrastFactor, EdgeDetection, MaxSearchSteps,
- * DiagonalDetection, DebugOutput.
+ * DiagonalDetection, DominantDirectionBlending, DebugOutput.
  *
  * Input: vtkImageData of any numeric scalar type with 1 to 4 components (grey, grey + alpha,
  * RGB, RGBA). 2D images and 3D volumes; each z slice is antialiased on its own. Integer values are

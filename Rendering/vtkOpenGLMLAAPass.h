@@ -14,7 +14,8 @@
  *    the area texture of vtkMLAAAreaTexture, uploaded once per maximum distance; with
  *    DiagonalDetection, staircases of one-pixel steps are followed texel by texel and take their
  *    weights from vtkMLAAAreaTexture's diagonal table;
- * 3. blending of each pixel with its four neighbours.
+ * 3. blending of each pixel with its four neighbours (along the dominant line only at a
+ *    staircase's corner, with DominantDirectionBlending).
  * It reads the same vtkMLAAOptions as the CPU filter vtkImageMLAA (share one object with
  * SetOptions), and the two produce the same image within 1/255 on the same input: the shaders are
  * in Rendering/glsl/vtkMLAA*FS.glsl.
