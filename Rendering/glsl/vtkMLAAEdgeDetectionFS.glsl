@@ -88,37 +88,41 @@ void main()
   ivec2 p = ivec2(texCoord * vec2(size)); // this fragment's pixel (texCoord is at its centre)
 
   // The two boundaries this pixel owns: with its left neighbour and with the pixel above.
-  vec4 color = texelFetch(colorTexture, p, 0);
-  float depth = edgeDetection == 2 ? texelFetch(depthTexture, p, 0).r : 0.0;
-  float left = p.x > 0 ? contrast(color, depth, p - ivec2(1, 0)) : 0.0;
-  float top = p.y < size.y - 1 ? contrast(color, depth, p + ivec2(0, 1)) : 0.0;
-
-#ifdef MLAA_LOCAL_CONTRAST
   ivec2 dx = ivec2(1, 0);
   ivec2 dy = ivec2(0, 1);
-  // Shared by both edges: this pixel's right and bottom boundaries.
-  float around = max(contrastBetween(p, p + dx, size), contrastBetween(p - dy, p, size));
-  if (left > 0.0)
+  vec4 color = texelFetch(colorTexture, p, 0);
+  float depth = edgeDetection == 2 ? texelFetch(depthTexture, p, 0).r : 0.0;
+  float left = p.x > 0 ? contrast(color, depth, p - dx) : 0.0;
+  float top = p.y < size.y - 1 ? contrast(color, depth, p + dy) : 0.0;
+  bool keepLeft = left > 0.0;
+  bool keepTop = top > 0.0;
+
+#ifdef MLAA_LOCAL_CONTRAST
+  // This pixel's other two boundaries, shared by both edges (contrast is symmetric).
+  float right = p.x < size.x - 1 ? contrast(color, depth, p + dx) : 0.0;
+  float bottom = p.y > 0 ? contrast(color, depth, p - dy) : 0.0;
+  float around = max(right, bottom);
+  if (keepLeft)
   {
     ivec2 l = p - dx;
     float strongest = max(max(around, top),
       max(contrastBetween(l - dx, l, size),
         max(contrastBetween(l, l + dy, size), contrastBetween(l - dy, l, size))));
-    left = localContrastFactor * left >= strongest ? left : 0.0;
+    keepLeft = localContrastFactor * left >= strongest;
   }
-  if (top > 0.0)
+  if (keepTop)
   {
     ivec2 t = p + dy;
-    float strongest = max(max(around, p.x > 0 ? contrast(color, depth, p - dx) : 0.0),
+    float strongest = max(max(around, left),
       max(contrastBetween(t, t + dy, size),
         max(contrastBetween(t - dx, t, size), contrastBetween(t, t + dx, size))));
-    top = localContrastFactor * top >= strongest ? top : 0.0;
+    keepTop = localContrastFactor * top >= strongest;
   }
 #else
-  if (left == 0.0 && top == 0.0)
+  if (!keepLeft && !keepTop)
   {
     discard;
   }
 #endif
-  gl_FragData[0] = vec4(left > 0.0 ? 1.0 : 0.0, top > 0.0 ? 1.0 : 0.0, 0.0, 0.0);
+  gl_FragData[0] = vec4(keepLeft ? 1.0 : 0.0, keepTop ? 1.0 : 0.0, 0.0, 0.0);
 }
