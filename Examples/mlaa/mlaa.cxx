@@ -390,32 +390,38 @@ void ParseCommandLine(const std::vector<std::string>& args, CommandLine& cl)
       i += count;
       return values;
     };
+    // The value of a number option, which must lie in [lo, hi].
+    auto takeNumber = [&](double lo, double hi)
+    {
+      const std::string text = takeValues(1)[0];
+      double value;
+      if (!ParseDouble(text, value) || value < lo || value > hi)
+      {
+        throw UsageError(name + ": '" + text + "' is not a number in [" + ToString(lo) + ", " +
+          ToString(hi) + "]");
+      }
+      return value;
+    };
+    // The value of an on|off option.
+    auto takeSwitch = [&]()
+    {
+      const std::string text = takeValues(1)[0];
+      if (text != "on" && text != "off")
+      {
+        throw UsageError(name + ": '" + text + "' is neither on nor off");
+      }
+      return text == "on";
+    };
 
     if (name == "--threshold")
     {
-      const std::string text = takeValues(1)[0];
-      double value;
-      const double lo = options->GetThresholdMinValue();
-      const double hi = options->GetThresholdMaxValue();
-      if (!ParseDouble(text, value) || value < lo || value > hi)
-      {
-        throw UsageError("--threshold: '" + text + "' is not a number in [" + ToString(lo) + ", " +
-          ToString(hi) + "]");
-      }
-      options->SetThreshold(value);
+      options->SetThreshold(
+        takeNumber(options->GetThresholdMinValue(), options->GetThresholdMaxValue()));
     }
     else if (name == "--local-contrast")
     {
-      const std::string text = takeValues(1)[0];
-      double value;
-      const double lo = options->GetLocalContrastFactorMinValue();
-      const double hi = options->GetLocalContrastFactorMaxValue();
-      if (!ParseDouble(text, value) || value < lo || value > hi)
-      {
-        throw UsageError("--local-contrast: '" + text + "' is not a number in [" + ToString(lo) +
-          ", " + ToString(hi) + "]");
-      }
-      options->SetLocalContrastFactor(value);
+      options->SetLocalContrastFactor(takeNumber(
+        options->GetLocalContrastFactorMinValue(), options->GetLocalContrastFactorMaxValue()));
     }
     else if (name == "--edges")
     {
@@ -454,21 +460,11 @@ void ParseCommandLine(const std::vector<std::string>& args, CommandLine& cl)
     }
     else if (name == "--diagonals")
     {
-      const std::string text = takeValues(1)[0];
-      if (text != "on" && text != "off")
-      {
-        throw UsageError("--diagonals: '" + text + "' is neither on nor off");
-      }
-      options->SetDiagonalDetection(text == "on");
+      options->SetDiagonalDetection(takeSwitch());
     }
     else if (name == "--dominant-blending")
     {
-      const std::string text = takeValues(1)[0];
-      if (text != "on" && text != "off")
-      {
-        throw UsageError("--dominant-blending: '" + text + "' is neither on nor off");
-      }
-      options->SetDominantDirectionBlending(text == "on");
+      options->SetDominantDirectionBlending(takeSwitch());
     }
     else if (name == "--depth-image")
     {
