@@ -24,6 +24,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <map>
 #include <set>
 #include <sstream>
@@ -1020,75 +1021,53 @@ void ErrorUnwritableOutputDirectory()
   MLAA_CHECK(Listing(directory) == std::set<std::string>{ "inside.txt" });
 }
 
-void ErrorBadThreshold()
+// Each value of `option` is refused as a usage error, and no output is written.
+void ExpectBadValues(const char* option, std::initializer_list<const char*> values)
 {
   const fs::path input = GoodInput();
   const fs::path output = WorkFile("out.png");
-  for (const char* value : { "abc", "1.5", "-0.1", "nan", "inf", "", "0.5x", "0,5" })
+  for (const char* value : values)
   {
-    ExpectFailure({ "--threshold", value, input.string(), output.string() }, output, Usage);
+    ExpectFailure({ option, value, input.string(), output.string() }, output, Usage);
   }
+}
+
+void ErrorBadThreshold()
+{
+  ExpectBadValues("--threshold", { "abc", "1.5", "-0.1", "nan", "inf", "", "0.5x", "0,5" });
+  const fs::path input = GoodInput();
+  const fs::path output = WorkFile("out.png");
   ExpectFailure({ "--threshold=2", input.string(), output.string() }, output, Usage);
 }
 
 void ErrorUnknownEdgesName()
 {
-  const fs::path input = GoodInput();
-  const fs::path output = WorkFile("out.png");
-  for (const char* value : { "lum", "LUMA", "colour", "", "edges" })
-  {
-    ExpectFailure({ "--edges", value, input.string(), output.string() }, output, Usage);
-  }
+  ExpectBadValues("--edges", { "lum", "LUMA", "colour", "", "edges" });
 }
 
 void ErrorUnknownDebugName()
 {
-  const fs::path input = GoodInput();
-  const fs::path output = WorkFile("out.png");
-  for (const char* value : { "edge", "blending-weights", "luma", "" })
-  {
-    ExpectFailure({ "--debug", value, input.string(), output.string() }, output, Usage);
-  }
+  ExpectBadValues("--debug", { "edge", "blending-weights", "luma", "" });
 }
 
 void ErrorBadMaxSearchSteps()
 {
-  const fs::path input = GoodInput();
-  const fs::path output = WorkFile("out.png");
-  for (const char* value : { "0", "65", "-1", "2.5", "eight", "99999999999999999999" })
-  {
-    ExpectFailure({ "--max-search-steps", value, input.string(), output.string() }, output, Usage);
-  }
+  ExpectBadValues("--max-search-steps", { "0", "65", "-1", "2.5", "eight", "99999999999999999999" });
 }
 
 void ErrorBadLocalContrast()
 {
-  const fs::path input = GoodInput();
-  const fs::path output = WorkFile("out.png");
-  for (const char* value : { "-1", "101", "two", "nan", "" })
-  {
-    ExpectFailure({ "--local-contrast", value, input.string(), output.string() }, output, Usage);
-  }
+  ExpectBadValues("--local-contrast", { "-1", "101", "two", "nan", "" });
 }
 
 void ErrorBadDominantBlending()
 {
-  const fs::path input = GoodInput();
-  const fs::path output = WorkFile("out.png");
-  for (const char* value : { "yes", "0", "Off", "" })
-  {
-    ExpectFailure({ "--dominant-blending", value, input.string(), output.string() }, output, Usage);
-  }
+  ExpectBadValues("--dominant-blending", { "yes", "0", "Off", "" });
 }
 
 void ErrorBadDiagonals()
 {
-  const fs::path input = GoodInput();
-  const fs::path output = WorkFile("out.png");
-  for (const char* value : { "yes", "1", "ON", "" })
-  {
-    ExpectFailure({ "--diagonals", value, input.string(), output.string() }, output, Usage);
-  }
+  ExpectBadValues("--diagonals", { "yes", "1", "ON", "" });
 }
 
 void ErrorBadValueRange()
