@@ -90,6 +90,7 @@ inline bool ParseMLAAOption(int argc, char* argv[], int& i, vtkMLAAOptions* opti
   const std::string name = argv[i];
   const std::string value = argv[i + 1];
   double number = 0.0;
+  int steps = 0;
   if (name == "--threshold" && ParseNumber(value, 0.0, 1.0, number))
   {
     options->SetThreshold(number);
@@ -98,10 +99,9 @@ inline bool ParseMLAAOption(int argc, char* argv[], int& i, vtkMLAAOptions* opti
   {
     options->SetEdgeDetection(vtkMLAAOptions::GetEdgeDetectionFromString(value.c_str()));
   }
-  else if (name == "--max-search-steps" && ParseNumber(value, 1.0, 64.0, number) &&
-    number == static_cast<int>(number))
+  else if (name == "--max-search-steps" && ParsePositive(value, steps) && steps <= 64)
   {
-    options->SetMaxSearchSteps(static_cast<int>(number));
+    options->SetMaxSearchSteps(steps);
   }
   else if (name == "--diagonals" && (value == "on" || value == "off"))
   {
