@@ -154,8 +154,8 @@ public:
     // A ring of zero contrasts around the available pixels: boundaries outside them are not
     // edges. Every other entry is written below, so the grid is left uninitialised.
     const int stride = w + 2;
-    this->Contrasts.reset(new Boundary[static_cast<size_t>(stride) * (h + 2)]);
-    Boundary* grid = this->Contrasts.get();
+    std::unique_ptr<Boundary[]> contrasts(new Boundary[static_cast<size_t>(stride) * (h + 2)]);
+    Boundary* grid = contrasts.get();
     std::fill(grid, grid + stride, Boundary{});
     std::fill(grid + static_cast<size_t>(h + 1) * stride, grid + static_cast<size_t>(h + 2) * stride,
       Boundary{});
@@ -196,8 +196,6 @@ public:
           this->Edges.data() + static_cast<size_t>(row) * w, w);
       }
     });
-    // Only the edgels are read from here on.
-    this->Contrasts.reset();
   }
 
   // Passes 2 and 3 (sections 4.3 and 4.4), fused per group of rows: the blending weights of the
@@ -753,7 +751,6 @@ private:
   bool HasAlpha = false;
   int F = 1; // features per pixel
   std::vector<unsigned char> Edges;
-  std::unique_ptr<Boundary[]> Contrasts; // pass 1 only
 };
 
 //------------------------------------------------------------------------------
