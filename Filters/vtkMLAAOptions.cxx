@@ -67,6 +67,7 @@ void vtkMLAAOptions::DeepCopy(vtkMLAAOptions* other)
   this->SetDebugOutput(other->DebugOutput);
   this->SetDiagonalDetection(other->DiagonalDetection);
   this->SetDominantDirectionBlending(other->DominantDirectionBlending);
+  this->SetPremultipliedAlpha(other->PremultipliedAlpha);
 }
 
 //------------------------------------------------------------------------------
@@ -105,4 +106,5 @@ void vtkMLAAOptions::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DiagonalDetection: " << (this->DiagonalDetection ? "On" : "Off") << "\n";
   os << indent << "DominantDirectionBlending: " << (this->DominantDirectionBlending ? "On" : "Off")
      << "\n";
+  os << indent << "PremultipliedAlpha: " << (this->PremultipliedAlpha ? "On" : "Off") << "\n";
 }

@@ -52,6 +52,14 @@
  *   The chapter (section 4.4) averages the blends with all four neighbours, which at every corner
  *   mixes in a second, cross-wise share of the other colour that no revectorised line covers.
  *   Off gives the chapter's blending.
+ * - PremultipliedAlpha (default off): how the colour of an image with alpha (2 or 4 components)
+ *   relates to its alpha. Off: straight (unassociated) alpha, as image files hold it (PNG always)
+ *   and as VTK images usually do: the colour is that of the surface, whatever its coverage. The
+ *   blending then mixes premultiplied colours and divides by the blended alpha again, so the
+ *   colour stored in fully transparent pixels (a black or white background, say) never leaks
+ *   into an antialiased silhouette as a dark or bright fringe. On: the colour is already
+ *   premultiplied (associated alpha, as EXR and compositing pipelines hold it), and is blended
+ *   as it is. Images without alpha are not affected.
  * - DebugOutput (default None): instead of the antialiased image, output one of the
  *   intermediate textures of Figure 4.1, as 8-bit RGBA:
  *   - Edges: red = 255 where the pixel has an edge at its left boundary, green = 255 where it
@@ -161,6 +169,16 @@ public:
   vtkBooleanMacro(DominantDirectionBlending, bool);
   ///@}
 
+  ///@{
+  /**
+   * Whether the colour channels of an image with alpha are premultiplied by alpha (associated
+   * alpha). Default off: straight alpha.
+   */
+  vtkSetMacro(PremultipliedAlpha, bool);
+  vtkGetMacro(PremultipliedAlpha, bool);
+  vtkBooleanMacro(PremultipliedAlpha, bool);
+  ///@}
+
   /**
    * Fewest units (turns of the staircase) that DiagonalDetection treats as a diagonal line.
    */
@@ -212,6 +230,7 @@ protected:
   int DebugOutput = NO_DEBUG_OUTPUT;
   bool DiagonalDetection = true;
   bool DominantDirectionBlending = true;
+  bool PremultipliedAlpha = false;
 
 private:
   vtkMLAAOptions(const vtkMLAAOptions&) = delete;
