@@ -27,10 +27,14 @@
  * DiagonalDetection, DominantDirectionBlending, DebugOutput.
  *
  * Input: vtkImageData of any numeric scalar type with 1 to 4 components (grey, grey + alpha,
- * RGB, RGBA). 2D images and 3D volumes; each z slice is antialiased on its own. Integer values are
- * normalised by the range of their type for edge detection; floating-point values by ValueRange
- * (default [0, 1]). All components, alpha included, are blended with the same weights, so an
- * opaque silhouette over a transparent background gets a soft alpha edge. Pixels holding NaN or
+ * RGB, RGBA). 2D images and 3D volumes; each z slice is antialiased on its own. Values are
+ * normalised for edge detection by ValueRange: by default the range of the type for integers and
+ * [0, 1] for floating point; SetValueRange for data that uses part of its type (12-bit data in
+ * 16-bit integers). All components, alpha included, are blended with the same weights, so an
+ * opaque silhouette over a transparent background gets a soft alpha edge; with straight alpha
+ * (vtkMLAAOptions::PremultipliedAlpha off, the default) the colours are blended premultiplied
+ * and divided by the blended alpha again, so the colour of transparent pixels does not leak
+ * into the edge as a dark or bright fringe. Pixels holding NaN or
  * infinity are never part of an edge: they are neither changed nor mixed into their neighbours.
  * For EdgeDetection = Depth, the depth image goes to the second input (SetDepthInputData or
  * SetDepthInputConnection): one component, same extent; floating-point depths are used as they
@@ -40,6 +44,16 @@
  * outputs, see vtkMLAAOptions). The filter is streaming-safe: it asks for its input padded by the
  * search distance, so processing an image in pieces gives the same pixels as processing it whole.
  * It is multithreaded with vtkSMPTools and deterministic.
+ *
+ * Stages (vtkMLAAStages.h): the work mirrors the GPU pass's shaders: features (the only typed
+ * step on the way in: each row read into a few rows of normalised luma, colour, depth and
+ * alpha), edges (a buffer laid out as the pass's RG8 edges texture), blending weights (as its
+ * RGBA8 weights texture, with the same 8-bit quantisation) and neighbourhood blending (the only
+ * typed step on the way out). Besides the output, the edges and weights buffers (6 bytes per
+ * pixel of a slice and its halo) are the only full-size buffers; they are kept between updates
+ * so that a filter run frame after frame does not allocate them again, and freed with the
+ * filter. Progress is reported (ProgressEvent) from the calling thread between groups of rows of
+ * every stage, and AbortExecute is honoured there: an aborted update gives an empty output.
  *
  * Bad input (no scalars, an empty extent, more than 4 components, a non-numeric scalar type, a
  * missing or mismatched depth image) is reported with vtkErrorMacro and gives an empty output.
@@ -54,6 +68,7 @@
 #include "vtkImageAlgorithm.h"
 
 class vtkMLAAOptions;
+struct vtkImageMLAABuffers;
 
 class VTKFILTERSMLAA_EXPORT vtkImageMLAA : public vtkImageAlgorithm
 {
@@ -73,12 +88,27 @@ public:
 
   ///@{
   /**
-   * The values that map to 0 and 1 when floating-point images are normalised for edge
-   * detection (integer images use the range of their type). Default [0, 1].
+   * The values that map to 0 and 1 when the image is normalised for edge detection (and, with
+   * straight alpha, the alpha values of no and full coverage). By default floating-point images
+   * use [0, 1] and integer images the range of their type (0 to 255 for unsigned char, 0 to
+   * 65535 for unsigned short). SetValueRange sets one range for every scalar type: 10-, 12- or
+   * 14-bit data stored in 16-bit integers needs it (SetValueRange(0, 4095) for 12 bits), or its
+   * edges look 16 times fainter than they are. SetValueRangeToTypeDefault() restores the
+   * defaults; GetValueRange() then holds [0, 1]. There is no automatic (data min/max) mode here:
+   * it would make a streamed piece's result depend on the piece; the `mlaa` tool's
+   * `--value-range auto` measures the whole image and sets the range.
    */
-  vtkSetVector2Macro(ValueRange, double);
+  virtual void SetValueRange(double lo, double hi);
+  void SetValueRange(const double range[2]) { this->SetValueRange(range[0], range[1]); }
   vtkGetVector2Macro(ValueRange, double);
+  void SetValueRangeToTypeDefault();
+  vtkGetMacro(ValueRangeIsTypeDefault, bool);
   ///@}
+
+  /**
+   * The range that normalises an image of the given VTK scalar type with the current settings.
+   */
+  void GetEffectiveValueRange(int scalarType, double range[2]);
 
   ///@{
   /**
@@ -114,6 +144,8 @@ protected:
 
   vtkMLAAOptions* Options = nullptr;
   double ValueRange[2] = { 0.0, 1.0 };
+  bool ValueRangeIsTypeDefault = true;
+  vtkImageMLAABuffers* Buffers = nullptr; // the stages' edges and weights, kept between updates
 
 private:
   vtkImageMLAA(const vtkImageMLAA&) = delete;

@@ -10,10 +10,13 @@
 //               VTK 9.1's default for imaging filters), for reference;
 //   DeepCopy    vtkImageData::DeepCopy of the image (allocation + copy, as a filter output is);
 //   memcpy      a copy of the scalars into a preallocated buffer (the memory-bandwidth floor);
+//   MLAA-stages the stages of vtkImageMLAA (vtkMLAAStages::RunSlice) run directly into a
+//               preallocated output, each stage timed (features+edges, weights, blending);
 // for each thread count n (default 1 and 2), and reports the median time per operation and the
 // ratios MLAA / Gaussian and MLAA / copy.
 #include "BenchmarkUtilities.h"
 #include "vtkMLAAScenes.h"
+#include "vtkMLAAStages.h"
 
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
@@ -50,6 +53,28 @@ void Usage(const char* program)
             << "  --warmup N          untimed repetitions first (default 3)\n"
             << "  --threads a,b       thread counts (default 1,2)\n"
             << mlaaBenchmark::MLAAOptionsUsage();
+}
+
+// The stages of vtkImageMLAA (vtkMLAAStages::RunSlice) on the whole of a 2D image, as the filter
+// runs them, timed one by one.
+template <typename T>
+void RunStages(vtkImageData* image, vtkImageMLAA* filter, vtkImageData* output,
+  vtkMLAAStages::SliceBuffers& buffers, vtkMLAAStages::StageTimes& times)
+{
+  int ext[6];
+  image->GetExtent(ext);
+  const int components = image->GetNumberOfScalarComponents();
+  double range[2];
+  filter->GetEffectiveValueRange(image->GetScalarType(), range);
+  vtkMLAAStages::SliceSetup setup;
+  setup.Whole = setup.Input = setup.Output = { ext[0], ext[1], ext[2], ext[3] };
+  vtkMLAAStages::ConfigureSlice(filter->GetOptions(), components, range[0], range[1], setup);
+  vtkMLAAStages::Progress progress;
+  vtkIdType increments[3];
+  image->GetIncrements(increments);
+  vtkMLAAStages::RunSlice(setup, static_cast<const T*>(image->GetScalarPointer()), increments[1],
+    vtkMLAAStages::DepthRows(), static_cast<T*>(output->GetScalarPointer()), nullptr, buffers,
+    progress, &times);
 }
 
 // One timed operation.
@@ -193,6 +218,11 @@ int main(int argc, char* argv[])
     std::map<std::string, double> Median;
   };
   std::vector<Row> rows;
+  vtkNew<vtkImageData> stagesOutput;
+  stagesOutput->CopyStructure(image);
+  stagesOutput->AllocateScalars(image->GetScalarType(), components);
+  vtkMLAAStages::SliceBuffers stageBuffers;
+  std::map<std::string, std::vector<double>> stageTimes;
   const std::vector<std::string> order = { "MLAA", "Gaussian", "Gaussian-MT", "DeepCopy", "memcpy" };
   for (int threads : threadCounts)
   {
@@ -230,6 +260,18 @@ int main(int argc, char* argv[])
           sink = sink + buffer[bytes / 2];
         },
         {} },
+      { "MLAA-stages",
+        [&]() {
+          vtkMLAAStages::StageTimes times;
+          switch (image->GetScalarType())
+          {
+            vtkTemplateMacro(RunStages<VTK_TT>(image, mlaa, stagesOutput, stageBuffers, times));
+          }
+          stageTimes["features+edges"].push_back(1e3 * times.FeaturesAndEdges);
+          stageTimes["weights"].push_back(1e3 * times.BlendingWeights);
+          stageTimes["blending"].push_back(1e3 * times.Blending);
+        },
+        {} },
     };
     for (int w = 0; w < warmup; ++w)
     {
@@ -238,6 +280,7 @@ int main(int argc, char* argv[])
         op.Run();
       }
     }
+    stageTimes.clear();
     // Interleaved: load changes on a shared machine hit every operation alike.
     for (int r = 0; r < repetitions; ++r)
     {
@@ -262,6 +305,16 @@ int main(int argc, char* argv[])
                 << mlaaBenchmark::Quantile(op.Times, 0.0) << std::setw(10)
                 << mlaaBenchmark::Quantile(op.Times, 0.9) << std::defaultfloat << "\n";
     }
+    // The stages, run directly into a preallocated output (no pipeline, no allocation).
+    const double gaussian = row.Median["Gaussian"];
+    std::cout << "  stages of MLAA-stages (median ms, and / Gaussian):";
+    for (const auto& name : { "features+edges", "weights", "blending" })
+    {
+      const double m = mlaaBenchmark::Median(stageTimes[name]);
+      std::cout << "  " << name << " " << std::fixed << std::setprecision(2) << m << " ("
+                << m / gaussian << ")" << std::defaultfloat;
+    }
+    std::cout << "\n";
     rows.push_back(row);
   }
 

@@ -35,6 +35,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -244,11 +245,13 @@ void PrintUsage(std::ostream& os)
   }
 
   text.str("");
-  text << "For floating-point images: the values taken as 0 and 1 by edge detection, and when "
-          "writing to an integer format. Integer images always use the range of their type. "
-          "Default: "
-       << valueRange[0] << " " << valueRange[1] << ".";
-  option("--value-range LO HI", text);
+  text << "The values taken as 0 and 1 by edge detection (and, for floating-point images, when "
+          "writing to an integer format), for every pixel type. Default: the range of the "
+          "pixel type for integer images (0 to 255, 0 to 65535), "
+       << valueRange[0] << " " << valueRange[1]
+       << " for floating point. 'auto': the image's own smallest and largest value, for data "
+          "that uses part of its type (10-, 12- or 14-bit values in 16-bit files).";
+  option("--value-range LO HI|auto", text);
 
   text.str("");
   text << "Write the area texture of section 4.3.3 (Figure 4.2) to OUTPUT instead, for cells "
@@ -277,12 +280,22 @@ void PrintUsage(std::ostream& os)
 //------------------------------------------------------------------------------
 // Command line
 
+// Where the value range comes from: vtkImageMLAA's default for the image's type, --value-range
+// LO HI, or --value-range auto (the image's own minimum and maximum).
+enum ValueRangeModes
+{
+  ValueRangeDefault = 0,
+  ValueRangeGiven = 1,
+  ValueRangeAuto = 2
+};
+
 struct CommandLine
 {
   bool Help = false;
   vtkNew<vtkMLAAOptions> Options;
   std::string DepthImage;
-  double ValueRange[2] = { 0.0, 1.0 };
+  double ValueRange[2] = { 0.0, 1.0 }; // for floating-point images, unless given or measured
+  int ValueRangeMode = 0;               // ValueRangeDefault, ValueRangeGiven or ValueRangeAuto
   int AreaTextureCellSize = 0;            // 0: antialias INPUT
   std::vector<std::string> FilterOptions; // the options given that configure the filter
   std::vector<std::string> Files;
@@ -476,16 +489,24 @@ void ParseCommandLine(const std::vector<std::string>& args, CommandLine& cl)
     }
     else if (name == "--value-range")
     {
+      if ((hasInlineValue && inlineValue == "auto") ||
+        (!hasInlineValue && i + 1 < args.size() && args[i + 1] == "auto"))
+      {
+        i += hasInlineValue ? 0 : 1;
+        cl.ValueRangeMode = ValueRangeAuto;
+        continue;
+      }
       const std::vector<std::string> texts = takeValues(2);
       double range[2];
       if (!ParseDouble(texts[0], range[0]) || !ParseDouble(texts[1], range[1]) ||
         !(range[0] < range[1]))
       {
-        throw UsageError(
-          "--value-range: '" + texts[0] + " " + texts[1] + "' is not two finite numbers LO < HI");
+        throw UsageError("--value-range: '" + texts[0] + " " + texts[1] +
+          "' is neither two finite numbers LO < HI nor 'auto'");
       }
       cl.ValueRange[0] = range[0];
       cl.ValueRange[1] = range[1];
+      cl.ValueRangeMode = ValueRangeGiven;
     }
     else if (name == "--area-texture")
     {
@@ -665,6 +686,32 @@ void WriteAreaTexture(int cellSize, const std::string& path)
   }
 }
 
+// --value-range auto: the smallest and largest finite value of any channel (alpha included) of
+// the image. False, leaving `range` alone, when there is no finite value or all are equal.
+bool MeasureValueRange(vtkImageData* image, double range[2])
+{
+  vtkDataArray* scalars = image->GetPointData()->GetScalars();
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = -lo;
+  for (int k = 0; k < scalars->GetNumberOfComponents(); ++k)
+  {
+    double r[2];
+    scalars->GetFiniteRange(r, k);
+    if (r[0] <= r[1])
+    {
+      lo = std::min(lo, r[0]);
+      hi = std::max(hi, r[1]);
+    }
+  }
+  if (!(lo < hi))
+  {
+    return false;
+  }
+  range[0] = lo;
+  range[1] = hi;
+  return true;
+}
+
 void Antialias(const CommandLine& cl)
 {
   const std::string& inputPath = cl.Files[0];
@@ -677,7 +724,15 @@ void Antialias(const CommandLine& cl)
 
   vtkNew<vtkImageMLAA> filter;
   filter->SetOptions(cl.Options);
-  filter->SetValueRange(cl.ValueRange[0], cl.ValueRange[1]);
+  double valueRange[2] = { cl.ValueRange[0], cl.ValueRange[1] };
+  if (cl.ValueRangeMode == ValueRangeAuto && MeasureValueRange(input.Image, valueRange))
+  {
+    filter->SetValueRange(valueRange);
+  }
+  else if (cl.ValueRangeMode == ValueRangeGiven)
+  {
+    filter->SetValueRange(valueRange);
+  }
   filter->SetInputData(input.Image);
 
   mlaa::ImageFile depth;
@@ -738,7 +793,7 @@ void Antialias(const CommandLine& cl)
     pixelType = OIIO::TypeDesc::UINT8;
   }
   const std::string note =
-    mlaa::WriteImageFile(result, outputPath, description, pixelType, cl.ValueRange);
+    mlaa::WriteImageFile(result, outputPath, description, pixelType, valueRange);
   if (!note.empty())
   {
     std::cerr << "mlaa: warning: " << note << std::endl;

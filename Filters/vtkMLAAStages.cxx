@@ -1,0 +1,670 @@
+#include "vtkMLAAStages.h"
+
+#include "vtkMLAAAreaTexture.h"
+#include "vtkMLAAOptions.h"
+#include "vtkSMPTools.h"
+
+#include <array>
+#include <memory>
+
+namespace vtkMLAAStages
+{
+//------------------------------------------------------------------------------
+Halo ComputeHalo(vtkMLAAOptions* options)
+{
+  Halo halo;
+  const int steps = options->GetMaxSearchSteps();
+  halo.Blending = 1;
+  halo.Search = 2 * steps + (options->GetDiagonalDetection() ? 3 : 1);
+  halo.Edges = options->GetLocalContrastFactor() > 0.0 ? 2 : 0;
+  return halo;
+}
+
+//------------------------------------------------------------------------------
+Progress::Progress(
+  std::function<void(double)> report, std::function<bool()> aborted, double totalRows)
+  : Report(std::move(report))
+  , AbortQuery(std::move(aborted))
+  , Total(totalRows > 0 ? totalRows : 1.0)
+  , Owner(std::this_thread::get_id())
+{
+}
+
+Progress::Progress()
+  : Owner(std::this_thread::get_id())
+{
+}
+
+void Progress::RowsDone(double rows)
+{
+  double done = this->Done.load(std::memory_order_relaxed);
+  while (!this->Done.compare_exchange_weak(done, done + rows, std::memory_order_relaxed))
+  {
+  }
+  if (std::this_thread::get_id() != this->Owner)
+  {
+    return;
+  }
+  const double fraction = std::min(1.0, (done + rows) / this->Total);
+  if (this->Report && fraction - this->LastReported >= 0.01)
+  {
+    this->LastReported = fraction;
+    this->Report(fraction);
+  }
+  this->CheckAbort();
+}
+
+bool Progress::CheckAbort()
+{
+  if (std::this_thread::get_id() == this->Owner && this->AbortQuery && this->AbortQuery())
+  {
+    this->AbortFlag.store(true, std::memory_order_relaxed);
+  }
+  return this->Aborted();
+}
+
+//------------------------------------------------------------------------------
+FeatureLayout MakeFeatureLayout(int mode, int components)
+{
+  FeatureLayout layout;
+  layout.Mode = mode;
+  layout.Components = components;
+  layout.HasAlpha = components == 2 || components == 4;
+  layout.Count = mode == vtkMLAAOptions::COLOR ? components : 1 + (layout.HasAlpha ? 1 : 0);
+  return layout;
+}
+
+//------------------------------------------------------------------------------
+void EdgesBuffer::Allocate(const Rect& extent)
+{
+  this->Extent = extent;
+  // Every entry is written by DetectEdges.
+  this->Data.Reserve(extent.Empty() ? 0 : 2 * static_cast<size_t>(extent.Width()) * extent.Height());
+}
+
+void WeightsBuffer::Allocate(const Rect& extent)
+{
+  this->Extent = extent;
+  // Every entry is written by ComputeBlendingWeights.
+  this->Data.Reserve(extent.Empty() ? 0 : 4 * static_cast<size_t>(extent.Width()) * extent.Height());
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+// The contrast across the left and the top boundary of a pixel (0: not an edge).
+template <typename Acc>
+struct Boundary
+{
+  Acc Left;
+  Acc Top;
+};
+
+// The contrasts of rows and the edgels that local contrast adaptation keeps, for a band of rows.
+template <typename Acc>
+class EdgeDetector
+{
+public:
+  EdgeDetector(int features, const EdgeSettings& settings)
+    : F(features)
+    , Threshold(static_cast<Acc>(settings.Threshold))
+    , Factor(static_cast<Acc>(settings.LocalContrastFactor))
+  {
+  }
+
+  // The contrast across a boundary: the largest difference of a feature, if it is at least the
+  // threshold (and more than nothing, so that a zero threshold means "any difference"), else 0.
+  // NaN differences are never edges. FixedF is the number of features when known at compile
+  // time (the common single-feature case), else 0.
+  template <int FixedF>
+  Acc Contrast(const Acc* a, const Acc* b) const
+  {
+    const int features = FixedF > 0 ? FixedF : this->F;
+    Acc contrast = 0;
+    for (int k = 0; k < features; ++k)
+    {
+      const Acc d = std::abs(a[k] - b[k]);
+      if (d >= this->Threshold && d > contrast)
+      {
+        contrast = d;
+      }
+    }
+    return contrast;
+  }
+
+  // The contrasts of one row of w pixels with features f, and the row above with features g
+  // (null where there is no row above: no top edges). b[-1] and b[w] are the zero ring.
+  template <int FixedF>
+  void RowContrasts(const Acc* f, const Acc* g, Boundary<Acc>* b, int w) const
+  {
+    const int features = FixedF > 0 ? FixedF : this->F;
+    b[-1] = b[w] = Boundary<Acc>{ 0, 0 };
+    b[0].Left = Acc(0);
+    for (int x = 1; x < w; ++x)
+    {
+      b[x].Left = this->Contrast<FixedF>(f + x * features, f + (x - 1) * features);
+    }
+    for (int x = 0; x < w; ++x)
+    {
+      b[x].Top = g ? this->Contrast<FixedF>(f + x * features, g + x * features) : Acc(0);
+    }
+  }
+
+  void Contrasts(const Acc* f, const Acc* g, Boundary<Acc>* b, int w) const
+  {
+    if (this->F == 1)
+    {
+      this->RowContrasts<1>(f, g, b, w);
+    }
+    else
+    {
+      this->RowContrasts<0>(f, g, b, w);
+    }
+  }
+
+  // The edgels of one row that local contrast adaptation (vtkMLAAOptions::LocalContrastFactor)
+  // keeps, from the contrasts of the row (b) and of the rows below and above it: an edge whose
+  // contrast, times the factor, is below the contrast of one of the six other boundaries of the
+  // two pixels it separates is dropped.
+  void KeepEdgels(const Boundary<Acc>* below, const Boundary<Acc>* b,
+    const Boundary<Acc>* above, unsigned char* edges, int w) const
+  {
+    const Acc factor = this->Factor;
+    for (int x = 0; x < w; ++x, edges += 2)
+    {
+      const Acc left = b[x].Left;
+      const Acc top = b[x].Top;
+      if (!(left > Acc(0)) && !(top > Acc(0)))
+      {
+        edges[0] = edges[1] = 0;
+        continue;
+      }
+      edges[0] = (left > Acc(0) &&
+                   (factor == Acc(0) ||
+                     factor * left >= std::max({ b[x - 1].Left, b[x + 1].Left, b[x - 1].Top, top,
+                                        below[x - 1].Top, below[x].Top })))
+        ? 255
+        : 0;
+      edges[1] = (top > Acc(0) &&
+                   (factor == Acc(0) ||
+                     factor * top >= std::max({ below[x].Top, above[x].Top, left, b[x + 1].Left,
+                                       above[x].Left, above[x + 1].Left })))
+        ? 255
+        : 0;
+    }
+  }
+
+private:
+  int F;
+  Acc Threshold;
+  Acc Factor;
+};
+}
+
+//------------------------------------------------------------------------------
+// Section 4.2: the contrast across every boundary (0 where it is not an edge), then the edgels
+// that local contrast adaptation keeps. Each task takes a band of rows and computes the
+// contrasts of its rows and of the rows just below and above it (which adaptation reads) from
+// the features of those rows, so no full-size buffer but the edges is needed.
+template <typename Acc>
+void DetectEdges(const std::function<void(int, Acc*)>& readRow, int features,
+  const EdgeSettings& settings, EdgesBuffer& edges, Progress& progress)
+{
+  const Rect r = edges.Extent;
+  if (r.Empty())
+  {
+    return;
+  }
+  const int w = r.Width();
+  const int h = r.Height();
+  const EdgeDetector<Acc> detector(features, settings);
+  vtkSMPTools::For(0, h, RowsPerTask, [&](vtkIdType begin, vtkIdType end) {
+    if (progress.Aborted())
+    {
+      return;
+    }
+    // Contrast rows begin - 1 .. end (index + 1 - begin in `band`), each with a zero ring.
+    const int rows = static_cast<int>(end - begin) + 2;
+    const size_t stride = static_cast<size_t>(w) + 2;
+    std::unique_ptr<Boundary<Acc>[]> band(new Boundary<Acc>[stride * rows]);
+    auto contrastRow = [&](int i) { return band.get() + stride * (i + 1 - begin) + 1; };
+    std::vector<Acc> current(static_cast<size_t>(w) * features);
+    std::vector<Acc> above(current.size());
+    const int first = std::max(0, static_cast<int>(begin) - 1);
+    const int last = std::min(h - 1, static_cast<int>(end));
+    for (int i = static_cast<int>(begin) - 1; i <= static_cast<int>(end); ++i)
+    {
+      if (i < first || i > last)
+      {
+        // Outside the extent: no boundaries.
+        Boundary<Acc>* b = contrastRow(i);
+        std::fill(b - 1, b + w + 1, Boundary<Acc>{ 0, 0 });
+      }
+    }
+    readRow(r.Y0 + first, current.data());
+    for (int i = first; i <= last; ++i)
+    {
+      // The top row of the extent has no top edge; the top row of a piece has one that is
+      // never read (the padding covers every read), so it is left out.
+      const bool hasAbove = i + 1 < h;
+      if (hasAbove)
+      {
+        readRow(r.Y0 + i + 1, above.data());
+      }
+      detector.Contrasts(current.data(), hasAbove ? above.data() : nullptr, contrastRow(i), w);
+      std::swap(current, above);
+    }
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      const int row = static_cast<int>(i);
+      detector.KeepEdgels(contrastRow(row - 1), contrastRow(row), contrastRow(row + 1),
+        edges.At(r.X0, r.Y0 + row), w);
+    }
+    progress.RowsDone(static_cast<double>(end - begin));
+  });
+}
+
+template VTKFILTERSMLAA_EXPORT void DetectEdges<float>(const std::function<void(int, float*)>&,
+  int, const EdgeSettings&, EdgesBuffer&, Progress&);
+template VTKFILTERSMLAA_EXPORT void DetectEdges<double>(const std::function<void(int, double*)>&,
+  int, const EdgeSettings&, EdgesBuffer&, Progress&);
+
+//------------------------------------------------------------------------------
+namespace
+{
+// An area table quantised to 8 bits: blending weights are stored as 8-bit values, as in the
+// chapter's RGBA8 blending-weights texture, so the CPU filter and the GPU pass use the same
+// weights.
+std::vector<unsigned char> Quantised(const std::vector<float>& table)
+{
+  std::vector<unsigned char> quantised(table.size());
+  for (size_t i = 0; i < table.size(); ++i)
+  {
+    quantised[i] = static_cast<unsigned char>(std::nearbyint(table[i] * 255.0f));
+  }
+  return quantised;
+}
+}
+
+void MakeWeightSettings(vtkMLAAOptions* options, WeightSettings& settings)
+{
+  const int maxDistance = options->GetMaxDistance();
+  settings.SearchSteps = options->GetMaxSearchSteps();
+  settings.Diagonals = options->GetDiagonalDetection();
+  settings.CellSize = maxDistance + 1;
+  settings.AreaSize = vtkMLAAAreaTexture::NumberOfCodes * settings.CellSize;
+  settings.DiagonalAreaSize = vtkMLAAAreaTexture::NumberOfDiagonalCodes * settings.CellSize;
+  settings.Area = Quantised(*vtkMLAAAreaTexture::GetSharedTable(maxDistance));
+  settings.DiagonalArea = settings.Diagonals
+    ? Quantised(*vtkMLAAAreaTexture::GetSharedDiagonalTable(maxDistance))
+    : std::vector<unsigned char>();
+}
+
+const float* WeightValues()
+{
+  static const std::array<float, 256> values = [] {
+    std::array<float, 256> v{};
+    for (int i = 0; i < 256; ++i)
+    {
+      v[i] = static_cast<float>(i) / 255.0f;
+    }
+    return v;
+  }();
+  return values.data();
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+// Section 4.3: the blending weights of one pixel from the edges around it.
+class WeightsComputer
+{
+public:
+  WeightsComputer(const EdgesBuffer& edges, const Rect& whole, const WeightSettings& settings)
+    : E(edges)
+    , R(edges.Extent)
+    , Whole(whole)
+    , S(settings)
+  {
+  }
+
+  // The four weights of a pixel with edgels (see WeightsBuffer). With DiagonalDetection, an
+  // edgel that is part of a 45-degree staircase takes its weights from the diagonal line instead
+  // (ComputeDiagonalWeights).
+  void Compute(int x, int y, unsigned char* w) const
+  {
+    w[0] = w[1] = w[2] = w[3] = 0;
+    bool top = this->E.Top(x, y);
+    bool left = this->E.Left(x, y);
+    if (this->S.Diagonals)
+    {
+      this->ComputeDiagonalWeights(x, y, top, left, w);
+    }
+    if (top)
+    {
+      // A horizontal line: its ends lie to the left and to the right.
+      const int leftEnd = this->SearchTopEdges(x, y, -1);
+      const int rightEnd = this->SearchTopEdges(x, y, +1);
+      const int e1 = this->CrossingLeftEdges(x - leftEnd, y, y + 1);
+      const int e2 = this->CrossingLeftEdges(x + rightEnd + 1, y, y + 1);
+      this->LookUpArea(e1, e2, leftEnd, rightEnd, w);
+    }
+    if (left)
+    {
+      // A vertical line: its first end is the upper one.
+      const int up = this->SearchLeftEdges(x, y, +1);
+      const int down = this->SearchLeftEdges(x, y, -1);
+      const int e1 = this->CrossingTopEdges(x, x - 1, y + up);
+      const int e2 = this->CrossingTopEdges(x, x - 1, y - down - 1);
+      this->LookUpArea(e1, e2, up, down, w + 2);
+    }
+  }
+
+private:
+  // The edgels at (x, y) clamped to the available pixels, as a GPU reads a texture with
+  // clamp-to-edge.
+  const unsigned char* Clamped(int x, int y) const
+  {
+    return this->E.At(std::min(std::max(x, this->R.X0), this->R.X1),
+      std::min(std::max(y, this->R.Y0), this->R.Y1));
+  }
+  int TopAt(int x, int y) const { return this->Clamped(x, y)[1] ? 1 : 0; }
+  int LeftAt(int x, int y) const { return this->Clamped(x, y)[0] ? 1 : 0; }
+
+  // Section 4.3.1: distance from (x, y) to the end of its line of top edgels in direction dx
+  // (-1 left, +1 right), or of left edgels in direction dy (-1 down, +1 up). Each step looks at
+  // the next two pixels along the line, as the GPU does with two bilinear fetches:
+  // - the two edgels along the line (weighted 3:1, so that each can be told apart);
+  // - the crossing edgels (perpendicular ones, on either side of the line) at the boundary
+  //   before the first pixel and at the boundary between the two.
+  // The line ends before the first pixel without an edgel, or at the first boundary with a
+  // crossing edgel. Stopping at crossing edges (which the chapter's search does not, section
+  // 4.3.1 and 4.6) keeps the top and bottom outlines of one-pixel-wide lines apart.
+  int SearchTopEdges(int x, int y, int dx) const
+  {
+    for (int i = 0; i < this->S.SearchSteps; ++i)
+    {
+      const int first = x + dx * (2 * i + 1);
+      const int second = first + dx;
+      // Left edgels of the pixels right of the two boundaries, on this row and the one above.
+      const int nearOwner = std::max(first, first - dx);
+      const int midOwner = std::max(first, second);
+      if (this->LeftAt(nearOwner, y) || this->LeftAt(nearOwner, y + 1) || !this->TopAt(first, y))
+      {
+        return 2 * i;
+      }
+      if (this->LeftAt(midOwner, y) || this->LeftAt(midOwner, y + 1) || !this->TopAt(second, y))
+      {
+        return 2 * i + 1;
+      }
+    }
+    return 2 * this->S.SearchSteps;
+  }
+  int SearchLeftEdges(int x, int y, int dy) const
+  {
+    for (int i = 0; i < this->S.SearchSteps; ++i)
+    {
+      const int first = y + dy * (2 * i + 1);
+      const int second = first + dy;
+      // Top edgels of the pixels below the two boundaries, in this column and the one left.
+      const int nearOwner = std::min(first, first - dy);
+      const int midOwner = std::min(first, second);
+      if (this->TopAt(x, nearOwner) || this->TopAt(x - 1, nearOwner) || !this->LeftAt(x, first))
+      {
+        return 2 * i;
+      }
+      if (this->TopAt(x, midOwner) || this->TopAt(x - 1, midOwner) || !this->LeftAt(x, second))
+      {
+        return 2 * i + 1;
+      }
+    }
+    return 2 * this->S.SearchSteps;
+  }
+
+  // Section 4.3.2: the crossing-edge code at an end of a line, 3 * (edgel on the owning pixel's
+  // side) + (edgel on the opposite side), as the bilinear fetch a quarter pixel off the edge
+  // reads it. Ends outside the image have no crossing edge.
+  int CrossingLeftEdges(int x, int ownY, int oppositeY) const
+  {
+    if (x < this->Whole.X0 || x > this->Whole.X1)
+    {
+      return 0;
+    }
+    return 3 * this->LeftAt(x, ownY) + this->LeftAt(x, oppositeY);
+  }
+  int CrossingTopEdges(int ownX, int oppositeX, int y) const
+  {
+    if (y < this->Whole.Y0 || y > this->Whole.Y1)
+    {
+      return 0;
+    }
+    return 3 * this->TopAt(ownX, y) + this->TopAt(oppositeX, y);
+  }
+
+  // Edgels for the diagonal search: none outside the image.
+  int DiagonalTopAt(int x, int y) const
+  {
+    return this->Whole.Contains(x, y) ? this->TopAt(x, y) : 0;
+  }
+  int DiagonalLeftAt(int x, int y) const
+  {
+    return this->Whole.Contains(x, y) ? this->LeftAt(x, y) : 0;
+  }
+  // A unit of a rising staircase: a pixel with both edgels. A unit of a falling one, named by its
+  // pixel q: q's top edgel and its right neighbour's left edgel.
+  bool IsRisingUnit(int x, int y) const
+  {
+    return this->DiagonalTopAt(x, y) && this->DiagonalLeftAt(x, y);
+  }
+  bool IsFallingUnit(int x, int y) const
+  {
+    return this->DiagonalTopAt(x, y) && this->DiagonalLeftAt(x + 1, y);
+  }
+
+  // Number of further units of the staircase through the unit at (x, y) in direction
+  // (dx, dy), at most the maximum distance; `reachedEnd` tells whether the staircase ended
+  // within it.
+  template <typename IsUnit>
+  int SearchDiagonal(int x, int y, int dx, int dy, IsUnit isUnit, bool& reachedEnd) const
+  {
+    const int maxDistance = this->S.CellSize - 1;
+    for (int k = 1; k <= maxDistance; ++k)
+    {
+      if (!isUnit(x + k * dx, y + k * dy))
+      {
+        reachedEnd = true;
+        return k - 1;
+      }
+    }
+    reachedEnd = false;
+    return maxDistance;
+  }
+
+  // End code of vtkMLAAAreaTexture::ComputeDiagonalAreas from what the staircase does past its
+  // end: a run along x ("flatter") or along y ("steeper"), each of which shifts the line into or
+  // out of the unit's pixel depending on the end and on the slope. Both or neither: nothing.
+  static int DiagonalEndCode(bool reachedEnd, bool flatter, bool steeper, int flatterCode)
+  {
+    if (!reachedEnd || flatter == steeper)
+    {
+      return 0;
+    }
+    return flatter ? flatterCode : 3 - flatterCode;
+  }
+
+  // Weights of the edgels of (x, y) that belong to a staircase of at least
+  // vtkMLAAOptions::MinimumDiagonalLength units; `top` and `left` are cleared for the edgels
+  // handled here, which the orthogonal search then skips.
+  //
+  // Rising (up and to the right): units (x0 + k, y0 + k); the unit's pixel takes the colour above
+  // and left of it, the pixels above and left of it take its colour. The first end is the
+  // lower-left one.
+  // Falling (down and to the right): units q = (x0 + k, y0 - k) with r = q + (1, 0); q takes the
+  // colour above it (r of the unit before) and right of it (r); r takes q's colour. The first end
+  // is the upper-left one.
+  void ComputeDiagonalWeights(int x, int y, bool& top, bool& left, unsigned char* w) const
+  {
+    constexpr int minLength = vtkMLAAOptions::MinimumDiagonalLength;
+    constexpr int Out = 1;
+    constexpr int In = 2;
+    if (top && left)
+    {
+      auto isUnit = [this](int u, int v) { return this->IsRisingUnit(u, v); };
+      bool end1, end2;
+      const int d1 = this->SearchDiagonal(x, y, -1, -1, isUnit, end1);
+      const int d2 = this->SearchDiagonal(x, y, +1, +1, isUnit, end2);
+      if (d1 + d2 + 1 >= minLength)
+      {
+        const int x1 = x - d1, y1 = y - d1; // first unit
+        const int x2 = x + d2, y2 = y + d2; // last unit
+        const int e1 = DiagonalEndCode(end1, this->DiagonalTopAt(x1 - 1, y1 - 1) != 0,
+          this->DiagonalLeftAt(x1, y1 - 1) != 0, Out);
+        const int e2 = DiagonalEndCode(end2, this->DiagonalTopAt(x2 + 1, y2) != 0,
+          this->DiagonalLeftAt(x2 + 1, y2 + 1) != 0, In);
+        const unsigned char* a = this->DiagonalArea(e1, e2, d1, d2);
+        w[0] = w[2] = a[0];
+        w[1] = a[2]; // the pixel above lies after this unit along the line
+        w[3] = a[1]; // the pixel to the left lies before it
+        top = left = false;
+        return;
+      }
+    }
+    auto isFalling = [this](int u, int v) { return this->IsFallingUnit(u, v); };
+    // Falling staircases: this pixel as q (its top edgel) or as r (its left edgel).
+    for (int role = 0; role < 2; ++role)
+    {
+      const bool asQ = role == 0;
+      if (!(asQ ? top : left))
+      {
+        continue;
+      }
+      const int qx = asQ ? x : x - 1;
+      if (!this->IsFallingUnit(qx, y))
+      {
+        continue;
+      }
+      bool end1, end2;
+      const int d1 = this->SearchDiagonal(qx, y, -1, +1, isFalling, end1);
+      const int d2 = this->SearchDiagonal(qx, y, +1, -1, isFalling, end2);
+      if (d1 + d2 + 1 < minLength)
+      {
+        continue;
+      }
+      const int x1 = qx - d1, y1 = y + d1; // first unit (upper left)
+      const int x2 = qx + d2, y2 = y - d2; // last unit (lower right)
+      const int e1 = DiagonalEndCode(
+        end1, this->DiagonalTopAt(x1 - 1, y1) != 0, this->DiagonalLeftAt(x1, y1 + 1) != 0, In);
+      const int e2 = DiagonalEndCode(end2, this->DiagonalTopAt(x2 + 1, y2 - 1) != 0,
+        this->DiagonalLeftAt(x2 + 1, y2 - 1) != 0, Out);
+      const unsigned char* a = this->DiagonalArea(e1, e2, d1, d2);
+      if (asQ)
+      {
+        w[0] = a[0]; // q takes the colour above it
+        w[1] = a[1]; // the pixel above q is the r of the unit before
+        top = false;
+      }
+      else
+      {
+        w[2] = a[2]; // r lies after q along the line
+        w[3] = a[0]; // q takes r's colour
+        left = false;
+      }
+    }
+  }
+
+  const unsigned char* DiagonalArea(int e1, int e2, int d1, int d2) const
+  {
+    const int d = this->S.CellSize;
+    const size_t texel = static_cast<size_t>(d * e2 + d2) * this->S.DiagonalAreaSize + (d * e1 + d1);
+    return this->S.DiagonalArea.data() + 3 * texel;
+  }
+
+  void LookUpArea(int e1, int e2, int d1, int d2, unsigned char* w) const
+  {
+    const int d = this->S.CellSize;
+    const size_t texel = static_cast<size_t>(d * e2 + d2) * this->S.AreaSize + (d * e1 + d1);
+    w[0] = this->S.Area[2 * texel];
+    w[1] = this->S.Area[2 * texel + 1];
+  }
+
+  const EdgesBuffer& E;
+  const Rect R;
+  const Rect Whole;
+  const WeightSettings& S;
+};
+}
+
+void ComputeBlendingWeights(const EdgesBuffer& edges, const Rect& whole,
+  const WeightSettings& settings, WeightsBuffer& weights, Progress& progress)
+{
+  const Rect r = weights.Extent;
+  if (r.Empty())
+  {
+    return;
+  }
+  const WeightsComputer computer(edges, whole, settings);
+  vtkSMPTools::For(0, r.Height(), RowsPerTask, [&](vtkIdType begin, vtkIdType end) {
+    if (progress.Aborted())
+    {
+      return;
+    }
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      const int y = r.Y0 + static_cast<int>(i);
+      const unsigned char* e = edges.At(r.X0, y);
+      unsigned char* w = weights.At(r.X0, y);
+      for (int x = r.X0; x <= r.X1; ++x, e += 2, w += 4)
+      {
+        if (e[0] | e[1])
+        {
+          computer.Compute(x, y, w);
+        }
+        else
+        {
+          w[0] = w[1] = w[2] = w[3] = 0;
+        }
+      }
+    }
+    progress.RowsDone(static_cast<double>(end - begin));
+  });
+}
+
+//------------------------------------------------------------------------------
+void WriteDebugImage(int debugOutput, const EdgesBuffer& edges, const WeightsBuffer& weights,
+  const Rect& out, unsigned char* rgba)
+{
+  for (int y = out.Y0; y <= out.Y1; ++y)
+  {
+    unsigned char* o = rgba + static_cast<size_t>(y - out.Y0) * out.Width() * 4;
+    for (int x = out.X0; x <= out.X1; ++x, o += 4)
+    {
+      if (debugOutput == vtkMLAAOptions::EDGES)
+      {
+        const unsigned char* e = edges.At(x, y);
+        o[0] = e[0];
+        o[1] = e[1];
+        o[2] = 0;
+        o[3] = 255;
+      }
+      else
+      {
+        const unsigned char* w = weights.At(x, y);
+        std::copy(w, w + 4, o);
+      }
+    }
+  }
+}
+//------------------------------------------------------------------------------
+void ConfigureSlice(vtkMLAAOptions* options, int components, double lo, double hi, SliceSetup& setup)
+{
+  setup.DebugOutput = options->GetDebugOutput();
+  setup.Layout = MakeFeatureLayout(options->GetEdgeDetection(), components);
+  setup.Edges.Threshold = options->GetThreshold();
+  setup.Edges.LocalContrastFactor = options->GetLocalContrastFactor();
+  MakeWeightSettings(options, setup.Weights);
+  setup.Dominant = options->GetDominantDirectionBlending();
+  setup.PremultipliedAlpha = options->GetPremultipliedAlpha();
+  setup.Lo = lo;
+  setup.Hi = hi;
+}
+}

@@ -1,0 +1,675 @@
+/**
+ * @file   vtkMLAAStages.h
+ * @brief  The CPU MLAA of vtkImageMLAA as the stages of the GPU pass (internal header).
+ *
+ * vtkImageMLAA runs, on each z slice, the same stages as vtkOpenGLMLAAPass runs as full-screen
+ * passes (Rendering/glsl/), each a small unit with its own buffer:
+ *
+ * | stage                  | reads                  | writes                              | GPU pass |
+ * |------------------------|------------------------|-------------------------------------|----------|
+ * | features (typed)       | the slice's pixels     | a few rows of normalised features   | (fetches in the edge shader) |
+ * | edges                  | features               | EdgesBuffer, 2 x 8 bit per pixel    | vtkMLAAEdgeDetectionFS |
+ * | blending weights       | edges, area tables     | WeightsBuffer, 4 x 8 bit per pixel  | vtkMLAABlendingWeightsFS |
+ * | neighbourhood blending (typed) | pixels, weights | the output slice                   | vtkMLAANeighborhoodBlendingFS |
+ *
+ * Only the features and the blending depend on the scalar type; the edges and weights buffers
+ * are laid out as the pass's RG8 edges and RGBA8 blending-weights textures, with the same 8-bit
+ * quantisation, so the two back ends compute the same numbers. Features are read row by row into
+ * per-task buffers (never a full-size copy of the image); the edges and weights buffers are the
+ * only full-size buffers besides the output.
+ *
+ * How far each stage reads beyond the pixels it produces (its halo) is derived from the options
+ * in one place, Halo (below); vtkImageMLAA pads its input request by Halo::Total().
+ *
+ * Rows and columns follow VTK's image layout: y grows towards the top of the displayed image,
+ * so "top" is the next row. All coordinates are those of the image's extent.
+ *
+ * This header is internal to MLAA::FiltersMLAA (the tests include it); it is not installed.
+ */
+
+#ifndef vtkMLAAStages_h
+#define vtkMLAAStages_h
+
+#include "vtkFiltersMLAAModule.h" // For export macro
+#include "vtkMLAAOptions.h"
+#include "vtkSMPTools.h"
+#include "vtkType.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <thread>
+#include <type_traits>
+#include <vector>
+
+class vtkMLAAOptions;
+
+namespace vtkMLAAStages
+{
+/** Rows per task of the stages' threaded loops. */
+constexpr int RowsPerTask = 32;
+
+//------------------------------------------------------------------------------
+/** A rectangle of pixels of one slice, bounds included. */
+struct Rect
+{
+  int X0 = 0, X1 = -1, Y0 = 0, Y1 = -1;
+  int Width() const { return this->X1 - this->X0 + 1; }
+  int Height() const { return this->Y1 - this->Y0 + 1; }
+  bool Empty() const { return this->X1 < this->X0 || this->Y1 < this->Y0; }
+  bool Contains(int x, int y) const
+  {
+    return x >= this->X0 && x <= this->X1 && y >= this->Y0 && y <= this->Y1;
+  }
+  Rect Intersect(const Rect& o) const
+  {
+    return { std::max(this->X0, o.X0), std::min(this->X1, o.X1), std::max(this->Y0, o.Y0),
+      std::min(this->Y1, o.Y1) };
+  }
+  Rect Grown(int by) const
+  {
+    return { this->X0 - by, this->X1 + by, this->Y0 - by, this->Y1 + by };
+  }
+};
+
+//------------------------------------------------------------------------------
+/**
+ * How far, in pixels along x and y, each stage reads beyond the pixels it produces, for given
+ * options. An output pixel depends on input pixels up to Total() away; vtkImageMLAA pads its
+ * input request by that much, which makes streamed results equal unstreamed ones.
+ * - Blending: 1. A pixel blends with its four neighbours, by its own weights and by those of
+ *   its right and lower neighbours.
+ * - Search: the blending weights of a pixel read edgels along its line up to 2 * MaxSearchSteps
+ *   pixels away and the crossing edge one further (section 4.3.1): 2 * MaxSearchSteps + 1. The
+ *   diagonal search follows up to 2 * MaxSearchSteps units and reads the edgels two pixels past
+ *   the last one: 2 * MaxSearchSteps + 3.
+ * - Edges: an edgel compares its two pixels, which the search reach above already counts; local
+ *   contrast adaptation also looks at the other boundaries of those pixels, one pixel further,
+ *   which is padded by 2.
+ */
+struct Halo
+{
+  int Blending = 1;
+  int Search = 17;
+  int Edges = 2;
+  int Total() const { return this->Blending + this->Search + this->Edges; }
+};
+VTKFILTERSMLAA_EXPORT Halo ComputeHalo(vtkMLAAOptions* options);
+
+//------------------------------------------------------------------------------
+/**
+ * Progress and cancellation of the stages' threaded loops. Rows are counted from every thread;
+ * the report callback (vtkAlgorithm::UpdateProgress) and the abort query (GetAbortExecute) are
+ * only called from the thread that created the object, between tasks, so observers of a
+ * ProgressEvent run where they expect to. Once aborted, the remaining tasks return at once.
+ */
+class VTKFILTERSMLAA_EXPORT Progress
+{
+public:
+  Progress(std::function<void(double)> report, std::function<bool()> aborted, double totalRows);
+  Progress();
+
+  /** Count rows as done; from the creating thread, report progress and poll for an abort. */
+  void RowsDone(double rows);
+  /** Whether the work was aborted (any thread). */
+  bool Aborted() const { return this->AbortFlag.load(std::memory_order_relaxed); }
+  /** Poll the abort query now (creating thread only). */
+  bool CheckAbort();
+
+private:
+  std::function<void(double)> Report;
+  std::function<bool()> AbortQuery;
+  double Total = 1.0;
+  std::atomic<double> Done{ 0.0 };
+  double LastReported = -1.0;
+  std::atomic<bool> AbortFlag{ false };
+  std::thread::id Owner;
+};
+
+//------------------------------------------------------------------------------
+// Stage 1: features (typed). The values compared across each pixel boundary, normalised so that
+// the value range of the image is [0, 1].
+
+/** What each pixel contributes to edge detection, from the options and the components. */
+struct FeatureLayout
+{
+  int Mode = vtkMLAAOptions::LUMA; // vtkMLAAOptions::EdgeDetectionModes
+  int Components = 3;              // of the image
+  bool HasAlpha = false;           // 2 or 4 components
+  int Count = 1;                   // features per pixel
+};
+VTKFILTERSMLAA_EXPORT FeatureLayout MakeFeatureLayout(int mode, int components);
+
+/**
+ * Edge detection of 8- and 16-bit and float images is done in float, as on the GPU; wider types
+ * use double.
+ */
+template <typename T>
+using AccumulatorType = typename std::conditional<(sizeof(T) <= 2 ||
+                                                    std::is_same<T, float>::value),
+  float, double>::type;
+
+/**
+ * The features of one row of `width` pixels at `p` (components interleaved), normalised as
+ * (value - lo) * inverseRange: luma (Rec. 709, section 4.2.1; the first component of grey
+ * images), every channel (COLOR, alpha included) or the depth (from `depth`, already
+ * normalised), then alpha. A pixel holding NaN or infinity gets NaN features, which are never
+ * an edge.
+ */
+template <typename T, typename Acc>
+void ReadFeatureRow(const T* p, int width, const FeatureLayout& layout, Acc lo, Acc inverseRange,
+  const double* depth, Acc* features)
+{
+  const int c = layout.Components;
+  const int count = layout.Count;
+  for (int x = 0; x < width; ++x, p += c, features += count)
+  {
+    if (std::is_floating_point<T>::value)
+    {
+      bool finite = true;
+      for (int k = 0; k < c; ++k)
+      {
+        finite = finite && std::isfinite(static_cast<double>(p[k]));
+      }
+      if (!finite)
+      {
+        std::fill(features, features + count, std::numeric_limits<Acc>::quiet_NaN());
+        continue;
+      }
+    }
+    int f = 0;
+    switch (layout.Mode)
+    {
+      case vtkMLAAOptions::COLOR:
+        for (int k = 0; k < c; ++k)
+        {
+          features[f++] = (static_cast<Acc>(p[k]) - lo) * inverseRange;
+        }
+        continue; // alpha is one of the channels
+      case vtkMLAAOptions::DEPTH:
+        features[f++] = static_cast<Acc>(depth[x]);
+        break;
+      default:
+        if (c >= 3)
+        {
+          features[f++] = Acc(0.2126) * ((static_cast<Acc>(p[0]) - lo) * inverseRange) +
+            Acc(0.7152) * ((static_cast<Acc>(p[1]) - lo) * inverseRange) +
+            Acc(0.0722) * ((static_cast<Acc>(p[2]) - lo) * inverseRange);
+        }
+        else
+        {
+          features[f++] = (static_cast<Acc>(p[0]) - lo) * inverseRange;
+        }
+        break;
+    }
+    if (layout.HasAlpha)
+    {
+      features[f] = (static_cast<Acc>(p[c - 1]) - lo) * inverseRange;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+/**
+ * Bytes that the stages write in full before reading them: allocated without being cleared, and
+ * kept when a later slice or update needs no more.
+ */
+class ByteBuffer
+{
+public:
+  void Reserve(size_t size)
+  {
+    if (size > this->Capacity)
+    {
+      this->Bytes.reset(new unsigned char[size]);
+      this->Capacity = size;
+    }
+    this->Size = size;
+  }
+  unsigned char* Get() { return this->Bytes.get(); }
+  const unsigned char* Get() const { return this->Bytes.get(); }
+  size_t GetSize() const { return this->Size; }
+  size_t GetCapacity() const { return this->Capacity; }
+  void Release()
+  {
+    this->Bytes.reset();
+    this->Capacity = this->Size = 0;
+  }
+
+private:
+  std::unique_ptr<unsigned char[]> Bytes;
+  size_t Capacity = 0;
+  size_t Size = 0;
+};
+
+//------------------------------------------------------------------------------
+// Stage 2: edges (section 4.2).
+
+/**
+ * The edges of a rectangle of pixels, laid out as the pass's RG8 edges texture: two bytes per
+ * pixel, [0] = 255 where the pixel has an edgel at its left boundary, [1] = 255 at its top
+ * boundary (towards the next row); 0 elsewhere.
+ */
+struct EdgesBuffer
+{
+  Rect Extent;
+  ByteBuffer Data;
+
+  void Allocate(const Rect& extent);
+  const unsigned char* At(int x, int y) const
+  {
+    return this->Data.Get() +
+      2 * (static_cast<size_t>(y - this->Extent.Y0) * this->Extent.Width() + (x - this->Extent.X0));
+  }
+  unsigned char* At(int x, int y)
+  {
+    return const_cast<unsigned char*>(static_cast<const EdgesBuffer*>(this)->At(x, y));
+  }
+  bool Left(int x, int y) const { return this->At(x, y)[0] != 0; }
+  bool Top(int x, int y) const { return this->At(x, y)[1] != 0; }
+  bool Any(int x, int y) const { return (this->At(x, y)[0] | this->At(x, y)[1]) != 0; }
+};
+
+/** Settings of edge detection, from vtkMLAAOptions. */
+struct EdgeSettings
+{
+  double Threshold = 0.1;
+  double LocalContrastFactor = 2.0; // 0: off
+};
+
+/**
+ * The edgels of every pixel of edges.Extent (already allocated), from the features that
+ * `readRow(y, features)` gives for each row y of it (edges.Extent.Width() pixels of
+ * layout.Count features). A boundary is an edge where the largest feature difference across it
+ * is at least the threshold (and more than 0); with local contrast adaptation, only if factor
+ * times that contrast is at least the contrast of every other boundary of its two pixels.
+ * Boundaries outside the extent are not edges. Acc is float or double (AccumulatorType).
+ */
+template <typename Acc>
+VTKFILTERSMLAA_EXPORT void DetectEdges(const std::function<void(int, Acc*)>& readRow, int features,
+  const EdgeSettings& settings, EdgesBuffer& edges, Progress& progress);
+
+//------------------------------------------------------------------------------
+// Stage 3: blending weights (section 4.3).
+
+/**
+ * The blending weights of a rectangle of pixels, laid out as the pass's RGBA8 blending-weights
+ * texture (8-bit, value / 255): [0] the weight with which the pixel takes the colour above it,
+ * [1] the pixel above takes this one's, [2] the pixel takes its left neighbour's, [3] the left
+ * neighbour takes this one's. [0] and [1] are non-zero only where the pixel has a top edgel,
+ * [2] and [3] only where it has a left edgel.
+ */
+struct WeightsBuffer
+{
+  Rect Extent;
+  ByteBuffer Data;
+
+  void Allocate(const Rect& extent);
+  const unsigned char* At(int x, int y) const
+  {
+    return this->Data.Get() +
+      4 * (static_cast<size_t>(y - this->Extent.Y0) * this->Extent.Width() + (x - this->Extent.X0));
+  }
+  unsigned char* At(int x, int y)
+  {
+    return const_cast<unsigned char*>(static_cast<const WeightsBuffer*>(this)->At(x, y));
+  }
+};
+
+/**
+ * The area tables of vtkMLAAAreaTexture for one maximum distance, quantised to 8 bits as the
+ * blending weights are stored (the pass's RGBA8 texture), and the search settings.
+ */
+struct WeightSettings
+{
+  int SearchSteps = 8;     // vtkMLAAOptions::MaxSearchSteps
+  bool Diagonals = true;   // vtkMLAAOptions::DiagonalDetection
+  int CellSize = 17;       // D = 2 * SearchSteps + 1
+  int AreaSize = 85;       // 5 D
+  int DiagonalAreaSize = 51; // 3 D
+  std::vector<unsigned char> Area;         // 2 per texel
+  std::vector<unsigned char> DiagonalArea; // 3 per texel; empty without diagonals
+};
+VTKFILTERSMLAA_EXPORT void MakeWeightSettings(vtkMLAAOptions* options, WeightSettings& settings);
+
+/**
+ * The blending weights of every pixel of weights.Extent (already allocated, within
+ * edges.Extent), from the edges. `whole` is the image: edgels are read clamped to edges.Extent,
+ * as a GPU clamps texture reads, and the image border is not a crossing edge.
+ */
+VTKFILTERSMLAA_EXPORT void ComputeBlendingWeights(const EdgesBuffer& edges, const Rect& whole,
+  const WeightSettings& settings, WeightsBuffer& weights, Progress& progress);
+
+//------------------------------------------------------------------------------
+// Stage 4: neighbourhood blending (section 4.4, typed).
+
+/** The 8-bit weights as the blending reads them: value / 255 in float. */
+VTKFILTERSMLAA_EXPORT const float* WeightValues();
+
+/** Settings of the blending, from vtkMLAAOptions and the image. */
+struct BlendSettings
+{
+  bool Dominant = true;          // vtkMLAAOptions::DominantDirectionBlending
+  bool StraightAlpha = false;    // alpha present and not premultiplied
+  double AlphaLo = 0.0;          // normalisation of the alpha channel
+  double AlphaInverseRange = 1.0;
+};
+
+template <typename T, typename Acc>
+T ConvertBlended(Acc v)
+{
+  if (std::is_floating_point<T>::value)
+  {
+    return static_cast<T>(v);
+  }
+  // Round to nearest and saturate, as a GPU stores a normalised value.
+  const Acc r = std::floor(v + Acc(0.5));
+  if (r <= static_cast<Acc>(std::numeric_limits<T>::lowest()))
+  {
+    return std::numeric_limits<T>::lowest();
+  }
+  if (r >= static_cast<Acc>(std::numeric_limits<T>::max()))
+  {
+    return std::numeric_limits<T>::max();
+  }
+  return static_cast<T>(r);
+}
+
+/**
+ * Row y of the output: each pixel of `out` (columns out.X0..X1) mixed with its four neighbours
+ * by the weights, c' = sum_k a_k ((1 - a_k) c + a_k c_k) / sum_k a_k, which for a single edge is
+ * equation 4.1; pixels without weights are copied. `pixel(x, y)` gives the input pixel (all
+ * components); only neighbours with a weight are read, and those lie within the weights' extent.
+ * With DominantDirectionBlending, a pixel on both a horizontal and a vertical line blends along
+ * the one with the larger weight only. With straight alpha, the colour channels are averaged
+ * weighted by alpha as well (premultiply, blend, divide by the blended alpha), so the colour of
+ * transparent pixels never leaks into their neighbours; where the alphas that take part are all
+ * equal, that changes nothing and the plain formula is used.
+ */
+template <typename T, typename Acc, typename PixelAt>
+void BlendRow(int y, const Rect& out, int components, const WeightsBuffer& weights,
+  const BlendSettings& settings, PixelAt pixel, T* output)
+{
+  const float* value = WeightValues();
+  const Rect& wr = weights.Extent;
+  const int c = components;
+  std::copy(pixel(out.X0, y), pixel(out.X0, y) + static_cast<size_t>(out.Width()) * c, output);
+  if (y < wr.Y0 || y > wr.Y1)
+  {
+    return;
+  }
+  const bool hasBelow = y - 1 >= wr.Y0;
+  const int x0 = std::max(out.X0, wr.X0);
+  const int x1 = std::min(out.X1, wr.X1);
+  const unsigned char* own = weights.At(x0, y);
+  const unsigned char* below = hasBelow ? weights.At(x0, y - 1) : nullptr;
+  for (int x = x0; x <= x1; ++x, own += 4, below = below ? below + 4 : nullptr)
+  {
+    const unsigned char fromBelow = below ? below[1] : 0;
+    const unsigned char fromRight = x < wr.X1 ? own[4 + 3] : 0;
+    if ((own[0] | own[2] | fromBelow | fromRight) == 0)
+    {
+      continue;
+    }
+    Acc a[4] = { static_cast<Acc>(value[own[0]]), static_cast<Acc>(value[fromBelow]),
+      static_cast<Acc>(value[own[2]]), static_cast<Acc>(value[fromRight]) };
+    if (settings.Dominant)
+    {
+      // DominantDirectionBlending: on a corner, only the line with the larger weight counts.
+      const Acc vertical = std::max(a[0], a[1]);
+      const Acc horizontal = std::max(a[2], a[3]);
+      if (vertical > horizontal)
+      {
+        a[2] = a[3] = Acc(0);
+      }
+      else if (horizontal > vertical)
+      {
+        a[0] = a[1] = Acc(0);
+      }
+    }
+    const Acc sum = a[0] + a[1] + a[2] + a[3];
+    if (!(sum > Acc(0)))
+    {
+      continue;
+    }
+    const T* p = pixel(x, y);
+    // Neighbours that are not blended in are never read (they may lie outside the input).
+    const T* neighbours[4] = { a[0] > Acc(0) ? pixel(x, y + 1) : p,
+      a[1] > Acc(0) ? pixel(x, y - 1) : p, a[2] > Acc(0) ? pixel(x - 1, y) : p,
+      a[3] > Acc(0) ? pixel(x + 1, y) : p };
+    T* q = output + static_cast<size_t>(x - out.X0) * c;
+    int first = 0; // the first channel blended by the plain formula
+    if (settings.StraightAlpha)
+    {
+      // Straight alpha: blend the colours premultiplied, unless all alphas taking part agree.
+      const Acc alpha = static_cast<Acc>(p[c - 1]);
+      bool equal = true;
+      for (int n = 0; n < 4; ++n)
+      {
+        equal = equal && (!(a[n] > Acc(0)) || static_cast<Acc>(neighbours[n][c - 1]) == alpha);
+      }
+      if (!equal)
+      {
+        first = c - 1;
+        auto coverage = [&settings, c](const T* px) {
+          const double v =
+            (static_cast<double>(px[c - 1]) - settings.AlphaLo) * settings.AlphaInverseRange;
+          return static_cast<Acc>(std::min(1.0, std::max(0.0, v)));
+        };
+        const Acc own = coverage(p);
+        Acc mixedAlpha = 0;
+        Acc mixed[3] = { 0, 0, 0 };
+        for (int n = 0; n < 4; ++n)
+        {
+          if (a[n] > Acc(0))
+          {
+            const Acc selfShare = a[n] * (Acc(1) - a[n]) * own;
+            const Acc otherShare = a[n] * a[n] * coverage(neighbours[n]);
+            mixedAlpha += selfShare + otherShare;
+            for (int k = 0; k < c - 1; ++k)
+            {
+              mixed[k] += selfShare * static_cast<Acc>(p[k]) +
+                otherShare * static_cast<Acc>(neighbours[n][k]);
+            }
+          }
+        }
+        if (mixedAlpha > Acc(0))
+        {
+          for (int k = 0; k < c - 1; ++k)
+          {
+            q[k] = ConvertBlended<T>(mixed[k] / mixedAlpha);
+          }
+        }
+        // else: everything that takes part is fully transparent; the colour stays.
+      }
+    }
+    for (int k = first; k < c; ++k)
+    {
+      const Acc v = static_cast<Acc>(p[k]);
+      Acc blended = 0;
+      for (int n = 0; n < 4; ++n)
+      {
+        if (a[n] > Acc(0))
+        {
+          blended += a[n] * ((Acc(1) - a[n]) * v + a[n] * static_cast<Acc>(neighbours[n][k]));
+        }
+      }
+      q[k] = ConvertBlended<T>(blended / sum);
+    }
+  }
+}
+
+/**
+ * One of the debug images of vtkMLAAOptions (8-bit RGBA, rows of out.Width() pixels) for the
+ * pixels of `out`: the edges or the blending weights.
+ */
+VTKFILTERSMLAA_EXPORT void WriteDebugImage(int debugOutput, const EdgesBuffer& edges,
+  const WeightsBuffer& weights, const Rect& out, unsigned char* rgba);
+
+//------------------------------------------------------------------------------
+// The stages on one slice.
+
+// Normalised depth values of one row of the depth image, for depth edges: floating-point depths
+// as they are (a z-buffer in [0, 1]), integer ones by the range of their type.
+template <typename T>
+void NormaliseDepthRow(const void* row, vtkIdType pixelStride, int width, double* out)
+{
+  double lo = 0.0;
+  double hi = 1.0;
+  if (!std::is_floating_point<T>::value)
+  {
+    lo = static_cast<double>(std::numeric_limits<T>::lowest());
+    hi = static_cast<double>(std::numeric_limits<T>::max());
+  }
+  const T* p = static_cast<const T*>(row);
+  for (int x = 0; x < width; ++x, p += pixelStride)
+  {
+    out[x] = (static_cast<double>(*p) - lo) / (hi - lo);
+  }
+}
+
+// The depth image of one slice, read row by row.
+struct DepthRows
+{
+  const char* Origin = nullptr; // the first available pixel of the slice
+  vtkIdType RowBytes = 0;
+  vtkIdType PixelStride = 0; // in values
+  void (*Normalise)(const void*, vtkIdType, int, double*) = nullptr;
+};
+
+/** Everything one z slice of any type needs. */
+struct SliceSetup
+{
+  Rect Whole;  // the image: reads beyond it are clamped to it, as GPU texture reads are
+  Rect Input;  // the pixels available (the requested extent, padded, within the input)
+  Rect Output; // the pixels to produce
+  int DebugOutput = vtkMLAAOptions::NO_DEBUG_OUTPUT;
+  FeatureLayout Layout;
+  EdgeSettings Edges;
+  WeightSettings Weights;
+  bool Dominant = true;
+  bool PremultipliedAlpha = false;
+  double Lo = 0.0; // normalisation: value -> (value - Lo) / (Hi - Lo)
+  double Hi = 1.0;
+};
+
+/** The full-size buffers of the stages, reused from slice to slice. */
+struct SliceBuffers
+{
+  EdgesBuffer Edges;
+  WeightsBuffer Weights;
+};
+
+/** Wall-clock seconds spent in each stage, summed over the slices run with it. */
+struct StageTimes
+{
+  double FeaturesAndEdges = 0.0; // features are read row by row inside edge detection
+  double BlendingWeights = 0.0;
+  double Blending = 0.0; // neighbourhood blending or the debug image
+};
+
+/**
+ * The four stages on one slice of an image of type T: `input` points at the first pixel of
+ * setup.Input (rows `inputRowStride` values apart), `output` (or `debug`, for a debug image) at
+ * the first pixel of setup.Output (rows packed). `times`, if given, collects the stages' times.
+ */
+template <typename T>
+void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
+  const DepthRows& depth, T* output, unsigned char* debug, SliceBuffers& buffers,
+  Progress& progress, StageTimes* times = nullptr)
+{
+  using Clock = std::chrono::steady_clock;
+  auto t0 = Clock::now();
+  auto lap = [&t0, times](double StageTimes::*stage) {
+    const auto t1 = Clock::now();
+    if (times)
+    {
+      times->*stage += std::chrono::duration<double>(t1 - t0).count();
+    }
+    t0 = t1;
+  };
+  using Acc = AccumulatorType<T>;
+  const Rect& in = setup.Input;
+  const int c = setup.Layout.Components;
+  auto pixel = [&](int x, int y) {
+    return input + static_cast<vtkIdType>(y - in.Y0) * inputRowStride +
+      static_cast<vtkIdType>(x - in.X0) * c;
+  };
+
+  // Stages 1 and 2: features, read row by row, and edges.
+  const Acc lo = static_cast<Acc>(setup.Lo);
+  const Acc inverseRange = static_cast<Acc>(1.0 / (setup.Hi - setup.Lo));
+  const std::function<void(int, Acc*)> readRow = [&](int y, Acc* features) {
+    const double* depthRow = nullptr;
+    std::vector<double> depthValues;
+    if (depth.Normalise)
+    {
+      depthValues.resize(in.Width());
+      depth.Normalise(depth.Origin + (y - in.Y0) * depth.RowBytes, depth.PixelStride, in.Width(),
+        depthValues.data());
+      depthRow = depthValues.data();
+    }
+    ReadFeatureRow<T, Acc>(
+      pixel(in.X0, y), in.Width(), setup.Layout, lo, inverseRange, depthRow, features);
+  };
+  buffers.Edges.Allocate(in);
+  DetectEdges<Acc>(readRow, setup.Layout.Count, setup.Edges, buffers.Edges, progress);
+  lap(&StageTimes::FeaturesAndEdges);
+
+  // Stage 3: blending weights of the output pixels and of the pixels whose weights their
+  // blending reads (the row below and the column right of them).
+  const Rect& out = setup.Output;
+  buffers.Weights.Allocate(Rect{ out.X0, out.X1 + 1, out.Y0 - 1, out.Y1 }.Intersect(in));
+  if (progress.Aborted())
+  {
+    return;
+  }
+  ComputeBlendingWeights(buffers.Edges, setup.Whole, setup.Weights, buffers.Weights, progress);
+  lap(&StageTimes::BlendingWeights);
+  if (progress.Aborted())
+  {
+    return;
+  }
+
+  // Stage 4: neighbourhood blending, or a debug image.
+  if (debug)
+  {
+    WriteDebugImage(setup.DebugOutput, buffers.Edges, buffers.Weights, out, debug);
+    progress.RowsDone(out.Height());
+    lap(&StageTimes::Blending);
+    return;
+  }
+  BlendSettings blend;
+  blend.Dominant = setup.Dominant;
+  blend.StraightAlpha = setup.Layout.HasAlpha && !setup.PremultipliedAlpha;
+  blend.AlphaLo = setup.Lo;
+  blend.AlphaInverseRange = 1.0 / (setup.Hi - setup.Lo);
+  vtkSMPTools::For(0, out.Height(), RowsPerTask, [&](vtkIdType begin, vtkIdType end) {
+    if (progress.Aborted())
+    {
+      return;
+    }
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      BlendRow<T, Acc>(out.Y0 + static_cast<int>(i), out, c, buffers.Weights, blend, pixel,
+        output + i * out.Width() * c);
+    }
+    progress.RowsDone(static_cast<double>(end - begin));
+  });
+  lap(&StageTimes::Blending);
+}
+
+/**
+ * A SliceSetup's settings from the options, for an image of `components` components normalised
+ * by [lo, hi]; the rectangles are left to the caller.
+ */
+VTKFILTERSMLAA_EXPORT void ConfigureSlice(
+  vtkMLAAOptions* options, int components, double lo, double hi, SliceSetup& setup);
+}
+
+#endif
+
