@@ -5,6 +5,8 @@
 #include "vtkSMPTools.h"
 
 #include <array>
+#include <cstdint>
+#include <cstring>
 #include <memory>
 
 namespace vtkMLAAStages
@@ -92,15 +94,16 @@ void WeightsBuffer::Allocate(const Rect& extent)
 //------------------------------------------------------------------------------
 namespace
 {
-// The contrast across the left and the top boundary of a pixel (0: not an edge).
+// The contrasts across the left and the top boundaries of the pixels of one row (0: not an
+// edge), each with a zero entry before the first and after the last pixel ([-1] and [w]).
 template <typename Acc>
-struct Boundary
+struct ContrastRow
 {
-  Acc Left;
-  Acc Top;
+  Acc* Left;
+  Acc* Top;
 };
 
-// The contrasts of rows and the edgels that local contrast adaptation keeps, for a band of rows.
+// The contrasts of rows and the edgels that local contrast adaptation keeps.
 template <typename Acc>
 class EdgeDetector
 {
@@ -114,14 +117,11 @@ public:
 
   // The contrast across a boundary: the largest difference of a feature, if it is at least the
   // threshold (and more than nothing, so that a zero threshold means "any difference"), else 0.
-  // NaN differences are never edges. FixedF is the number of features when known at compile
-  // time (the common single-feature case), else 0.
-  template <int FixedF>
+  // NaN differences are never edges.
   Acc Contrast(const Acc* a, const Acc* b) const
   {
-    const int features = FixedF > 0 ? FixedF : this->F;
     Acc contrast = 0;
-    for (int k = 0; k < features; ++k)
+    for (int k = 0; k < this->F; ++k)
     {
       const Acc d = std::abs(a[k] - b[k]);
       if (d >= this->Threshold && d > contrast)
@@ -131,34 +131,39 @@ public:
     }
     return contrast;
   }
+  // The same for one feature, without branches.
+  Acc Contrast1(Acc a, Acc b) const
+  {
+    const Acc d = std::abs(a - b);
+    return (d >= this->Threshold && d > Acc(0)) ? d : Acc(0);
+  }
 
   // The contrasts of one row of w pixels with features f, and the row above with features g
-  // (null where there is no row above: no top edges). b[-1] and b[w] are the zero ring.
-  template <int FixedF>
-  void RowContrasts(const Acc* f, const Acc* g, Boundary<Acc>* b, int w) const
+  // (null where there is no row above: no top edges).
+  void Contrasts(const Acc* f, const Acc* g, ContrastRow<Acc> b, int w) const
   {
-    const int features = FixedF > 0 ? FixedF : this->F;
-    b[-1] = b[w] = Boundary<Acc>{ 0, 0 };
-    b[0].Left = Acc(0);
+    b.Left[-1] = b.Left[w] = b.Top[-1] = b.Top[w] = Acc(0);
+    b.Left[0] = Acc(0);
+    if (this->F == 1)
+    {
+      for (int x = 1; x < w; ++x)
+      {
+        b.Left[x] = this->Contrast1(f[x], f[x - 1]);
+      }
+      for (int x = 0; x < w; ++x)
+      {
+        b.Top[x] = g ? this->Contrast1(f[x], g[x]) : Acc(0);
+      }
+      return;
+    }
+    const int n = this->F;
     for (int x = 1; x < w; ++x)
     {
-      b[x].Left = this->Contrast<FixedF>(f + x * features, f + (x - 1) * features);
+      b.Left[x] = this->Contrast(f + x * n, f + (x - 1) * n);
     }
     for (int x = 0; x < w; ++x)
     {
-      b[x].Top = g ? this->Contrast<FixedF>(f + x * features, g + x * features) : Acc(0);
-    }
-  }
-
-  void Contrasts(const Acc* f, const Acc* g, Boundary<Acc>* b, int w) const
-  {
-    if (this->F == 1)
-    {
-      this->RowContrasts<1>(f, g, b, w);
-    }
-    else
-    {
-      this->RowContrasts<0>(f, g, b, w);
+      b.Top[x] = g ? this->Contrast(f + x * n, g + x * n) : Acc(0);
     }
   }
 
@@ -166,29 +171,44 @@ public:
   // keeps, from the contrasts of the row (b) and of the rows below and above it: an edge whose
   // contrast, times the factor, is below the contrast of one of the six other boundaries of the
   // two pixels it separates is dropped.
-  void KeepEdgels(const Boundary<Acc>* below, const Boundary<Acc>* b,
-    const Boundary<Acc>* above, unsigned char* edges, int w) const
+  void KeepEdgels(ContrastRow<Acc> below, ContrastRow<Acc> b, ContrastRow<Acc> above,
+    unsigned char* edges, int w) const
   {
     const Acc factor = this->Factor;
-    for (int x = 0; x < w; ++x, edges += 2)
+    // Most boundaries are not edges: clear the row, and skip runs of pixels whose contrasts are
+    // all +0 (contrasts are never negative or NaN), 16 bytes of each at a time.
+    std::fill(edges, edges + 2 * static_cast<size_t>(w), 0);
+    constexpr int chunk = static_cast<int>(16 / sizeof(Acc));
+    for (int x = 0; x < w; ++x)
     {
-      const Acc left = b[x].Left;
-      const Acc top = b[x].Top;
+      if (x % chunk == 0 && x + chunk <= w)
+      {
+        std::uint64_t bits[4];
+        std::memcpy(bits, b.Left + x, 16);
+        std::memcpy(bits + 2, b.Top + x, 16);
+        if ((bits[0] | bits[1] | bits[2] | bits[3]) == 0)
+        {
+          x += chunk - 1;
+          continue;
+        }
+      }
+      const Acc left = b.Left[x];
+      const Acc top = b.Top[x];
       if (!(left > Acc(0)) && !(top > Acc(0)))
       {
-        edges[0] = edges[1] = 0;
         continue;
       }
-      edges[0] = (left > Acc(0) &&
+      unsigned char* edge = edges + 2 * x;
+      edge[0] = (left > Acc(0) &&
                    (factor == Acc(0) ||
-                     factor * left >= std::max({ b[x - 1].Left, b[x + 1].Left, b[x - 1].Top, top,
-                                        below[x - 1].Top, below[x].Top })))
+                     factor * left >= std::max({ b.Left[x - 1], b.Left[x + 1], b.Top[x - 1], top,
+                                        below.Top[x - 1], below.Top[x] })))
         ? 255
         : 0;
-      edges[1] = (top > Acc(0) &&
+      edge[1] = (top > Acc(0) &&
                    (factor == Acc(0) ||
-                     factor * top >= std::max({ below[x].Top, above[x].Top, left, b[x + 1].Left,
-                                       above[x].Left, above[x + 1].Left })))
+                     factor * top >= std::max({ below.Top[x], above.Top[x], left, b.Left[x + 1],
+                                       above.Left[x], above.Left[x + 1] })))
         ? 255
         : 0;
     }
@@ -223,11 +243,14 @@ void DetectEdges(const std::function<void(int, Acc*)>& readRow, int features,
     {
       return;
     }
-    // Contrast rows begin - 1 .. end (index + 1 - begin in `band`), each with a zero ring.
+    // Contrast rows begin - 1 .. end, row i at index i + 1 - begin.
     const int rows = static_cast<int>(end - begin) + 2;
     const size_t stride = static_cast<size_t>(w) + 2;
-    std::unique_ptr<Boundary<Acc>[]> band(new Boundary<Acc>[stride * rows]);
-    auto contrastRow = [&](int i) { return band.get() + stride * (i + 1 - begin) + 1; };
+    std::unique_ptr<Acc[]> band(new Acc[2 * stride * rows]);
+    auto contrastRow = [&](int i) {
+      Acc* left = band.get() + 2 * stride * (i + 1 - begin);
+      return ContrastRow<Acc>{ left + 1, left + stride + 1 };
+    };
     std::vector<Acc> current(static_cast<size_t>(w) * features);
     std::vector<Acc> above(current.size());
     const int first = std::max(0, static_cast<int>(begin) - 1);
@@ -237,8 +260,9 @@ void DetectEdges(const std::function<void(int, Acc*)>& readRow, int features,
       if (i < first || i > last)
       {
         // Outside the extent: no boundaries.
-        Boundary<Acc>* b = contrastRow(i);
-        std::fill(b - 1, b + w + 1, Boundary<Acc>{ 0, 0 });
+        const ContrastRow<Acc> b = contrastRow(i);
+        std::fill(b.Left - 1, b.Left + w + 1, Acc(0));
+        std::fill(b.Top - 1, b.Top + w + 1, Acc(0));
       }
     }
     readRow(r.Y0 + first, current.data());
@@ -613,16 +637,26 @@ void ComputeBlendingWeights(const EdgesBuffer& edges, const Rect& whole,
       const int y = r.Y0 + static_cast<int>(i);
       const unsigned char* e = edges.At(r.X0, y);
       unsigned char* w = weights.At(r.X0, y);
-      for (int x = r.X0; x <= r.X1; ++x, e += 2, w += 4)
+      // Most pixels have no edgel: clear the row, then skip four pixels at a time.
+      std::fill(w, w + 4 * static_cast<size_t>(r.Width()), 0);
+      for (int x = r.X0; x <= r.X1;)
       {
-        if (e[0] | e[1])
+        if (x + 4 <= r.X1 + 1)
         {
-          computer.Compute(x, y, w);
+          std::uint64_t four;
+          std::memcpy(&four, e + 2 * (x - r.X0), sizeof(four));
+          if (four == 0)
+          {
+            x += 4;
+            continue;
+          }
         }
-        else
+        const int i = x - r.X0;
+        if (e[2 * i] | e[2 * i + 1])
         {
-          w[0] = w[1] = w[2] = w[3] = 0;
+          computer.Compute(x, y, w + 4 * i);
         }
+        ++x;
       }
     }
     progress.RowsDone(static_cast<double>(end - begin));

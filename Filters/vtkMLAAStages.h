@@ -38,6 +38,8 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstdint>
+#include <cstring>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -154,64 +156,131 @@ using AccumulatorType = typename std::conditional<(sizeof(T) <= 2 ||
   float, double>::type;
 
 /**
- * The features of one row of `width` pixels at `p` (components interleaved), normalised as
- * (value - lo) * inverseRange: luma (Rec. 709, section 4.2.1; the first component of grey
- * images), every channel (COLOR, alpha included) or the depth (from `depth`, already
- * normalised), then alpha. A pixel holding NaN or infinity gets NaN features, which are never
- * an edge.
+ * Reads the features of rows of pixels of type T: normalised as (value - lo) * inverseRange,
+ * luma (Rec. 709, section 4.2.1; the first component of grey images), every channel (COLOR,
+ * alpha included) or the depth (given per row, already normalised), then alpha. A pixel holding
+ * NaN or infinity gets NaN features, which are never an edge. For one-byte types the normalised
+ * values (and their products with the luma weights) come from tables built once, which give the
+ * same floats as the arithmetic.
  */
 template <typename T, typename Acc>
-void ReadFeatureRow(const T* p, int width, const FeatureLayout& layout, Acc lo, Acc inverseRange,
-  const double* depth, Acc* features)
+class FeatureReader
 {
-  const int c = layout.Components;
-  const int count = layout.Count;
-  for (int x = 0; x < width; ++x, p += c, features += count)
+public:
+  FeatureReader(const FeatureLayout& layout, Acc lo, Acc inverseRange)
+    : Layout(layout)
+    , Lo(lo)
+    , InverseRange(inverseRange)
   {
-    if (std::is_floating_point<T>::value)
+    if (UseTables)
     {
-      bool finite = true;
-      for (int k = 0; k < c; ++k)
+      for (int i = 0; i < 256; ++i)
       {
-        finite = finite && std::isfinite(static_cast<double>(p[k]));
-      }
-      if (!finite)
-      {
-        std::fill(features, features + count, std::numeric_limits<Acc>::quiet_NaN());
-        continue;
+        const Acc v = (static_cast<Acc>(static_cast<T>(i)) - lo) * inverseRange;
+        const unsigned char index = static_cast<unsigned char>(static_cast<T>(i));
+        this->Normalised[index] = v;
+        this->Luma[0][index] = Acc(0.2126) * v;
+        this->Luma[1][index] = Acc(0.7152) * v;
+        this->Luma[2][index] = Acc(0.0722) * v;
       }
     }
+  }
+
+  /** The features of `width` pixels at `p` (components interleaved) into `features`. */
+  void Row(const T* p, int width, const double* depth, Acc* features) const
+  {
+    const int c = this->Layout.Components;
+    if (std::is_floating_point<T>::value)
+    {
+      // Non-finite pixels: NaN features.
+      const int count = this->Layout.Count;
+      for (int x = 0; x < width; ++x)
+      {
+        bool finite = true;
+        for (int k = 0; k < c; ++k)
+        {
+          finite = finite && std::isfinite(static_cast<double>(p[x * c + k]));
+        }
+        if (finite)
+        {
+          this->Pixel(p + x * c, depth ? depth + x : nullptr, features + x * count);
+        }
+        else
+        {
+          std::fill(features + x * count, features + (x + 1) * count,
+            std::numeric_limits<Acc>::quiet_NaN());
+        }
+      }
+      return;
+    }
+    if (this->Layout.Mode == vtkMLAAOptions::LUMA && c == 3)
+    {
+      // The common case (RGB), without per-pixel branches.
+      for (int x = 0; x < width; ++x, p += 3)
+      {
+        features[x] = this->LumaOf(p);
+      }
+      return;
+    }
+    for (int x = 0; x < width; ++x)
+    {
+      this->Pixel(p + x * c, depth ? depth + x : nullptr, features + x * this->Layout.Count);
+    }
+  }
+
+private:
+  static constexpr bool UseTables = sizeof(T) == 1;
+
+  Acc Normalise(T v) const
+  {
+    if (UseTables)
+    {
+      return this->Normalised[static_cast<unsigned char>(v)];
+    }
+    return (static_cast<Acc>(v) - this->Lo) * this->InverseRange;
+  }
+  Acc LumaOf(const T* p) const
+  {
+    if (UseTables)
+    {
+      return this->Luma[0][static_cast<unsigned char>(p[0])] +
+        this->Luma[1][static_cast<unsigned char>(p[1])] +
+        this->Luma[2][static_cast<unsigned char>(p[2])];
+    }
+    return Acc(0.2126) * this->Normalise(p[0]) + Acc(0.7152) * this->Normalise(p[1]) +
+      Acc(0.0722) * this->Normalise(p[2]);
+  }
+  void Pixel(const T* p, const double* depth, Acc* features) const
+  {
+    const int c = this->Layout.Components;
     int f = 0;
-    switch (layout.Mode)
+    switch (this->Layout.Mode)
     {
       case vtkMLAAOptions::COLOR:
         for (int k = 0; k < c; ++k)
         {
-          features[f++] = (static_cast<Acc>(p[k]) - lo) * inverseRange;
+          features[f++] = this->Normalise(p[k]);
         }
-        continue; // alpha is one of the channels
+        return; // alpha is one of the channels
       case vtkMLAAOptions::DEPTH:
-        features[f++] = static_cast<Acc>(depth[x]);
+        features[f++] = static_cast<Acc>(*depth);
         break;
       default:
-        if (c >= 3)
-        {
-          features[f++] = Acc(0.2126) * ((static_cast<Acc>(p[0]) - lo) * inverseRange) +
-            Acc(0.7152) * ((static_cast<Acc>(p[1]) - lo) * inverseRange) +
-            Acc(0.0722) * ((static_cast<Acc>(p[2]) - lo) * inverseRange);
-        }
-        else
-        {
-          features[f++] = (static_cast<Acc>(p[0]) - lo) * inverseRange;
-        }
+        features[f++] = c >= 3 ? this->LumaOf(p) : this->Normalise(p[0]);
         break;
     }
-    if (layout.HasAlpha)
+    if (this->Layout.HasAlpha)
     {
-      features[f] = (static_cast<Acc>(p[c - 1]) - lo) * inverseRange;
+      features[f] = this->Normalise(p[c - 1]);
     }
   }
-}
+
+  FeatureLayout Layout;
+  Acc Lo;
+  Acc InverseRange;
+  Acc Normalised[UseTables ? 256 : 1];
+  Acc Luma[3][UseTables ? 256 : 1];
+};
 
 //------------------------------------------------------------------------------
 /**
@@ -407,8 +476,39 @@ void BlendRow(int y, const Rect& out, int components, const WeightsBuffer& weigh
   const int x1 = std::min(out.X1, wr.X1);
   const unsigned char* own = weights.At(x0, y);
   const unsigned char* below = hasBelow ? weights.At(x0, y - 1) : nullptr;
+  // A pixel is blended where it has weights of its own (bytes 0 and 2), or where the pixel
+  // below (byte 1) or on its right (byte 3) gives it one; most have none, and two pixels at a
+  // time are skipped with one test.
+  constexpr std::uint64_t ownMask = 0x00FF00FF00FF00FFull;
+  constexpr std::uint64_t belowMask = 0x0000FF000000FF00ull;
+  constexpr std::uint64_t rightMask = 0xFF000000FF000000ull;
+  const bool littleEndian = [] {
+    const std::uint16_t one = 1;
+    unsigned char first;
+    std::memcpy(&first, &one, 1);
+    return first == 1;
+  }();
   for (int x = x0; x <= x1; ++x, own += 4, below = below ? below + 4 : nullptr)
   {
+    if (littleEndian && x + 1 <= x1 && x + 2 <= wr.X1)
+    {
+      // Pixels x and x + 1: their own weights, those of the pixels below them and those of
+      // the pixels right of them (x + 1 and x + 2, all within the weights).
+      std::uint64_t o, b = 0, r;
+      std::memcpy(&o, own, 8);
+      std::memcpy(&r, own + 4, 8);
+      if (below)
+      {
+        std::memcpy(&b, below, 8);
+      }
+      if (((o & ownMask) | (b & belowMask) | (r & rightMask)) == 0)
+      {
+        ++x;
+        own += 4;
+        below = below ? below + 4 : nullptr;
+        continue;
+      }
+    }
     const unsigned char fromBelow = below ? below[1] : 0;
     const unsigned char fromRight = x < wr.X1 ? own[4 + 3] : 0;
     if ((own[0] | own[2] | fromBelow | fromRight) == 0)
@@ -601,8 +701,8 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
   };
 
   // Stages 1 and 2: features, read row by row, and edges.
-  const Acc lo = static_cast<Acc>(setup.Lo);
-  const Acc inverseRange = static_cast<Acc>(1.0 / (setup.Hi - setup.Lo));
+  const FeatureReader<T, Acc> reader(
+    setup.Layout, static_cast<Acc>(setup.Lo), static_cast<Acc>(1.0 / (setup.Hi - setup.Lo)));
   const std::function<void(int, Acc*)> readRow = [&](int y, Acc* features) {
     const double* depthRow = nullptr;
     std::vector<double> depthValues;
@@ -613,8 +713,7 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
         depthValues.data());
       depthRow = depthValues.data();
     }
-    ReadFeatureRow<T, Acc>(
-      pixel(in.X0, y), in.Width(), setup.Layout, lo, inverseRange, depthRow, features);
+    reader.Row(pixel(in.X0, y), in.Width(), depthRow, features);
   };
   buffers.Edges.Allocate(in);
   DetectEdges<Acc>(readRow, setup.Layout.Count, setup.Edges, buffers.Edges, progress);
