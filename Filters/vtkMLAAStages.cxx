@@ -115,55 +115,53 @@ public:
   {
   }
 
-  // The contrast across a boundary: the largest difference of a feature, if it is at least the
+  // The contrast across a boundary: the largest difference of a feature that is at least the
   // threshold (and more than nothing, so that a zero threshold means "any difference"), else 0.
   // NaN differences are never edges.
-  Acc Contrast(const Acc* a, const Acc* b) const
-  {
-    Acc contrast = 0;
-    for (int k = 0; k < this->F; ++k)
-    {
-      const Acc d = std::abs(a[k] - b[k]);
-      if (d >= this->Threshold && d > contrast)
-      {
-        contrast = d;
-      }
-    }
-    return contrast;
-  }
-  // The same for one feature, without branches.
-  Acc Contrast1(Acc a, Acc b) const
+  Acc Contrast(Acc a, Acc b) const
   {
     const Acc d = std::abs(a - b);
     return (d >= this->Threshold && d > Acc(0)) ? d : Acc(0);
   }
 
   // The contrasts of one row of w pixels with features f, and the row above with features g
-  // (null where there is no row above: no top edges).
+  // (null where there is no row above: no top edges); features in planes of w values. The
+  // largest over the features is taken plane by plane, which vectorises.
   void Contrasts(const Acc* f, const Acc* g, ContrastRow<Acc> b, int w) const
   {
     b.Left[-1] = b.Left[w] = b.Top[-1] = b.Top[w] = Acc(0);
     b.Left[0] = Acc(0);
-    if (this->F == 1)
-    {
-      for (int x = 1; x < w; ++x)
-      {
-        b.Left[x] = this->Contrast1(f[x], f[x - 1]);
-      }
-      for (int x = 0; x < w; ++x)
-      {
-        b.Top[x] = g ? this->Contrast1(f[x], g[x]) : Acc(0);
-      }
-      return;
-    }
-    const int n = this->F;
     for (int x = 1; x < w; ++x)
     {
-      b.Left[x] = this->Contrast(f + x * n, f + (x - 1) * n);
+      b.Left[x] = this->Contrast(f[x], f[x - 1]);
+    }
+    for (int k = 1; k < this->F; ++k)
+    {
+      const Acc* plane = f + k * w;
+      for (int x = 1; x < w; ++x)
+      {
+        const Acc c = this->Contrast(plane[x], plane[x - 1]);
+        b.Left[x] = c > b.Left[x] ? c : b.Left[x];
+      }
+    }
+    if (!g)
+    {
+      std::fill(b.Top, b.Top + w, Acc(0));
+      return;
     }
     for (int x = 0; x < w; ++x)
     {
-      b.Top[x] = g ? this->Contrast(f + x * n, g + x * n) : Acc(0);
+      b.Top[x] = this->Contrast(f[x], g[x]);
+    }
+    for (int k = 1; k < this->F; ++k)
+    {
+      const Acc* plane = f + k * w;
+      const Acc* planeAbove = g + k * w;
+      for (int x = 0; x < w; ++x)
+      {
+        const Acc c = this->Contrast(plane[x], planeAbove[x]);
+        b.Top[x] = c > b.Top[x] ? c : b.Top[x];
+      }
     }
   }
 

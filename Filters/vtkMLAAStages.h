@@ -186,14 +186,16 @@ public:
     }
   }
 
-  /** The features of `width` pixels at `p` (components interleaved) into `features`. */
+  /**
+   * The features of `width` pixels at `p` (components interleaved) into `features`, one plane of
+   * `width` values per feature (feature k of pixel x at features[k * width + x]).
+   */
   void Row(const T* p, int width, const double* depth, Acc* features) const
   {
     const int c = this->Layout.Components;
     if (std::is_floating_point<T>::value)
     {
       // Non-finite pixels: NaN features.
-      const int count = this->Layout.Count;
       for (int x = 0; x < width; ++x)
       {
         bool finite = true;
@@ -203,28 +205,42 @@ public:
         }
         if (finite)
         {
-          this->Pixel(p + x * c, depth ? depth + x : nullptr, features + x * count);
+          this->Pixel(p + x * c, depth ? depth + x : nullptr, features + x, width);
         }
         else
         {
-          std::fill(features + x * count, features + (x + 1) * count,
-            std::numeric_limits<Acc>::quiet_NaN());
+          for (int k = 0; k < this->Layout.Count; ++k)
+          {
+            features[k * width + x] = std::numeric_limits<Acc>::quiet_NaN();
+          }
         }
       }
       return;
     }
     if (this->Layout.Mode == vtkMLAAOptions::LUMA && c == 3)
     {
-      // The common case (RGB), without per-pixel branches.
+      // The common cases without per-pixel branches: RGB luma, and every channel.
       for (int x = 0; x < width; ++x, p += 3)
       {
         features[x] = this->LumaOf(p);
       }
       return;
     }
+    if (this->Layout.Mode == vtkMLAAOptions::COLOR)
+    {
+      for (int k = 0; k < c; ++k)
+      {
+        Acc* plane = features + k * width;
+        for (int x = 0; x < width; ++x)
+        {
+          plane[x] = this->Normalise(p[x * c + k]);
+        }
+      }
+      return;
+    }
     for (int x = 0; x < width; ++x)
     {
-      this->Pixel(p + x * c, depth ? depth + x : nullptr, features + x * this->Layout.Count);
+      this->Pixel(p + x * c, depth ? depth + x : nullptr, features + x, width);
     }
   }
 
@@ -250,7 +266,8 @@ private:
     return Acc(0.2126) * this->Normalise(p[0]) + Acc(0.7152) * this->Normalise(p[1]) +
       Acc(0.0722) * this->Normalise(p[2]);
   }
-  void Pixel(const T* p, const double* depth, Acc* features) const
+  // The features of one pixel, `plane` values apart.
+  void Pixel(const T* p, const double* depth, Acc* features, int plane) const
   {
     const int c = this->Layout.Components;
     int f = 0;
@@ -259,19 +276,19 @@ private:
       case vtkMLAAOptions::COLOR:
         for (int k = 0; k < c; ++k)
         {
-          features[f++] = this->Normalise(p[k]);
+          features[plane * f++] = this->Normalise(p[k]);
         }
         return; // alpha is one of the channels
       case vtkMLAAOptions::DEPTH:
-        features[f++] = static_cast<Acc>(*depth);
+        features[plane * f++] = static_cast<Acc>(*depth);
         break;
       default:
-        features[f++] = c >= 3 ? this->LumaOf(p) : this->Normalise(p[0]);
+        features[plane * f++] = c >= 3 ? this->LumaOf(p) : this->Normalise(p[0]);
         break;
     }
     if (this->Layout.HasAlpha)
     {
-      features[f] = this->Normalise(p[c - 1]);
+      features[plane * f] = this->Normalise(p[c - 1]);
     }
   }
 
@@ -352,8 +369,8 @@ struct EdgeSettings
 
 /**
  * The edgels of every pixel of edges.Extent (already allocated), from the features that
- * `readRow(y, features)` gives for each row y of it (edges.Extent.Width() pixels of
- * layout.Count features). A boundary is an edge where the largest feature difference across it
+ * `readRow(y, features)` gives for each row y of it (layout.Count planes of
+ * edges.Extent.Width() values, FeatureReader::Row). A boundary is an edge where the largest feature difference across it
  * is at least the threshold (and more than 0); with local contrast adaptation, only if factor
  * times that contrast is at least the contrast of every other boundary of its two pixels.
  * Boundaries outside the extent are not edges. Acc is float or double (AccumulatorType).
