@@ -172,8 +172,8 @@ void PrintUsage(std::ostream& os)
     "channels and pixel type; where its format cannot hold that type, OpenImageIO's closest "
     "type is written and a warning says so (floating-point values written as integers are "
     "scaled by --value-range and clamped). Pixels are used as stored: no colour-space "
-    "conversion, alpha is not premultiplied, and pixels away from edges are written "
-    "unchanged.");
+    "conversion, alpha is kept as the file stores it (see --alpha), and pixels away from "
+    "edges are written unchanged.");
   os << "\nOptions:\n";
 
   std::ostringstream text;
@@ -224,6 +224,14 @@ void PrintUsage(std::ostream& os)
           "horizontal and vertical lines are followed, as in the chapter (off). Default: "
        << (defaults->GetDiagonalDetection() ? "on" : "off") << ".";
   option("--diagonals on|off", text);
+
+  text.str("");
+  text << "How the colours of an image with alpha relate to its alpha: straight (unassociated: "
+          "PNG, TGA, GIF, WebP, and TIFF that says so) or premultiplied (associated: OpenEXR, "
+          "other TIFF). With straight alpha the colours are blended premultiplied and divided "
+          "again, so the colour of transparent pixels never shows as a fringe. Default: auto, "
+          "from the file.";
+  option("--alpha auto|straight|premultiplied", text);
 
   text.str("");
   text << "Whether a pixel on the corner of a staircase is blended along its dominant line only "
@@ -289,6 +297,15 @@ enum ValueRangeModes
   ValueRangeAuto = 2
 };
 
+// How the colour of an image with alpha relates to its alpha (vtkMLAAOptions::PremultipliedAlpha):
+// from the file (auto), or as given.
+enum AlphaModes
+{
+  AlphaAuto = 0,
+  AlphaStraight = 1,
+  AlphaPremultiplied = 2
+};
+
 struct CommandLine
 {
   bool Help = false;
@@ -296,6 +313,7 @@ struct CommandLine
   std::string DepthImage;
   double ValueRange[2] = { 0.0, 1.0 }; // for floating-point images, unless given or measured
   int ValueRangeMode = 0;               // ValueRangeDefault, ValueRangeGiven or ValueRangeAuto
+  int AlphaMode = AlphaAuto;
   int AreaTextureCellSize = 0;            // 0: antialias INPUT
   std::vector<std::string> FilterOptions; // the options given that configure the filter
   std::vector<std::string> Files;
@@ -478,6 +496,27 @@ void ParseCommandLine(const std::vector<std::string>& args, CommandLine& cl)
     else if (name == "--dominant-blending")
     {
       options->SetDominantDirectionBlending(takeSwitch());
+    }
+    else if (name == "--alpha")
+    {
+      const std::string text = takeValues(1)[0];
+      if (text == "auto")
+      {
+        cl.AlphaMode = AlphaAuto;
+      }
+      else if (text == "straight")
+      {
+        cl.AlphaMode = AlphaStraight;
+      }
+      else if (text == "premultiplied")
+      {
+        cl.AlphaMode = AlphaPremultiplied;
+      }
+      else
+      {
+        throw UsageError(
+          "--alpha: '" + text + "' is not one of auto, straight, premultiplied");
+      }
     }
     else if (name == "--depth-image")
     {
@@ -721,6 +760,17 @@ void Antialias(const CommandLine& cl)
   {
     std::cerr << "mlaa: warning: " << input.Warning << std::endl;
   }
+
+  // Straight alpha unless the file holds premultiplied colours: OpenEXR always does, TIFF does
+  // unless it says its alpha is unassociated (which OpenImageIO reports, as for PNG and TGA).
+  bool premultiplied = cl.AlphaMode == AlphaPremultiplied;
+  if (cl.AlphaMode == AlphaAuto)
+  {
+    premultiplied = input.Spec.alpha_channel >= 0 &&
+      input.Spec.get_int_attribute("oiio:UnassociatedAlpha", 0) == 0 &&
+      (input.FormatName == "openexr" || input.FormatName == "tiff");
+  }
+  cl.Options->SetPremultipliedAlpha(premultiplied);
 
   vtkNew<vtkImageMLAA> filter;
   filter->SetOptions(cl.Options);
