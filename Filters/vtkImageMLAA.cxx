@@ -130,6 +130,31 @@ int vtkImageMLAA::RequestInformation(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  if (this->Options->GetEdgeDetection() == vtkMLAAOptions::DEPTH)
+  {
+    // Checked here, for the whole image, rather than piece by piece: a piece that fails in the
+    // middle of a streamed update makes vtkImageDataStreamer request it again and again.
+    vtkInformation* colorInfo = inputVector[0]->GetInformationObject(0);
+    vtkInformation* depthInfo = inputVector[1]->GetInformationObject(0);
+    if (!depthInfo)
+    {
+      vtkErrorMacro("EdgeDetection is Depth but no depth image is connected to input port 1 "
+                    "(SetDepthInputData / SetDepthInputConnection).");
+      return 0;
+    }
+    int color[6], depth[6];
+    colorInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), color);
+    depthInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), depth);
+    if (depth[0] > color[0] || depth[1] < color[1] || depth[2] > color[2] ||
+      depth[3] < color[3] || depth[4] > color[4] || depth[5] < color[5])
+    {
+      vtkErrorMacro("The depth image does not cover the colour image's extent (depth "
+        << depth[0] << " " << depth[1] << " " << depth[2] << " " << depth[3] << " " << depth[4]
+        << " " << depth[5] << ", colour " << color[0] << " " << color[1] << " " << color[2] << " "
+        << color[3] << " " << color[4] << " " << color[5] << ").");
+      return 0;
+    }
+  }
   if (this->Options->GetDebugOutput() != vtkMLAAOptions::NO_DEBUG_OUTPUT)
   {
     vtkDataObject::SetPointDataActiveScalarInfo(outInfo, VTK_UNSIGNED_CHAR, 4);
@@ -253,8 +278,17 @@ int vtkImageMLAA::RequestData(
   outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), outExt);
   input->GetExtent(inExt);
   inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
-  if (outExt[0] > outExt[1] || outExt[2] > outExt[3] || outExt[4] > outExt[5] ||
-    inExt[0] > inExt[1] || inExt[2] > inExt[3] || inExt[4] > inExt[5])
+  const bool emptyWhole = whole[0] > whole[1] || whole[2] > whole[3] || whole[4] > whole[5];
+  if (!emptyWhole && (outExt[0] > outExt[1] || outExt[2] > outExt[3] || outExt[4] > outExt[5]))
+  {
+    // An empty request (a streamer's piece of an image smaller than its piece count): nothing
+    // to produce, and nothing wrong.
+    const bool debug = this->Options->GetDebugOutput() != vtkMLAAOptions::NO_DEBUG_OUTPUT;
+    output->SetExtent(outExt);
+    output->AllocateScalars(debug ? VTK_UNSIGNED_CHAR : scalarType, debug ? 4 : components);
+    return 1;
+  }
+  if (emptyWhole || inExt[0] > inExt[1] || inExt[2] > inExt[3] || inExt[4] > inExt[5])
   {
     vtkErrorMacro("The input image is empty (extent " << inExt[0] << " " << inExt[1] << " "
                                                       << inExt[2] << " " << inExt[3] << " "

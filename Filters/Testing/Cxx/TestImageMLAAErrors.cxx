@@ -3,8 +3,10 @@
 #include "vtkMLAATestUtilities.h"
 
 #include "vtkBitArray.h"
-#include "vtkFloatArray.h"
 #include "vtkExecutive.h"
+#include "vtkExtentTranslator.h"
+#include "vtkFloatArray.h"
+#include "vtkImageDataStreamer.h"
 #include "vtkUnsignedCharArray.h"
 
 using namespace vtkMLAATest;
@@ -48,8 +50,34 @@ void ExpectError(vtkImageData* input, const std::string& expected, vtkMLAAOption
 }
 }
 
+// A streamed update whose later pieces cannot be produced (the depth image covers only the
+// bottom of the colour image) ends with one error, instead of vtkImageDataStreamer requesting
+// the failing piece forever.
+void StreamedFailureEnds()
+{
+  auto colour = MakeImage(40, 130, 3);
+  auto depth = MakeImage(40, 60, 1, VTK_FLOAT, 0.5);
+  vtkNew<vtkMLAAOptions> options;
+  options->SetEdgeDetectionToDepth();
+  vtkNew<vtkImageMLAA> filter;
+  vtkNew<MessageObserver> messages;
+  messages->Watch(filter);
+  messages->Watch(filter->GetExecutive());
+  filter->SetOptions(options);
+  filter->SetInputData(colour);
+  filter->SetDepthInputData(depth);
+  vtkNew<vtkImageDataStreamer> streamer;
+  streamer->SetInputConnection(filter->GetOutputPort());
+  streamer->SetNumberOfStreamDivisions(4);
+  streamer->GetExtentTranslator()->SetSplitModeToYSlab();
+  streamer->Update(); // returns
+  MLAA_CHECK(messages->HasError("does not cover"));
+}
+
 int TestImageMLAAErrors(int, char*[])
 {
+  StreamedFailureEnds();
+
   // No scalars at all.
   vtkNew<vtkImageData> noScalars;
   noScalars->SetDimensions(8, 8, 1);
