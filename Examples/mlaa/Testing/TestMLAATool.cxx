@@ -483,7 +483,7 @@ void HelpListsEveryOption()
       }
     }
     for (const char* option : { "--threshold T", "--edges MODE", "--depth-image FILE",
-           "--max-search-steps N", "--diagonals on|off", "--local-contrast F", "--dominant-blending on|off", "--debug", "--value-range LO HI", "--area-texture D",
+           "--max-search-steps N", "--diagonals on|off", "--local-contrast F", "--dominant-blending on|off", "--alpha auto|straight|premultiplied", "--debug", "--value-range LO HI|auto", "--area-texture D",
            "-h, --help", "Usage: mlaa [options] INPUT OUTPUT" })
     {
       if (!MLAA_CHECK(words.find(option) != std::string::npos))
@@ -821,6 +821,61 @@ void OptionDominantBlending()
   CheckFile(output, Filter(pixels), OIIO::TypeDesc::UINT8);
 }
 
+void OptionValueRange()
+{
+  // 12-bit values (500 and 3500) in a 16-bit PNG: with the type's range (the default) the edge
+  // is 0.05, below the threshold, and nothing changes; --value-range 0 4095 and --value-range
+  // auto (the image's own 500..3500) antialias it as the filter does with that range.
+  auto pixels = StaircaseImage(VTK_UNSIGNED_SHORT, { 500 }, { 3500 });
+  const fs::path input = WorkFile("in.png");
+  const fs::path output = WorkFile("out.png");
+  WriteFile(pixels, input, OIIO::TypeDesc::UINT16);
+  ExpectSuccess({ input.string(), output.string() }, output);
+  CheckFile(output, pixels, OIIO::TypeDesc::UINT16);
+  ExpectSuccess({ "--value-range", "0", "4095", input.string(), output.string() }, output);
+  auto twelveBits = Filter(pixels, [](vtkImageMLAA* f) { f->SetValueRange(0.0, 4095.0); });
+  CheckAntialiased(pixels, twelveBits);
+  CheckFile(output, twelveBits, OIIO::TypeDesc::UINT16);
+  for (const std::vector<std::string>& option :
+    { std::vector<std::string>{ "--value-range", "auto" }, { "--value-range=auto" } })
+  {
+    std::vector<std::string> args = option;
+    args.push_back(input.string());
+    args.push_back(output.string());
+    ExpectSuccess(args, output);
+    CheckFile(
+      output, Filter(pixels, [](vtkImageMLAA* f) { f->SetValueRange(500.0, 3500.0); }),
+      OIIO::TypeDesc::UINT16);
+  }
+}
+
+void OptionAlpha()
+{
+  // A grey staircase over a transparent black background in a PNG (straight alpha): by default
+  // the colour of partly covered pixels stays grey and only alpha is blended; --alpha
+  // premultiplied blends the values as they are (darker edges in any viewer).
+  auto pixels = StaircaseImage(VTK_UNSIGNED_CHAR, { 0, 0, 0, 0 }, { 150, 150, 150, 255 });
+  const fs::path input = WorkFile("in.png");
+  const fs::path output = WorkFile("out.png");
+  WriteFile(pixels, input, OIIO::TypeDesc::UINT8);
+  auto straight = Filter(pixels);
+  auto premultiplied =
+    Filter(pixels, [](vtkImageMLAA* f) { f->GetOptions()->PremultipliedAlphaOn(); });
+  MLAA_CHECK(Compare(straight, premultiplied).Count > 0);
+  for (const char* mode : { "", "auto", "straight" })
+  {
+    std::vector<std::string> args = { input.string(), output.string() };
+    if (*mode)
+    {
+      args.insert(args.begin(), { "--alpha", mode });
+    }
+    ExpectSuccess(args, output);
+    CheckFile(output, straight, OIIO::TypeDesc::UINT8);
+  }
+  ExpectSuccess({ "--alpha", "premultiplied", input.string(), output.string() }, output);
+  CheckFile(output, premultiplied, OIIO::TypeDesc::UINT8);
+}
+
 void DebugEdgesRgba8TopRowFirst()
 {
   // The top half of the picture white, the bottom half black. In the file the top row comes
@@ -1034,6 +1089,11 @@ void ExpectBadValues(const char* option, std::initializer_list<const char*> valu
   }
 }
 
+void ErrorBadAlpha()
+{
+  ExpectBadValues("--alpha", { "associated", "", "Straight", "auto,straight" });
+}
+
 void ErrorBadThreshold()
 {
   ExpectBadValues("--threshold", { "abc", "1.5", "-0.1", "nan", "inf", "", "0.5x", "0,5" });
@@ -1184,6 +1244,9 @@ int main(int argc, char* argv[])
     { "option-diagonals", OptionDiagonals },
     { "option-local-contrast", OptionLocalContrast },
     { "option-dominant-blending", OptionDominantBlending },
+    { "option-value-range", OptionValueRange },
+    { "option-alpha", OptionAlpha },
+    { "error-bad-alpha", ErrorBadAlpha },
     { "debug-edges-rgba8-top-row-first", DebugEdgesRgba8TopRowFirst },
     { "debug-weights-rgba8", DebugWeightsRgba8 },
     { "area-texture-9", AreaTexture9 },
