@@ -227,8 +227,8 @@ void PrintUsage(std::ostream& os)
 
   text.str("");
   text << "How the colours of an image with alpha relate to its alpha: straight (unassociated: "
-          "PNG, TGA, GIF, WebP, and TIFF that says so) or premultiplied (associated: OpenEXR, "
-          "other TIFF). With straight alpha the colours are blended premultiplied and divided "
+          "PNG, TGA, TIFF that says so, and every other format) or premultiplied (associated: "
+          "OpenEXR and other TIFF). With straight alpha the colours are blended premultiplied and divided "
           "again, so the colour of transparent pixels never shows as a fringe. Default: auto, "
           "from the file.";
   option("--alpha auto|straight|premultiplied", text);
