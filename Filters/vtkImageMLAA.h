@@ -55,8 +55,13 @@
  * filter. Progress is reported (ProgressEvent) from the calling thread between groups of rows of
  * every stage, and AbortExecute is honoured there: an aborted update gives an empty output.
  *
- * Bad input (no scalars, an empty extent, more than 4 components, a non-numeric scalar type, a
- * missing or mismatched depth image) is reported with vtkErrorMacro and gives an empty output.
+ * Bad input (no scalars, scalars with fewer tuples than the extent has points, an empty image,
+ * more than 4 components, a non-numeric scalar type, a missing depth image or one that does not
+ * cover the colour image) is reported with vtkErrorMacro and gives an empty output; the depth
+ * image's coverage is checked in RequestInformation, so a streamed update fails at once instead
+ * of piece by piece. An empty requested extent (a piece of a streamed image smaller than the
+ * piece count) gives an empty output without error. All reads stay within the input the filter
+ * is given, even when an upstream delivers less than the padded extent it asked for.
  *
  * @sa vtkMLAAOptions vtkMLAAAreaTexture vtkOpenGLMLAAPass
  */
