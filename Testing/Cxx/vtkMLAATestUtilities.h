@@ -6,6 +6,7 @@
 
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkExtentTranslator.h"
 #include "vtkImageData.h"
 #include "vtkImageMLAA.h"
 #include "vtkMLAAOptions.h"
@@ -130,6 +131,23 @@ inline std::string Argument(int argc, char* argv[], const char* flag)
     }
   }
   return std::string();
+}
+
+// Sets how a streamer splits an image into pieces: 0 blocks, 1 x slabs, 2 y slabs.
+inline void SetSplitMode(vtkExtentTranslator* translator, int mode)
+{
+  if (mode == 0)
+  {
+    translator->SetSplitModeToBlock();
+  }
+  else if (mode == 1)
+  {
+    translator->SetSplitModeToXSlab();
+  }
+  else
+  {
+    translator->SetSplitModeToYSlab();
+  }
 }
 
 // Runs vtkImageMLAA on `input` with `options` (defaults when null).

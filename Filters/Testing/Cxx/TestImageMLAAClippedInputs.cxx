@@ -71,19 +71,7 @@ void ClippedAndStreamed(vtkImageData* image, const int clip[6], bool clipData, v
       vtkNew<vtkImageDataStreamer> streamer;
       streamer->SetInputConnection(filter->GetOutputPort());
       streamer->SetNumberOfStreamDivisions(divisions);
-      vtkExtentTranslator* translator = streamer->GetExtentTranslator();
-      if (mode == 0)
-      {
-        translator->SetSplitModeToBlock();
-      }
-      else if (mode == 1)
-      {
-        translator->SetSplitModeToXSlab();
-      }
-      else
-      {
-        translator->SetSplitModeToYSlab();
-      }
+      SetSplitMode(streamer->GetExtentTranslator(), mode);
       streamer->Update();
       const Difference d = Compare(expected, streamer->GetOutput());
       if (!MLAA_CHECK(messages->Errors.empty() && d.Count == 0))

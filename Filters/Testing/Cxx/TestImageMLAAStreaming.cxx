@@ -107,19 +107,7 @@ int TestImageMLAAStreaming(int, char*[])
         vtkNew<vtkImageDataStreamer> streamer;
         streamer->SetInputConnection(streamed->GetOutputPort());
         streamer->SetNumberOfStreamDivisions(divisions);
-        vtkExtentTranslator* translator = streamer->GetExtentTranslator();
-        if (mode == 0)
-        {
-          translator->SetSplitModeToBlock();
-        }
-        else if (mode == 1)
-        {
-          translator->SetSplitModeToXSlab();
-        }
-        else
-        {
-          translator->SetSplitModeToYSlab();
-        }
+        SetSplitMode(streamer->GetExtentTranslator(), mode);
         streamer->Update();
         const Difference d = Compare(whole, streamer->GetOutput());
         if (!MLAA_CHECK(d.Count == 0))
