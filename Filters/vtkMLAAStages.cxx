@@ -635,8 +635,7 @@ void ComputeBlendingWeights(const EdgesBuffer& edges, const Rect& whole,
       const int y = r.Y0 + static_cast<int>(i);
       const unsigned char* e = edges.At(r.X0, y);
       unsigned char* w = weights.At(r.X0, y);
-      // Most pixels have no edgel: clear the row, then skip four pixels at a time.
-      std::fill(w, w + 4 * static_cast<size_t>(r.Width()), 0);
+      // Most pixels have no edgel: four at a time are skipped; their weights are not written.
       for (int x = r.X0; x <= r.X1;)
       {
         if (x + 4 <= r.X1 + 1)
@@ -680,8 +679,13 @@ void WriteDebugImage(int debugOutput, const EdgesBuffer& edges, const WeightsBuf
       }
       else
       {
+        // Pixels without edgels have no weights (and their entries are never written).
+        const unsigned char* e = edges.At(x, y);
         const unsigned char* w = weights.At(x, y);
-        std::copy(w, w + 4, o);
+        for (int k = 0; k < 4; ++k)
+        {
+          o[k] = (e[0] | e[1]) ? w[k] : 0;
+        }
       }
     }
   }

@@ -386,8 +386,9 @@ VTKFILTERSMLAA_EXPORT void DetectEdges(const std::function<void(int, Acc*)>& rea
  * The blending weights of a rectangle of pixels, laid out as the pass's RGBA8 blending-weights
  * texture (8-bit, value / 255): [0] the weight with which the pixel takes the colour above it,
  * [1] the pixel above takes this one's, [2] the pixel takes its left neighbour's, [3] the left
- * neighbour takes this one's. [0] and [1] are non-zero only where the pixel has a top edgel,
- * [2] and [3] only where it has a left edgel.
+ * neighbour takes this one's. Only the pixels with an edgel are written ([0] and [1] are 0
+ * unless the pixel has a top edgel, [2] and [3] unless it has a left one); the others are left
+ * as they were and never read, which spares clearing the whole buffer.
  */
 struct WeightsBuffer
 {
@@ -477,8 +478,8 @@ T ConvertBlended(Acc v)
  * equal, that changes nothing and the plain formula is used.
  */
 template <typename T, typename Acc, typename PixelAt>
-void BlendRow(int y, const Rect& out, int components, const WeightsBuffer& weights,
-  const BlendSettings& settings, PixelAt pixel, T* output)
+void BlendRow(int y, const Rect& out, int components, const EdgesBuffer& edges,
+  const WeightsBuffer& weights, const BlendSettings& settings, PixelAt pixel, T* output)
 {
   const float* value = WeightValues();
   const Rect& wr = weights.Extent;
@@ -491,49 +492,59 @@ void BlendRow(int y, const Rect& out, int components, const WeightsBuffer& weigh
   const bool hasBelow = y - 1 >= wr.Y0;
   const int x0 = std::max(out.X0, wr.X0);
   const int x1 = std::min(out.X1, wr.X1);
-  const unsigned char* own = weights.At(x0, y);
-  const unsigned char* below = hasBelow ? weights.At(x0, y - 1) : nullptr;
-  // A pixel is blended where it has weights of its own (bytes 0 and 2), or where the pixel
-  // below (byte 1) or on its right (byte 3) gives it one; most have none, and two pixels at a
-  // time are skipped with one test.
-  constexpr std::uint64_t ownMask = 0x00FF00FF00FF00FFull;
-  constexpr std::uint64_t belowMask = 0x0000FF000000FF00ull;
-  constexpr std::uint64_t rightMask = 0xFF000000FF000000ull;
+  const unsigned char* e = edges.At(x0, y);
+  const unsigned char* eBelow = hasBelow ? edges.At(x0, y - 1) : nullptr;
+  const unsigned char* w = weights.At(x0, y);
+  const unsigned char* wBelow = hasBelow ? weights.At(x0, y - 1) : nullptr;
+  // A pixel is blended where it has an edgel of its own, where the pixel below has a top edgel
+  // or where the pixel on its right has a left edgel; only then are the weights read (the
+  // weights of pixels without edgels are never written). Most pixels have none: four pixels
+  // at a time are skipped with one test on the edges.
+  constexpr std::uint64_t topMask = 0xFF00FF00FF00FF00ull;
+  constexpr std::uint64_t leftMask = 0x00FF00FF00FF00FFull;
   const bool littleEndian = [] {
     const std::uint16_t one = 1;
     unsigned char first;
     std::memcpy(&first, &one, 1);
     return first == 1;
   }();
-  for (int x = x0; x <= x1; ++x, own += 4, below = below ? below + 4 : nullptr)
+  for (int x = x0; x <= x1; ++x, e += 2, w += 4, eBelow = eBelow ? eBelow + 2 : nullptr,
+           wBelow = wBelow ? wBelow + 4 : nullptr)
   {
-    if (littleEndian && x + 1 <= x1 && x + 2 <= wr.X1)
+    if (littleEndian && x + 3 <= x1 && x + 4 <= wr.X1)
     {
-      // Pixels x and x + 1: their own weights, those of the pixels below them and those of
-      // the pixels right of them (x + 1 and x + 2, all within the weights).
-      std::uint64_t o, b = 0, r;
-      std::memcpy(&o, own, 8);
-      std::memcpy(&r, own + 4, 8);
-      if (below)
+      // Pixels x to x + 3: their edgels, the top edgels below them and the left edgels of the
+      // pixels right of them (x + 1 to x + 4, all within the weights).
+      std::uint64_t own, below = 0, right;
+      std::memcpy(&own, e, 8);
+      std::memcpy(&right, e + 2, 8);
+      if (eBelow)
       {
-        std::memcpy(&b, below, 8);
+        std::memcpy(&below, eBelow, 8);
       }
-      if (((o & ownMask) | (b & belowMask) | (r & rightMask)) == 0)
+      if ((own | (below & topMask) | (right & leftMask)) == 0)
       {
-        ++x;
-        own += 4;
-        below = below ? below + 4 : nullptr;
+        x += 3;
+        e += 6;
+        w += 12;
+        eBelow = eBelow ? eBelow + 6 : nullptr;
+        wBelow = wBelow ? wBelow + 12 : nullptr;
         continue;
       }
     }
-    const unsigned char fromBelow = below ? below[1] : 0;
-    const unsigned char fromRight = x < wr.X1 ? own[4 + 3] : 0;
-    if ((own[0] | own[2] | fromBelow | fromRight) == 0)
+    const bool top = e[1] != 0;
+    const bool left = e[0] != 0;
+    const bool fromBelow = eBelow && eBelow[1];
+    const bool fromRight = x < wr.X1 && e[2];
+    if (!top && !left && !fromBelow && !fromRight)
     {
       continue;
     }
-    Acc a[4] = { static_cast<Acc>(value[own[0]]), static_cast<Acc>(value[fromBelow]),
-      static_cast<Acc>(value[own[2]]), static_cast<Acc>(value[fromRight]) };
+    const unsigned char* own = w;
+    Acc a[4] = { top ? static_cast<Acc>(value[own[0]]) : Acc(0),
+      fromBelow ? static_cast<Acc>(value[wBelow[1]]) : Acc(0),
+      left ? static_cast<Acc>(value[own[2]]) : Acc(0),
+      fromRight ? static_cast<Acc>(value[own[4 + 3]]) : Acc(0) };
     if (settings.Dominant)
     {
       // DominantDirectionBlending: on a corner, only the line with the larger weight counts.
@@ -771,7 +782,7 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
     }
     for (vtkIdType i = begin; i < end; ++i)
     {
-      BlendRow<T, Acc>(out.Y0 + static_cast<int>(i), out, c, buffers.Weights, blend, pixel,
+      BlendRow<T, Acc>(out.Y0 + static_cast<int>(i), out, c, buffers.Edges, buffers.Weights, blend, pixel,
         output + i * out.Width() * c);
     }
     progress.RowsDone(static_cast<double>(end - begin));

@@ -161,6 +161,7 @@ void BlendingWeights()
   // A horizontal line of top edgels on row 2 from x = 3 to x = 12, with a crossing edge (a left
   // edgel on the line's own row) at its left end only: an L. Each pixel of the line takes the
   // area of the L for its distances to both ends (section 4.3.3), from the shared generator.
+  // (Only pixels with edgels get weights; the others are never written.)
   vtkNew<vtkMLAAOptions> options;
   options->SetDiagonalDetection(false);
   WeightSettings settings;
@@ -191,30 +192,35 @@ void BlendingWeights()
         MLAA_CHECK(w[1] == std::nearbyint(255.0 * areas[1]));
         MLAA_CHECK(w[2] == 0 && w[3] == 0);
       }
-      else if (!(y == 2 && x == 3))
-      {
-        // No edgel, no weight.
-        MLAA_CHECK(w[0] == 0 && w[1] == 0 && w[2] == 0 && w[3] == 0);
-      }
+
     }
   }
   // The L is not flat: the pixels near its corner blend.
   MLAA_CHECK(weights.At(4, 2)[0] > 0);
 }
 
-// BlendRow on a 3 x 3 image whose centre pixel has the given weights (bytes, as stored).
+// BlendRow on a 3 x 3 image whose centre pixel has the given weights (bytes, as stored) and the
+// edgels that go with them.
 template <typename T>
 std::vector<T> BlendCentre(const std::vector<T>& pixels, int components, const unsigned char own[4],
   const BlendSettings& settings)
 {
   const Rect all = { 0, 2, 0, 2 };
+  EdgesBuffer edges;
+  edges.Allocate(all);
+  std::fill(edges.Data.Get(), edges.Data.Get() + edges.Data.GetSize(), 0);
+  edges.At(1, 1)[0] = (own[2] || own[3]) ? 255 : 0;
+  edges.At(1, 1)[1] = (own[0] || own[1]) ? 255 : 0;
   WeightsBuffer weights;
   weights.Allocate(all);
-  std::fill(weights.Data.Get(), weights.Data.Get() + weights.Data.GetSize(), 0);
+  std::fill(weights.Data.Get(), weights.Data.Get() + weights.Data.GetSize(), 77); // never read
   std::copy(own, own + 4, weights.At(1, 1));
   auto pixel = [&](int x, int y) { return pixels.data() + (3 * y + x) * components; };
   std::vector<T> out(3 * components);
-  BlendRow<T, float>(1, all, components, weights, settings, pixel, out.data());
+  BlendRow<T, float>(1, all, components, edges, weights, settings, pixel, out.data());
+  // The other pixels of the row have no weights: copied.
+  MLAA_CHECK(std::equal(out.begin(), out.begin() + components, pixel(0, 1)));
+  MLAA_CHECK(std::equal(out.begin() + 2 * components, out.end(), pixel(2, 1)));
   return std::vector<T>(out.begin() + components, out.begin() + 2 * components);
 }
 
