@@ -397,6 +397,23 @@ void vtkOpenGLMLAAPass::Render(const vtkRenderState* s)
   }
   vtkOpenGLState* ostate = renWin->GetState();
 
+  // A hardware selection render (picking): the colour buffer holds encoded prop, cell and point
+  // ids, not colours, and a blend of two ids is a third, wrong one. Render straight into the
+  // target, untouched, as vtkOpenGLRenderer does without a pass: the camera (which clears), the
+  // lights, and UpdateGeometry, which hands the props to the selector. (The selector numbers the
+  // props only in UpdateGeometry; render passes such as vtkRenderStepsPass do not call it.)
+  if (renderer->GetSelector())
+  {
+    renWin->MakeCurrent();
+    this->UpdateCamera(renderer);
+    this->UpdateLightGeometry(renderer);
+    this->UpdateLights(renderer);
+    this->UpdateGeometry(renderer, s->GetFrameBuffer());
+    this->NumberOfRenderedProps = renderer->GetNumberOfPropsRendered();
+    vtkOpenGLCheckErrorMacro("failed after vtkOpenGLMLAAPass::Render");
+    return;
+  }
+
   // The viewport to fill: the renderer's (tiled) viewport in the window, or the whole of a
   // framebuffer object when an enclosing pass renders this one into its own target.
   int x = 0, y = 0, width = 0, height = 0;

@@ -44,6 +44,12 @@
  * the target is a framebuffer object, as it does in the CPU filter for 4-component images.
  * Thresholds apply to normalised colours (1 = full intensity).
  *
+ * Picking: while a vtkHardwareSelector renders (renderer->GetSelector() is set; this includes
+ * vtkRenderedAreaPicker and vtkHardwareSelector::Select), the colour buffer holds encoded ids,
+ * which must not be blended. The pass then renders as the renderer does without a pass (camera,
+ * lights and vtkRenderer's geometry update, which hands the props to the selector) straight into
+ * the target, without its delegate, so selections give the same ids with and without it.
+ *
  * Only VTK's OpenGL abstractions are used (vtkOpenGLRenderWindow state, vtkTextureObject,
  * vtkOpenGLFramebufferObject, vtkOpenGLQuadHelper), so the pass runs on GLX, EGL and OSMesa
  * builds alike. ReleaseGraphicsResources frees every GL object it created.
