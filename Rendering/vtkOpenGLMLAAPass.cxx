@@ -211,7 +211,8 @@ void vtkOpenGLMLAAPass::PrepareTargets(
 }
 
 //------------------------------------------------------------------------------
-void vtkOpenGLMLAAPass::RenderDelegateToTextures(const vtkRenderState* s, int width, int height)
+void vtkOpenGLMLAAPass::RenderDelegateToTextures(
+  const vtkRenderState* s, int width, int height, bool composite)
 {
   vtkOpenGLState* ostate = this->DelegateFramebuffer->GetContext()->GetState();
   vtkRenderState delegateState(s->GetRenderer());
@@ -227,6 +228,15 @@ void vtkOpenGLMLAAPass::RenderDelegateToTextures(const vtkRenderState* s, int wi
   ostate->vtkglViewport(0, 0, width, height);
   ostate->vtkglScissor(0, 0, width, height);
   ostate->vtkglEnable(GL_DEPTH_TEST);
+  if (composite)
+  {
+    // The renderer preserves the colour buffer, so it will not clear this one: start from
+    // transparent black. VTK's blending (source alpha, one minus source alpha for colour; one,
+    // one minus source alpha for alpha) then leaves premultiplied colour here.
+    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+    ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+  }
 
   this->DelegatePass->Render(&delegateState);
   this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
@@ -342,12 +352,24 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
 }
 
 //------------------------------------------------------------------------------
-bool vtkOpenGLMLAAPass::Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int width, int height)
+bool vtkOpenGLMLAAPass::Blend(
+  vtkOpenGLRenderWindow* renWin, int x, int y, int width, int height, bool composite)
 {
   vtkOpenGLState* ostate = renWin->GetState();
   ostate->vtkglViewport(x, y, width, height);
   ostate->vtkglScissor(x, y, width, height);
-  ostate->vtkglDisable(GL_BLEND);
+  if (composite && this->Options->GetDebugOutput() == vtkMLAAOptions::NO_DEBUG_OUTPUT)
+  {
+    // Premultiplied "over": result + (1 - its alpha) * what lower layers drew. Where this
+    // renderer drew nothing (transparent black) the framebuffer keeps its pixels exactly; an
+    // opaque pixel replaces them, as it would without the pass.
+    ostate->vtkglEnable(GL_BLEND);
+    ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  }
+  else
+  {
+    ostate->vtkglDisable(GL_BLEND);
+  }
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   // Depth writes need the depth test on; ALWAYS copies the delegate's depth.
   ostate->vtkglEnable(GL_DEPTH_TEST);
@@ -437,6 +459,11 @@ void vtkOpenGLMLAAPass::Render(const vtkRenderState* s)
   {
     return;
   }
+  // A renderer that preserves the colour buffer (a layer above 0, or
+  // SetPreserveColorBuffer(1)) draws over what is already there: its image is composited over
+  // the target, and its alpha (coverage) takes part in edge detection.
+  const bool composite = renderer->Transparent() != 0;
+  useAlpha = useAlpha || composite;
 
   vtkRenderStepsPass* steps =
     this->AntialiasOverlays ? nullptr : vtkRenderStepsPass::SafeDownCast(this->DelegatePass);
@@ -445,6 +472,7 @@ void vtkOpenGLMLAAPass::Render(const vtkRenderState* s)
   {
     // Save the state this pass changes; restored at the end of this block.
     vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
     vtkOpenGLState::ScopedglEnableDisable depthTestSaver(ostate, GL_DEPTH_TEST);
     vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
     vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
@@ -461,7 +489,7 @@ void vtkOpenGLMLAAPass::Render(const vtkRenderState* s)
       steps->SetOverlayPass(nullptr);
     }
     ostate->PushFramebufferBindings();
-    this->RenderDelegateToTextures(s, width, height);
+    this->RenderDelegateToTextures(s, width, height, composite);
     ostate->PopFramebufferBindings();
     if (overlay)
     {
@@ -471,7 +499,7 @@ void vtkOpenGLMLAAPass::Render(const vtkRenderState* s)
     ostate->PushFramebufferBindings();
     const bool computed = this->ComputeEdgesAndWeights(renWin, width, height, useAlpha);
     ostate->PopFramebufferBindings();
-    done = computed && this->Blend(renWin, x, y, width, height);
+    done = computed && this->Blend(renWin, x, y, width, height, composite);
   }
 
   // The overlays (not over a debug image): drawn on top of the result, in the state the pass was

@@ -44,6 +44,14 @@
  * the target is a framebuffer object, as it does in the CPU filter for 4-component images.
  * Thresholds apply to normalised colours (1 = full intensity).
  *
+ * Layers: a renderer that preserves the colour buffer (any renderer on a layer above 0, or one
+ * with SetPreserveColorBuffer(1)) draws over what lower layers and earlier renderers drew. The
+ * pass then renders its delegate into a texture cleared to transparent black (so VTK's blending
+ * leaves premultiplied colour in it), antialiases it with alpha taking part in edge detection,
+ * and composites the result over the target with premultiplied "over" blending (one, one minus
+ * source alpha): pixels where the renderer drew nothing keep their colour exactly, and its
+ * antialiased silhouettes blend into what lies below.
+ *
  * Picking: while a vtkHardwareSelector renders (renderer->GetSelector() is set; this includes
  * vtkRenderedAreaPicker and vtkHardwareSelector::Select), the colour buffer holds encoded ids,
  * which must not be blended. The pass then renders as the renderer does without a pass (camera,
@@ -130,12 +138,14 @@ private:
 
   // Creates or resizes the render targets for a viewport of width x height.
   void PrepareTargets(vtkOpenGLRenderWindow* renWin, int width, int height, bool floatColor);
-  // Renders the delegate into ColorTexture and DepthTexture.
-  void RenderDelegateToTextures(const vtkRenderState* s, int width, int height);
+  // Renders the delegate into ColorTexture and DepthTexture (cleared to transparent black first
+  // when compositing over the target).
+  void RenderDelegateToTextures(const vtkRenderState* s, int width, int height, bool composite);
   // Passes 1 and 2 into EdgesTexture and WeightsTexture.
   bool ComputeEdgesAndWeights(vtkOpenGLRenderWindow* renWin, int width, int height, bool useAlpha);
-  // Pass 3 (or a debug output) into the target viewport.
-  bool Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int width, int height);
+  // Pass 3 (or a debug output) into the target viewport, composited over it with premultiplied
+  // alpha when `composite`.
+  bool Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int width, int height, bool composite);
   // The uniforms of both variants of the edge detection shader.
   void SetEdgeUniforms(vtkShaderProgram* program, bool useAlpha);
   // Builds a quad helper for a fragment shader, or binds the existing one.
