@@ -352,8 +352,8 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
 }
 
 //------------------------------------------------------------------------------
-bool vtkOpenGLMLAAPass::Blend(
-  vtkOpenGLRenderWindow* renWin, int x, int y, int width, int height, bool composite)
+bool vtkOpenGLMLAAPass::Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int width,
+  int height, bool composite, bool straightAlpha)
 {
   vtkOpenGLState* ostate = renWin->GetState();
   ostate->vtkglViewport(x, y, width, height);
@@ -391,6 +391,7 @@ bool vtkOpenGLMLAAPass::Blend(
   program->SetUniformi("debugOutput", this->Options->GetDebugOutput());
   program->SetUniformi(
     "dominantDirection", this->Options->GetDominantDirectionBlending() ? 1 : 0);
+  program->SetUniformi("straightAlpha", straightAlpha ? 1 : 0);
   this->BlendQuad->Render();
   this->WeightsTexture->Deactivate();
   this->EdgesTexture->Deactivate();
@@ -440,7 +441,6 @@ void vtkOpenGLMLAAPass::Render(const vtkRenderState* s)
   // framebuffer object when an enclosing pass renders this one into its own target.
   int x = 0, y = 0, width = 0, height = 0;
   bool floatColor = false;
-  bool useAlpha = renWin->GetAlphaBitPlanes() != 0;
   if (auto* targetFbo = vtkOpenGLFramebufferObject::SafeDownCast(s->GetFrameBuffer()))
   {
     int size[2];
@@ -449,7 +449,6 @@ void vtkOpenGLMLAAPass::Render(const vtkRenderState* s)
     height = size[1];
     vtkTextureObject* target = targetFbo->GetColorAttachmentAsTextureObject(0);
     floatColor = target && target->GetVTKDataType() == VTK_FLOAT;
-    useAlpha = true;
   }
   else
   {
@@ -463,7 +462,15 @@ void vtkOpenGLMLAAPass::Render(const vtkRenderState* s)
   // SetPreserveColorBuffer(1)) draws over what is already there: its image is composited over
   // the target, and its alpha (coverage) takes part in edge detection.
   const bool composite = renderer->Transparent() != 0;
-  useAlpha = useAlpha || composite;
+  // Alpha takes part in edge detection only where the result keeps it: when compositing, and
+  // with KeepAlpha. Otherwise the image is opaque to whoever reads it (an RGB screenshot, the
+  // screen), and the alpha VTK leaves in the framebuffer (0 on the background, 1 on geometry,
+  // whatever the background colour) would make edges that nobody sees.
+  const bool useAlpha = composite || this->KeepAlpha;
+  // Straight alpha: the colours are premultiplied before blending and divided by alpha after.
+  // The texture of a composited renderer is premultiplied by construction.
+  const bool straightAlpha =
+    this->KeepAlpha && !composite && !this->Options->GetPremultipliedAlpha();
 
   vtkRenderStepsPass* steps =
     this->AntialiasOverlays ? nullptr : vtkRenderStepsPass::SafeDownCast(this->DelegatePass);
@@ -499,7 +506,7 @@ void vtkOpenGLMLAAPass::Render(const vtkRenderState* s)
     ostate->PushFramebufferBindings();
     const bool computed = this->ComputeEdgesAndWeights(renWin, width, height, useAlpha);
     ostate->PopFramebufferBindings();
-    done = computed && this->Blend(renWin, x, y, width, height, composite);
+    done = computed && this->Blend(renWin, x, y, width, height, composite, straightAlpha);
   }
 
   // The overlays (not over a debug image): drawn on top of the result, in the state the pass was
@@ -561,6 +568,7 @@ void vtkOpenGLMLAAPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "AntialiasOverlays: " << (this->AntialiasOverlays ? "On" : "Off") << "\n";
+  os << indent << "KeepAlpha: " << (this->KeepAlpha ? "On" : "Off") << "\n";
   os << indent << "Options:\n";
   this->Options->PrintSelf(os, indent.GetNextIndent());
 }

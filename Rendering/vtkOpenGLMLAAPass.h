@@ -40,9 +40,28 @@
  * Framebuffers: the pass draws into whatever framebuffer and viewport the renderer draws into,
  * so several renderers, viewports, window resizes and tiled rendering work. When the target is a
  * floating-point framebuffer (for example under vtkToneMappingPass), the delegate is rendered in
- * floating point too. Alpha takes part in edge detection when the window has alpha bit planes or
- * the target is a framebuffer object, as it does in the CPU filter for 4-component images.
- * Thresholds apply to normalised colours (1 = full intensity).
+ * floating point too. Thresholds apply to normalised colours (1 = full intensity).
+ *
+ * Alpha: VTK's framebuffer always has an alpha channel; a renderer clears it to its
+ * BackgroundAlpha (default 0) with its background colour, geometry writes alpha 1, and VTK's
+ * blending (source alpha, one minus source alpha for colour; one, one minus source alpha for
+ * alpha) draws translucent geometry over it. What the pass reads and writes:
+ * - By default (KeepAlpha off) the image is opaque to its reader (the screen, an RGB
+ *   screenshot): edges are found in the colour alone, exactly as vtkImageMLAA finds them in the
+ *   RGB screenshot, and the four channels are blended with the same weights.
+ * - With KeepAlpha on, alpha changes are edges too, and the blending honours
+ *   vtkMLAAOptions::PremultipliedAlpha. Off (the default, straight alpha): the framebuffer is
+ *   read as straight colour, which is what VTK leaves for opaque geometry over a transparent
+ *   background of any colour (the background colour sits under alpha 0 and means nothing);
+ *   colours are premultiplied, blended, and divided by the blended alpha again, so a silhouette
+ *   gets a soft alpha border of its own colour and no fringe of the background colour, and the
+ *   result is written back as straight colour (pixels without an edge unchanged). On: the
+ *   framebuffer is read and written as premultiplied colour, which is what VTK's blending
+ *   leaves over a transparent black background (translucent geometry included); it is blended
+ *   as it is.
+ * - A renderer that preserves the colour buffer (layers) renders into a texture of its own,
+ *   cleared to transparent black, so its image is premultiplied whatever the options; it keeps
+ *   alpha and is composited over the target (below).
  *
  * Layers: a renderer that preserves the colour buffer (any renderer on a layer above 0, or one
  * with SetPreserveColorBuffer(1)) draws over what lower layers and earlier renderers drew. The
@@ -113,6 +132,26 @@ public:
   vtkBooleanMacro(AntialiasOverlays, bool);
   ///@}
 
+  ///@{
+  /**
+   * Whether the alpha channel of the renderer's image is part of the result: a window with a
+   * transparent background (renderer BackgroundAlpha below 1) read back as RGBA
+   * (vtkWindowToImageFilter::SetInputBufferTypeToRGBA) or composited by the application.
+   * Default off: the image is treated as opaque, as the screen and an RGB screenshot show it;
+   * edges are found in the colour alone, so the RGB result equals vtkImageMLAA on the RGB
+   * screenshot (VTK's framebuffer holds alpha 0 on the background and 1 on geometry whatever
+   * their colours, which would otherwise make edges nobody sees). On: alpha changes are edges
+   * too, and colours are blended with their coverage, in the convention of
+   * vtkMLAAOptions::PremultipliedAlpha (see the class description). Renderers that preserve the
+   * colour buffer (layers) always keep alpha. VTK 9.1's GetAlphaBitPlanes() reports the bits of
+   * the window's framebuffer (8 on every offscreen window), not whether alpha is wanted, so the
+   * pass cannot tell by itself.
+   */
+  vtkSetMacro(KeepAlpha, bool);
+  vtkGetMacro(KeepAlpha, bool);
+  vtkBooleanMacro(KeepAlpha, bool);
+  ///@}
+
   /**
    * Bytes of GPU memory held by the pass's render targets at the last render (colour and depth
    * copy of the delegate's image, edges, blending weights, the pixel mask and the area texture).
@@ -131,6 +170,7 @@ protected:
 
   vtkMLAAOptions* Options = nullptr;
   bool AntialiasOverlays = false;
+  bool KeepAlpha = false;
 
 private:
   vtkOpenGLMLAAPass(const vtkOpenGLMLAAPass&) = delete;
@@ -145,7 +185,9 @@ private:
   bool ComputeEdgesAndWeights(vtkOpenGLRenderWindow* renWin, int width, int height, bool useAlpha);
   // Pass 3 (or a debug output) into the target viewport, composited over it with premultiplied
   // alpha when `composite`.
-  bool Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int width, int height, bool composite);
+  // With `straightAlpha`, colours are premultiplied before blending and divided by alpha after.
+  bool Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int width, int height, bool composite,
+    bool straightAlpha);
   // The uniforms of both variants of the edge detection shader.
   void SetEdgeUniforms(vtkShaderProgram* program, bool useAlpha);
   // Builds a quad helper for a fragment shader, or binds the existing one.

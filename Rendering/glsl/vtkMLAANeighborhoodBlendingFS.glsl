@@ -14,6 +14,12 @@
 // shader makes each mix with one bilinear fetch; exact fetches and mix() give the same result
 // without the filtering's rounding, and let a zero weight skip a neighbour entirely (so a NaN
 // next door cannot leak in).
+// With straightAlpha (vtkOpenGLMLAAPass::KeepAlpha with straight alpha), the colours are
+// premultiplied by their alpha before they are mixed and the result is divided by its alpha:
+// coverage blending, so the colour stored under alpha 0 (VTK's background colour behind a
+// transparent background) never leaks into a silhouette as a fringe. Otherwise the four
+// channels are mixed as they are (opaque images, and premultiplied ones, for which that is the
+// coverage blend).
 // The depth of the delegate's render is written too, so that passes and layers drawn after this
 // one see the scene's depth.
 //
@@ -27,6 +33,14 @@ uniform sampler2D edgesTexture;   // pass 1 output, for the debug output
 uniform sampler2D weightsTexture; // pass 2 output
 uniform int debugOutput;          // vtkMLAAOptions: 0 none, 1 edges, 2 blending weights
 uniform bool dominantDirection;   // vtkMLAAOptions::DominantDirectionBlending
+uniform bool straightAlpha;       // premultiply before mixing, divide after
+
+// A neighbour's colour, premultiplied when the image holds straight alpha.
+vec4 neighbor(ivec2 q)
+{
+  vec4 c = texelFetch(colorTexture, q, 0);
+  return straightAlpha ? vec4(c.rgb * c.a, c.a) : c;
+}
 
 void main()
 {
@@ -63,27 +77,35 @@ void main()
     }
   }
   float sum = a.x + a.y + a.z + a.w;
-  vec4 c = texelFetch(colorTexture, p, 0);
-  if (sum > 0.0)
+  vec4 original = texelFetch(colorTexture, p, 0);
+  if (sum <= 0.0)
   {
-    vec4 blended = vec4(0.0);
-    if (a.x > 0.0)
-    {
-      blended += a.x * mix(c, texelFetch(colorTexture, p + ivec2(0, 1), 0), a.x);
-    }
-    if (a.y > 0.0)
-    {
-      blended += a.y * mix(c, texelFetch(colorTexture, p - ivec2(0, 1), 0), a.y);
-    }
-    if (a.z > 0.0)
-    {
-      blended += a.z * mix(c, texelFetch(colorTexture, p - ivec2(1, 0), 0), a.z);
-    }
-    if (a.w > 0.0)
-    {
-      blended += a.w * mix(c, texelFetch(colorTexture, p + ivec2(1, 0), 0), a.w);
-    }
-    c = blended / sum;
+    gl_FragData[0] = original; // no edge: exactly as rendered
+    return;
+  }
+  vec4 c = straightAlpha ? vec4(original.rgb * original.a, original.a) : original;
+  vec4 blended = vec4(0.0);
+  if (a.x > 0.0)
+  {
+    blended += a.x * mix(c, neighbor(p + ivec2(0, 1)), a.x);
+  }
+  if (a.y > 0.0)
+  {
+    blended += a.y * mix(c, neighbor(p - ivec2(0, 1)), a.y);
+  }
+  if (a.z > 0.0)
+  {
+    blended += a.z * mix(c, neighbor(p - ivec2(1, 0)), a.z);
+  }
+  if (a.w > 0.0)
+  {
+    blended += a.w * mix(c, neighbor(p + ivec2(1, 0)), a.w);
+  }
+  c = blended / sum;
+  if (straightAlpha)
+  {
+    // Back to straight colour; where nothing covers the pixel, its colour is kept as it was.
+    c.rgb = c.a > 0.0 ? c.rgb / c.a : original.rgb;
   }
   gl_FragData[0] = c;
 }
