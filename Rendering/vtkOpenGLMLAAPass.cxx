@@ -88,17 +88,14 @@ vtkIdType TextureBytes(vtkTextureObject* texture, int bytesPerTexel)
     : 0;
 }
 
-// The local contrast adaptation variant of the edge detection shader (one .glsl file, two
-// builds).
-const std::string& LocalContrastShader()
+// One #define line of a shader variant.
+std::string Define(const char* name, int value)
 {
-  static const std::string source = [] {
-    std::string fs = vtkMLAAEdgeDetectionFS;
-    vtkShaderProgram::Substitute(
-      fs, "//VTK::MLAALocalContrast::Dec", "#define MLAA_LOCAL_CONTRAST", false);
-    return fs;
-  }();
-  return source;
+  return std::string("#define ") + name + " " + std::to_string(value) + "\n";
+}
+std::string Define(const char* name, bool defined)
+{
+  return defined ? std::string("#define ") + name + "\n" : std::string();
 }
 
 template <typename T>
@@ -122,7 +119,7 @@ vtkOpenGLMLAAPass::vtkOpenGLMLAAPass()
 //------------------------------------------------------------------------------
 vtkOpenGLMLAAPass::~vtkOpenGLMLAAPass()
 {
-  if (this->ColorTexture || this->EdgesQuad || this->DelegateFramebuffer)
+  if (this->ColorTexture || this->EdgesQuad.Quad || this->DelegateFramebuffer)
   {
     vtkErrorMacro("Graphics resources should have been released by ReleaseGraphicsResources().");
   }
@@ -243,12 +240,24 @@ void vtkOpenGLMLAAPass::RenderDelegateToTextures(
 }
 
 //------------------------------------------------------------------------------
-bool vtkOpenGLMLAAPass::ReadyQuad(
-  vtkOpenGLRenderWindow* renWin, vtkOpenGLQuadHelper*& quad, const char* fs)
+bool vtkOpenGLMLAAPass::ReadyQuad(vtkOpenGLRenderWindow* renWin, ShaderVariant& variant,
+  const char* fs, const std::string& defines)
 {
+  vtkOpenGLQuadHelper*& quad = variant.Quad;
+  if (quad && variant.Defines != defines)
+  {
+    // The options changed what the shader does: build the other variant (the shader cache
+    // keeps the programs, so switching back is cheap).
+    quad->ReleaseGraphicsResources(renWin);
+    delete quad;
+    quad = nullptr;
+  }
   if (!quad)
   {
-    quad = new vtkOpenGLQuadHelper(renWin, nullptr, fs, "");
+    std::string source = fs;
+    vtkShaderProgram::Substitute(source, "//VTK::MLAA::Dec", defines, false);
+    quad = new vtkOpenGLQuadHelper(renWin, nullptr, source.c_str(), "");
+    variant.Defines = defines;
   }
   else
   {
@@ -263,15 +272,13 @@ bool vtkOpenGLMLAAPass::ReadyQuad(
 }
 
 //------------------------------------------------------------------------------
-void vtkOpenGLMLAAPass::SetEdgeUniforms(vtkShaderProgram* program, bool useAlpha)
+void vtkOpenGLMLAAPass::SetEdgeUniforms(vtkShaderProgram* program)
 {
   program->SetUniformi("colorTexture", this->ColorTexture->GetTextureUnit());
   program->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
-  program->SetUniformi("edgeDetection", this->Options->GetEdgeDetection());
   program->SetUniformf("threshold", static_cast<float>(this->Options->GetThreshold()));
   program->SetUniformf(
     "localContrastFactor", static_cast<float>(this->Options->GetLocalContrastFactor()));
-  program->SetUniformi("useAlpha", useAlpha ? 1 : 0);
 }
 
 //------------------------------------------------------------------------------
@@ -297,15 +304,19 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   ostate->vtkglEnable(GL_DEPTH_TEST);
   ostate->vtkglDepthFunc(GL_ALWAYS);
-  if (!this->ReadyQuad(renWin, this->EdgesQuad, vtkMLAAEdgeDetectionFS))
+  // The edge shader's variant: what is compared, and whether alpha counts (section 4.2).
+  const std::string edgeDefines =
+    Define("MLAA_EDGE_DETECTION", this->Options->GetEdgeDetection()) +
+    Define("MLAA_USE_ALPHA", useAlpha);
+  if (!this->ReadyQuad(renWin, this->EdgesQuad, vtkMLAAEdgeDetectionFS, edgeDefines))
   {
     return false;
   }
-  vtkShaderProgram* program = this->EdgesQuad->Program;
+  vtkShaderProgram* program = this->EdgesQuad.Quad->Program;
   this->ColorTexture->Activate();
   this->DepthTexture->Activate();
-  this->SetEdgeUniforms(program, useAlpha);
-  this->EdgesQuad->Render();
+  this->SetEdgeUniforms(program);
+  this->EdgesQuad.Quad->Render();
 
   // Local contrast adaptation: the edge pixels (those whose mask depth was written) rewrite
   // their edges, keeping those not much weaker than their neighbours.
@@ -313,13 +324,14 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   ostate->vtkglDepthFunc(GL_EQUAL);
   if (this->Options->GetLocalContrastFactor() > 0.0)
   {
-    if (!this->ReadyQuad(renWin, this->LocalContrastQuad, LocalContrastShader().c_str()))
+    if (!this->ReadyQuad(renWin, this->LocalContrastQuad, vtkMLAAEdgeDetectionFS,
+          edgeDefines + Define("MLAA_LOCAL_CONTRAST", true)))
     {
       return false;
     }
-    program = this->LocalContrastQuad->Program;
-    this->SetEdgeUniforms(program, useAlpha);
-    this->LocalContrastQuad->Render();
+    program = this->LocalContrastQuad.Quad->Program;
+    this->SetEdgeUniforms(program);
+    this->LocalContrastQuad.Quad->Render();
   }
   this->DepthTexture->Deactivate();
   this->ColorTexture->Deactivate();
@@ -328,22 +340,24 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   fbo->AddColorAttachment(0, this->WeightsTexture);
   fbo->ActivateDrawBuffer(0);
   ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
-  if (!this->ReadyQuad(renWin, this->WeightsQuad, vtkMLAABlendingWeightsFS))
+  // The search length and the diagonal patterns are compile-time: constant loop bounds, and no
+  // diagonal code at all without DiagonalDetection (section 4.3).
+  const std::string weightsDefines =
+    Define("MLAA_MAX_SEARCH_STEPS", this->Options->GetMaxSearchSteps()) +
+    Define("MLAA_DIAGONAL_DETECTION", this->Options->GetDiagonalDetection()) +
+    Define("MLAA_MINIMUM_DIAGONAL_LENGTH", vtkMLAAOptions::MinimumDiagonalLength);
+  if (!this->ReadyQuad(renWin, this->WeightsQuad, vtkMLAABlendingWeightsFS, weightsDefines))
   {
     return false;
   }
-  program = this->WeightsQuad->Program;
+  program = this->WeightsQuad.Quad->Program;
   this->EdgesTexture->Activate();
   this->AreaTexture->Activate();
   this->DiagonalAreaTexture->Activate();
   program->SetUniformi("edgesTexture", this->EdgesTexture->GetTextureUnit());
   program->SetUniformi("areaTexture", this->AreaTexture->GetTextureUnit());
   program->SetUniformi("diagonalAreaTexture", this->DiagonalAreaTexture->GetTextureUnit());
-  program->SetUniformi("maxSearchSteps", this->Options->GetMaxSearchSteps());
-  program->SetUniformi("cellSize", this->AreaTextureMaxDistance + 1);
-  program->SetUniformi("diagonalDetection", this->Options->GetDiagonalDetection() ? 1 : 0);
-  program->SetUniformi("minimumDiagonalLength", vtkMLAAOptions::MinimumDiagonalLength);
-  this->WeightsQuad->Render();
+  this->WeightsQuad.Quad->Render();
   this->DiagonalAreaTexture->Deactivate();
   this->AreaTexture->Deactivate();
   this->EdgesTexture->Deactivate();
@@ -375,11 +389,15 @@ bool vtkOpenGLMLAAPass::Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int w
   ostate->vtkglEnable(GL_DEPTH_TEST);
   ostate->vtkglDepthFunc(GL_ALWAYS);
   ostate->vtkglDepthMask(GL_TRUE);
-  if (!this->ReadyQuad(renWin, this->BlendQuad, vtkMLAANeighborhoodBlendingFS))
+  const std::string blendDefines =
+    Define("MLAA_DEBUG_OUTPUT", this->Options->GetDebugOutput()) +
+    Define("MLAA_DOMINANT_DIRECTION", this->Options->GetDominantDirectionBlending()) +
+    Define("MLAA_STRAIGHT_ALPHA", straightAlpha);
+  if (!this->ReadyQuad(renWin, this->BlendQuad, vtkMLAANeighborhoodBlendingFS, blendDefines))
   {
     return false;
   }
-  vtkShaderProgram* program = this->BlendQuad->Program;
+  vtkShaderProgram* program = this->BlendQuad.Quad->Program;
   this->ColorTexture->Activate();
   this->DepthTexture->Activate();
   this->EdgesTexture->Activate();
@@ -388,11 +406,7 @@ bool vtkOpenGLMLAAPass::Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int w
   program->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
   program->SetUniformi("edgesTexture", this->EdgesTexture->GetTextureUnit());
   program->SetUniformi("weightsTexture", this->WeightsTexture->GetTextureUnit());
-  program->SetUniformi("debugOutput", this->Options->GetDebugOutput());
-  program->SetUniformi(
-    "dominantDirection", this->Options->GetDominantDirectionBlending() ? 1 : 0);
-  program->SetUniformi("straightAlpha", straightAlpha ? 1 : 0);
-  this->BlendQuad->Render();
+  this->BlendQuad.Quad->Render();
   this->WeightsTexture->Deactivate();
   this->EdgesTexture->Deactivate();
   this->DepthTexture->Deactivate();
@@ -525,15 +539,16 @@ void vtkOpenGLMLAAPass::Render(const vtkRenderState* s)
 void vtkOpenGLMLAAPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
-  for (vtkOpenGLQuadHelper** quad :
+  for (ShaderVariant* variant :
     { &this->EdgesQuad, &this->LocalContrastQuad, &this->WeightsQuad, &this->BlendQuad })
   {
-    if (*quad)
+    if (variant->Quad)
     {
-      (*quad)->ReleaseGraphicsResources(w);
-      delete *quad;
-      *quad = nullptr;
+      variant->Quad->ReleaseGraphicsResources(w);
+      delete variant->Quad;
+      variant->Quad = nullptr;
     }
+    variant->Defines.clear();
   }
   DeleteObject(this->DelegateFramebuffer, w);
   DeleteObject(this->MLAAFramebuffer, w);

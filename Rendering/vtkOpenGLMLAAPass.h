@@ -90,6 +90,8 @@
 #include "vtkImageProcessingPass.h"
 #include "vtkRenderingMLAAModule.h" // For export macro
 
+#include <string> // For std::string
+
 class vtkMLAAOptions;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
@@ -188,10 +190,20 @@ private:
   // With `straightAlpha`, colours are premultiplied before blending and divided by alpha after.
   bool Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int width, int height, bool composite,
     bool straightAlpha);
-  // The uniforms of both variants of the edge detection shader.
-  void SetEdgeUniforms(vtkShaderProgram* program, bool useAlpha);
-  // Builds a quad helper for a fragment shader, or binds the existing one.
-  bool ReadyQuad(vtkOpenGLRenderWindow* renWin, vtkOpenGLQuadHelper*& quad, const char* fs);
+  // The uniforms of both edge detection programs.
+  void SetEdgeUniforms(vtkShaderProgram* program);
+
+  // A full-screen quad and the #defines its fragment shader was built with: the options that
+  // change a shader's work select a compile-time variant of its one .glsl source.
+  struct ShaderVariant
+  {
+    vtkOpenGLQuadHelper* Quad = nullptr;
+    std::string Defines;
+  };
+  // Builds the quad helper of a fragment shader with `defines` in place of //VTK::MLAA::Dec
+  // (rebuilt when they differ from the last build), or binds the existing one.
+  bool ReadyQuad(vtkOpenGLRenderWindow* renWin, ShaderVariant& variant, const char* fs,
+    const std::string& defines);
 
   vtkOpenGLFramebufferObject* DelegateFramebuffer = nullptr;
   vtkOpenGLFramebufferObject* MLAAFramebuffer = nullptr;
@@ -203,10 +215,10 @@ private:
   vtkTextureObject* AreaTexture = nullptr;
   vtkTextureObject* DiagonalAreaTexture = nullptr;
   int AreaTextureMaxDistance = 0;
-  vtkOpenGLQuadHelper* EdgesQuad = nullptr;
-  vtkOpenGLQuadHelper* LocalContrastQuad = nullptr;
-  vtkOpenGLQuadHelper* WeightsQuad = nullptr;
-  vtkOpenGLQuadHelper* BlendQuad = nullptr;
+  ShaderVariant EdgesQuad;
+  ShaderVariant LocalContrastQuad;
+  ShaderVariant WeightsQuad;
+  ShaderVariant BlendQuad;
 };
 
 #endif
