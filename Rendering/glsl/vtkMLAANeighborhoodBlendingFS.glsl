@@ -50,6 +50,9 @@ vec4 premultiplied(vec4 c)
 #endif
 }
 
+// The four neighbours: above, below, left, right.
+const ivec2 offsets[4] = ivec2[4](ivec2(0, 1), ivec2(0, -1), ivec2(-1, 0), ivec2(1, 0));
+
 vec4 neighbor(ivec2 q)
 {
   return premultiplied(texelFetch(colorTexture, q, 0));
@@ -61,13 +64,13 @@ void main()
   ivec2 p = ivec2(texCoord * vec2(size)); // this fragment's pixel (texCoord is at its centre)
   gl_FragDepth = texelFetch(depthTexture, p, 0).r;
 
-  vec4 w = texelFetch(weightsTexture, p, 0);
 #if MLAA_DEBUG_OUTPUT == 1
   gl_FragData[0] = vec4(texelFetch(edgesTexture, p, 0).rg, 0.0, 1.0);
 #elif MLAA_DEBUG_OUTPUT == 2
-  gl_FragData[0] = w;
+  gl_FragData[0] = texelFetch(weightsTexture, p, 0);
 #else
   // Weights towards the neighbour above, below, to the left and to the right.
+  vec4 w = texelFetch(weightsTexture, p, 0);
   vec4 a = vec4(w.r, p.y > 0 ? texelFetch(weightsTexture, p - ivec2(0, 1), 0).g : 0.0, w.b,
     p.x < size.x - 1 ? texelFetch(weightsTexture, p + ivec2(1, 0), 0).a : 0.0);
 #ifdef MLAA_DOMINANT_DIRECTION
@@ -91,21 +94,20 @@ void main()
   }
   vec4 c = premultiplied(original);
   vec4 blended = vec4(0.0);
-  if (a.x > 0.0)
+  // The neighbours with a weight, in the order above, below, left, right: a loop over the range
+  // [first, last) of them rather than four conditional blocks, because a loop runs only as many
+  // times as its pixels need, where both sides of a branch may be executed (rasterisers that
+  // shade pixels in lock-step, llvmpipe among them). The range is empty for the pixels no line
+  // crosses (most of them), and has two entries when one direction dominates.
+  int first = a.x + a.y > 0.0 ? 0 : 2;
+  int last = a.z + a.w > 0.0 ? 4 : 2;
+  for (int k = first; k < last; ++k)
   {
-    blended += a.x * mix(c, neighbor(p + ivec2(0, 1)), a.x);
-  }
-  if (a.y > 0.0)
-  {
-    blended += a.y * mix(c, neighbor(p - ivec2(0, 1)), a.y);
-  }
-  if (a.z > 0.0)
-  {
-    blended += a.z * mix(c, neighbor(p - ivec2(1, 0)), a.z);
-  }
-  if (a.w > 0.0)
-  {
-    blended += a.w * mix(c, neighbor(p + ivec2(1, 0)), a.w);
+    float ak = a[k];
+    if (ak > 0.0)
+    {
+      blended += ak * mix(c, neighbor(p + offsets[k]), ak);
+    }
   }
   c = blended / sum;
 #ifdef MLAA_STRAIGHT_ALPHA
