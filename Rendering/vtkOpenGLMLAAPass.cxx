@@ -137,7 +137,7 @@ void vtkOpenGLMLAAPass::SetOptions(vtkMLAAOptions* options)
 
 //------------------------------------------------------------------------------
 void vtkOpenGLMLAAPass::PrepareTargets(
-  vtkOpenGLRenderWindow* renWin, int width, int height, bool floatColor)
+  vtkOpenGLRenderWindow* renWin, int width, int height, bool floatColor, bool depth)
 {
   for (vtkTextureObject** texture : { &this->ColorTexture, &this->DepthTexture,
          &this->EdgesTexture, &this->WeightsTexture, &this->MaskTexture })
@@ -149,8 +149,18 @@ void vtkOpenGLMLAAPass::PrepareTargets(
   }
   bool reallocated = AllocateColorTarget(
     this->ColorTexture, width, height, 4, floatColor ? VTK_FLOAT : VTK_UNSIGNED_CHAR, false);
-  // 24-bit depth, as a window's depth buffer, so the delegate renders as it would in the window.
-  reallocated |= AllocateDepthTarget(this->DepthTexture, width, height, vtkTextureObject::Fixed24);
+  if (depth)
+  {
+    // 24-bit depth, as a window's depth buffer, so the delegate renders as it would in the
+    // window.
+    reallocated |=
+      AllocateDepthTarget(this->DepthTexture, width, height, vtkTextureObject::Fixed24);
+  }
+  else if (this->DepthTexture->GetHandle())
+  {
+    this->DepthTexture->ReleaseGraphicsResources(renWin); // not needed in place
+    reallocated = true;
+  }
   // Linear filtering: the search and the crossing-edge reads rely on it (section 4.3).
   reallocated |= AllocateColorTarget(this->EdgesTexture, width, height, 2, VTK_UNSIGNED_CHAR, true);
   // 8-bit weights, as the chapter's RGBA8 texture (vtkImageMLAA quantises the same way).
@@ -237,6 +247,21 @@ void vtkOpenGLMLAAPass::RenderDelegateToTextures(
 
   this->DelegatePass->Render(&delegateState);
   this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLMLAAPass::CopyTargetToColorTexture(vtkOpenGLRenderWindow* renWin,
+  unsigned int targetBinding, unsigned int targetBuffer, int x, int y, int width, int height)
+{
+  vtkOpenGLState* ostate = renWin->GetState();
+  this->DelegateFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+  this->DelegateFramebuffer->AddColorAttachment(0, this->ColorTexture);
+  this->DelegateFramebuffer->ActivateDrawBuffer(0);
+  ostate->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, targetBinding);
+  ostate->vtkglReadBuffer(targetBuffer);
+  const int source[4] = { x, x + width, y, y + height };
+  const int destination[4] = { 0, width, 0, height };
+  vtkOpenGLFramebufferObject::Blit(source, destination, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
 //------------------------------------------------------------------------------
@@ -367,7 +392,7 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
 
 //------------------------------------------------------------------------------
 bool vtkOpenGLMLAAPass::Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int width,
-  int height, bool composite, bool straightAlpha)
+  int height, bool composite, bool straightAlpha, bool inPlace)
 {
   vtkOpenGLState* ostate = renWin->GetState();
   ostate->vtkglViewport(x, y, width, height);
@@ -385,31 +410,46 @@ bool vtkOpenGLMLAAPass::Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int w
     ostate->vtkglDisable(GL_BLEND);
   }
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  // Depth writes need the depth test on; ALWAYS copies the delegate's depth.
-  ostate->vtkglEnable(GL_DEPTH_TEST);
-  ostate->vtkglDepthFunc(GL_ALWAYS);
-  ostate->vtkglDepthMask(GL_TRUE);
+  if (inPlace)
+  {
+    // The target already holds the delegate's image and depth: only the blended pixels are
+    // written, and no depth.
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+  }
+  else
+  {
+    // Depth writes need the depth test on; ALWAYS copies the delegate's depth.
+    ostate->vtkglEnable(GL_DEPTH_TEST);
+    ostate->vtkglDepthFunc(GL_ALWAYS);
+    ostate->vtkglDepthMask(GL_TRUE);
+  }
   const std::string blendDefines =
     Define("MLAA_DEBUG_OUTPUT", this->Options->GetDebugOutput()) +
     Define("MLAA_DOMINANT_DIRECTION", this->Options->GetDominantDirectionBlending()) +
-    Define("MLAA_STRAIGHT_ALPHA", straightAlpha);
+    Define("MLAA_STRAIGHT_ALPHA", straightAlpha) + Define("MLAA_IN_PLACE", inPlace);
   if (!this->ReadyQuad(renWin, this->BlendQuad, vtkMLAANeighborhoodBlendingFS, blendDefines))
   {
     return false;
   }
   vtkShaderProgram* program = this->BlendQuad.Quad->Program;
   this->ColorTexture->Activate();
-  this->DepthTexture->Activate();
+  if (!inPlace)
+  {
+    this->DepthTexture->Activate();
+    program->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
+  }
   this->EdgesTexture->Activate();
   this->WeightsTexture->Activate();
   program->SetUniformi("colorTexture", this->ColorTexture->GetTextureUnit());
-  program->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
   program->SetUniformi("edgesTexture", this->EdgesTexture->GetTextureUnit());
   program->SetUniformi("weightsTexture", this->WeightsTexture->GetTextureUnit());
   this->BlendQuad.Quad->Render();
   this->WeightsTexture->Deactivate();
   this->EdgesTexture->Deactivate();
-  this->DepthTexture->Deactivate();
+  if (!inPlace)
+  {
+    this->DepthTexture->Deactivate();
+  }
   this->ColorTexture->Deactivate();
   return true;
 }
@@ -485,6 +525,15 @@ void vtkOpenGLMLAAPass::Render(const vtkRenderState* s)
   // The texture of a composited renderer is premultiplied by construction.
   const bool straightAlpha =
     this->KeepAlpha && !composite && !this->Options->GetPremultipliedAlpha();
+  // In place: the delegate renders straight into the target, as it would without the pass; its
+  // colour is copied (blitted) into ColorTexture, and the last pass writes only the pixels that
+  // blending changes. This saves copying every pixel's colour and depth back with a shader. A
+  // composited renderer needs its own transparent texture, and depth edges the delegate's depth
+  // as a texture: those render the delegate into the pass's textures and copy everything back.
+  const bool inPlace =
+    !composite && this->Options->GetEdgeDetection() != vtkMLAAOptions::DEPTH;
+  unsigned int targetBinding = 0, targetBuffer = 0;
+  ostate->GetCurrentDrawFramebufferState(targetBinding, targetBuffer);
 
   vtkRenderStepsPass* steps =
     this->AntialiasOverlays ? nullptr : vtkRenderStepsPass::SafeDownCast(this->DelegatePass);
@@ -502,16 +551,27 @@ void vtkOpenGLMLAAPass::Render(const vtkRenderState* s)
     vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
     vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
 
-    this->PrepareTargets(renWin, width, height, floatColor);
+    this->PrepareTargets(renWin, width, height, floatColor, !inPlace);
 
     // Render the delegate, keeping its overlay step for after the antialiasing.
     if (overlay)
     {
       steps->SetOverlayPass(nullptr);
     }
-    ostate->PushFramebufferBindings();
-    this->RenderDelegateToTextures(s, width, height, composite);
-    ostate->PopFramebufferBindings();
+    if (inPlace)
+    {
+      this->DelegatePass->Render(s);
+      this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
+      ostate->PushFramebufferBindings();
+      this->CopyTargetToColorTexture(renWin, targetBinding, targetBuffer, x, y, width, height);
+      ostate->PopFramebufferBindings();
+    }
+    else
+    {
+      ostate->PushFramebufferBindings();
+      this->RenderDelegateToTextures(s, width, height, composite);
+      ostate->PopFramebufferBindings();
+    }
     if (overlay)
     {
       steps->SetOverlayPass(overlay);
@@ -520,7 +580,8 @@ void vtkOpenGLMLAAPass::Render(const vtkRenderState* s)
     ostate->PushFramebufferBindings();
     const bool computed = this->ComputeEdgesAndWeights(renWin, width, height, useAlpha);
     ostate->PopFramebufferBindings();
-    done = computed && this->Blend(renWin, x, y, width, height, composite, straightAlpha);
+    done =
+      computed && this->Blend(renWin, x, y, width, height, composite, straightAlpha, inPlace);
   }
 
   // The overlays (not over a debug image): drawn on top of the result, in the state the pass was

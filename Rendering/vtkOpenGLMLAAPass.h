@@ -2,9 +2,13 @@
  * @class   vtkOpenGLMLAAPass
  * @brief   Render pass that antialiases a renderer's image with morphological antialiasing.
  *
- * vtkOpenGLMLAAPass renders its delegate into a colour and a depth texture, then runs the three
- * full-screen passes of Jimenez et al., "Practical Morphological Antialiasing" (GPU Pro 2,
- * sections 4.2 to 4.4) and draws the result into the renderer's viewport:
+ * vtkOpenGLMLAAPass renders its delegate into the renderer's viewport as it would be rendered
+ * without the pass, copies the colour into a texture, then runs the three full-screen passes of
+ * Jimenez et al., "Practical Morphological Antialiasing" (GPU Pro 2, sections 4.2 to 4.4) and
+ * writes the pixels that blending changes back into the viewport (in place). With depth edges,
+ * and for renderers that are composited over lower layers (below), the delegate is rendered
+ * into a colour and a depth texture of the pass instead, and every pixel and its depth are
+ * written back. The passes:
  * 1. edge detection into an RG8 edges texture (luma, colour or the delegate's depth); pixels
  *    without an edge are marked in a depth buffer so that the second pass skips them (the
  *    chapter's stencil trick); with a LocalContrastFactor, a second run of the edge shader on
@@ -155,8 +159,9 @@ public:
   ///@}
 
   /**
-   * Bytes of GPU memory held by the pass's render targets at the last render (colour and depth
-   * copy of the delegate's image, edges, blending weights, the pixel mask and the area texture).
+   * Bytes of GPU memory held by the pass's render targets at the last render (the copy of the
+   * delegate's colour, and of its depth when the pass renders it into its own textures, edges,
+   * blending weights, the pixel mask and the area textures).
    */
   vtkIdType GetTargetMemorySize();
 
@@ -179,7 +184,13 @@ private:
   void operator=(const vtkOpenGLMLAAPass&) = delete;
 
   // Creates or resizes the render targets for a viewport of width x height.
-  void PrepareTargets(vtkOpenGLRenderWindow* renWin, int width, int height, bool floatColor);
+  // (with a depth texture for the delegate when `depth`).
+  void PrepareTargets(
+    vtkOpenGLRenderWindow* renWin, int width, int height, bool floatColor, bool depth);
+  // Copies the viewport (x, y, width, height) of the target framebuffer (binding and colour
+  // buffer) into ColorTexture.
+  void CopyTargetToColorTexture(vtkOpenGLRenderWindow* renWin, unsigned int targetBinding,
+    unsigned int targetBuffer, int x, int y, int width, int height);
   // Renders the delegate into ColorTexture and DepthTexture (cleared to transparent black first
   // when compositing over the target).
   void RenderDelegateToTextures(const vtkRenderState* s, int width, int height, bool composite);
@@ -188,8 +199,9 @@ private:
   // Pass 3 (or a debug output) into the target viewport, composited over it with premultiplied
   // alpha when `composite`.
   // With `straightAlpha`, colours are premultiplied before blending and divided by alpha after.
+  // `inPlace`: the target holds the delegate's image; only blended pixels are written.
   bool Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int width, int height, bool composite,
-    bool straightAlpha);
+    bool straightAlpha, bool inPlace);
   // The uniforms of both edge detection programs.
   void SetEdgeUniforms(vtkShaderProgram* program);
 

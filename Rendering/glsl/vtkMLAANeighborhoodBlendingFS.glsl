@@ -30,6 +30,11 @@
 //                            (vtkMLAAOptions::DebugOutput)
 //   MLAA_DOMINANT_DIRECTION  defined: vtkMLAAOptions::DominantDirectionBlending
 //   MLAA_STRAIGHT_ALPHA      defined: premultiply before mixing, divide after
+//   MLAA_IN_PLACE            defined: the target already holds the delegate's image and depth
+//                            (vtkOpenGLMLAAPass renders the delegate into it and copies it into
+//                            colorTexture): the pixels blending leaves alone are discarded and
+//                            no depth is written. Otherwise every pixel and its depth are
+//                            written.
 //
 // Must match vtkImageMLAA's blending (Filters/vtkImageMLAA.cxx).
 
@@ -62,7 +67,9 @@ void main()
 {
   ivec2 size = textureSize(colorTexture, 0);
   ivec2 p = ivec2(texCoord * vec2(size)); // this fragment's pixel (texCoord is at its centre)
+#ifndef MLAA_IN_PLACE
   gl_FragDepth = texelFetch(depthTexture, p, 0).r;
+#endif
 
 #if MLAA_DEBUG_OUTPUT == 1
   gl_FragData[0] = vec4(texelFetch(edgesTexture, p, 0).rg, 0.0, 1.0);
@@ -86,12 +93,16 @@ void main()
   }
 #endif
   float sum = a.x + a.y + a.z + a.w;
-  vec4 original = texelFetch(colorTexture, p, 0);
   if (sum <= 0.0)
   {
-    gl_FragData[0] = original; // no edge: exactly as rendered
+#ifdef MLAA_IN_PLACE
+    discard; // no edge: the target keeps the pixel as rendered
+#else
+    gl_FragData[0] = texelFetch(colorTexture, p, 0); // no edge: exactly as rendered
     return;
+#endif
   }
+  vec4 original = texelFetch(colorTexture, p, 0);
   vec4 c = premultiplied(original);
   vec4 blended = vec4(0.0);
   // The neighbours with a weight, in the order above, below, left, right: a loop over the range
