@@ -21,8 +21,12 @@
  * 3. blending of each pixel with its four neighbours (along the dominant line only at a
  *    staircase's corner, with DominantDirectionBlending).
  * It reads the same vtkMLAAOptions as the CPU filter vtkImageMLAA (share one object with
- * SetOptions), and the two produce the same image within 1/255 on the same input: the shaders are
- * in Rendering/glsl/vtkMLAA*FS.glsl.
+ * SetOptions), and the two produce the same image within 2/255 on the same input (on an opaque
+ * window, the filter run on the RGB screenshot). The shaders are in
+ * Rendering/glsl/vtkMLAA*FS.glsl; the options that change their work (edge detection mode, alpha
+ * edges, local contrast adaptation, search length, diagonal detection, dominant-direction
+ * blending, straight alpha, debug output) select compile-time variants of each (#defines
+ * prepended to the source; a quad is rebuilt when they change), thresholds are uniforms.
  *
  * Use it in place of the renderer's default passes:
  * @code
@@ -42,9 +46,10 @@
  * over the debug image.
  *
  * Framebuffers: the pass draws into whatever framebuffer and viewport the renderer draws into,
- * so several renderers, viewports, window resizes and tiled rendering work. When the target is a
- * floating-point framebuffer (for example under vtkToneMappingPass), the delegate is rendered in
- * floating point too. Thresholds apply to normalised colours (1 = full intensity).
+ * so several renderers, viewports, window resizes, tiled rendering and multisampled windows (the
+ * copy is resolved) work. When the target is a floating-point framebuffer (for example under
+ * vtkToneMappingPass), the pass's copy is floating point too. Thresholds apply to normalised
+ * colours (1 = full intensity).
  *
  * Alpha: VTK's framebuffer always has an alpha channel; a renderer clears it to its
  * BackgroundAlpha (default 0) with its background colour, geometry writes alpha 1, and VTK's
@@ -73,7 +78,9 @@
  * leaves premultiplied colour in it), antialiases it with alpha taking part in edge detection,
  * and composites the result over the target with premultiplied "over" blending (one, one minus
  * source alpha): pixels where the renderer drew nothing keep their colour exactly, and its
- * antialiased silhouettes blend into what lies below.
+ * antialiased silhouettes blend into what lies below. Such a renderer renders into a depth
+ * buffer of its own, so its depth test does not see what lower layers left in the window's
+ * (SetPreserveDepthBuffer(1) has no effect on it).
  *
  * Picking: while a vtkHardwareSelector renders (renderer->GetSelector() is set; this includes
  * vtkRenderedAreaPicker and vtkHardwareSelector::Select), the colour buffer holds encoded ids,
