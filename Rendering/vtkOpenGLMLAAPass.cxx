@@ -88,17 +88,14 @@ vtkIdType TextureBytes(vtkTextureObject* texture, int bytesPerTexel)
     : 0;
 }
 
-// The local contrast adaptation variant of the edge detection shader (one .glsl file, two
-// builds).
-const std::string& LocalContrastShader()
+// One #define line of a shader variant.
+std::string Define(const char* name, int value)
 {
-  static const std::string source = [] {
-    std::string fs = vtkMLAAEdgeDetectionFS;
-    vtkShaderProgram::Substitute(
-      fs, "//VTK::MLAALocalContrast::Dec", "#define MLAA_LOCAL_CONTRAST", false);
-    return fs;
-  }();
-  return source;
+  return std::string("#define ") + name + " " + std::to_string(value) + "\n";
+}
+std::string Define(const char* name, bool defined)
+{
+  return defined ? std::string("#define ") + name + "\n" : std::string();
 }
 
 template <typename T>
@@ -122,7 +119,7 @@ vtkOpenGLMLAAPass::vtkOpenGLMLAAPass()
 //------------------------------------------------------------------------------
 vtkOpenGLMLAAPass::~vtkOpenGLMLAAPass()
 {
-  if (this->ColorTexture || this->EdgesQuad || this->DelegateFramebuffer)
+  if (this->ColorTexture || this->EdgesQuad.Quad || this->DelegateFramebuffer)
   {
     vtkErrorMacro("Graphics resources should have been released by ReleaseGraphicsResources().");
   }
@@ -140,7 +137,7 @@ void vtkOpenGLMLAAPass::SetOptions(vtkMLAAOptions* options)
 
 //------------------------------------------------------------------------------
 void vtkOpenGLMLAAPass::PrepareTargets(
-  vtkOpenGLRenderWindow* renWin, int width, int height, bool floatColor)
+  vtkOpenGLRenderWindow* renWin, int width, int height, bool floatColor, bool depth)
 {
   for (vtkTextureObject** texture : { &this->ColorTexture, &this->DepthTexture,
          &this->EdgesTexture, &this->WeightsTexture, &this->MaskTexture })
@@ -152,8 +149,18 @@ void vtkOpenGLMLAAPass::PrepareTargets(
   }
   bool reallocated = AllocateColorTarget(
     this->ColorTexture, width, height, 4, floatColor ? VTK_FLOAT : VTK_UNSIGNED_CHAR, false);
-  // 24-bit depth, as a window's depth buffer, so the delegate renders as it would in the window.
-  reallocated |= AllocateDepthTarget(this->DepthTexture, width, height, vtkTextureObject::Fixed24);
+  if (depth)
+  {
+    // 24-bit depth, as a window's depth buffer, so the delegate renders as it would in the
+    // window.
+    reallocated |=
+      AllocateDepthTarget(this->DepthTexture, width, height, vtkTextureObject::Fixed24);
+  }
+  else if (this->DepthTexture->GetHandle())
+  {
+    this->DepthTexture->ReleaseGraphicsResources(renWin); // not needed in place
+    reallocated = true;
+  }
   // Linear filtering: the search and the crossing-edge reads rely on it (section 4.3).
   reallocated |= AllocateColorTarget(this->EdgesTexture, width, height, 2, VTK_UNSIGNED_CHAR, true);
   // 8-bit weights, as the chapter's RGBA8 texture (vtkImageMLAA quantises the same way).
@@ -211,7 +218,8 @@ void vtkOpenGLMLAAPass::PrepareTargets(
 }
 
 //------------------------------------------------------------------------------
-void vtkOpenGLMLAAPass::RenderDelegateToTextures(const vtkRenderState* s, int width, int height)
+void vtkOpenGLMLAAPass::RenderDelegateToTextures(
+  const vtkRenderState* s, int width, int height, bool composite)
 {
   vtkOpenGLState* ostate = this->DelegateFramebuffer->GetContext()->GetState();
   vtkRenderState delegateState(s->GetRenderer());
@@ -227,18 +235,54 @@ void vtkOpenGLMLAAPass::RenderDelegateToTextures(const vtkRenderState* s, int wi
   ostate->vtkglViewport(0, 0, width, height);
   ostate->vtkglScissor(0, 0, width, height);
   ostate->vtkglEnable(GL_DEPTH_TEST);
+  if (composite)
+  {
+    // The renderer preserves the colour buffer, so it will not clear this one: start from
+    // transparent black. VTK's blending (source alpha, one minus source alpha for colour; one,
+    // one minus source alpha for alpha) then leaves premultiplied colour here.
+    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+    ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+  }
 
   this->DelegatePass->Render(&delegateState);
   this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
 }
 
 //------------------------------------------------------------------------------
-bool vtkOpenGLMLAAPass::ReadyQuad(
-  vtkOpenGLRenderWindow* renWin, vtkOpenGLQuadHelper*& quad, const char* fs)
+void vtkOpenGLMLAAPass::CopyTargetToColorTexture(vtkOpenGLRenderWindow* renWin,
+  unsigned int targetBinding, unsigned int targetBuffer, int x, int y, int width, int height)
 {
+  vtkOpenGLState* ostate = renWin->GetState();
+  this->DelegateFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+  this->DelegateFramebuffer->AddColorAttachment(0, this->ColorTexture);
+  this->DelegateFramebuffer->ActivateDrawBuffer(0);
+  ostate->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, targetBinding);
+  ostate->vtkglReadBuffer(targetBuffer);
+  const int source[4] = { x, x + width, y, y + height };
+  const int destination[4] = { 0, width, 0, height };
+  vtkOpenGLFramebufferObject::Blit(source, destination, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLMLAAPass::ReadyQuad(vtkOpenGLRenderWindow* renWin, ShaderVariant& variant,
+  const char* fs, const std::string& defines)
+{
+  vtkOpenGLQuadHelper*& quad = variant.Quad;
+  if (quad && variant.Defines != defines)
+  {
+    // The options changed what the shader does: build the other variant (the shader cache
+    // keeps the programs, so switching back is cheap).
+    quad->ReleaseGraphicsResources(renWin);
+    delete quad;
+    quad = nullptr;
+  }
   if (!quad)
   {
-    quad = new vtkOpenGLQuadHelper(renWin, nullptr, fs, "");
+    std::string source = fs;
+    vtkShaderProgram::Substitute(source, "//VTK::MLAA::Dec", defines, false);
+    quad = new vtkOpenGLQuadHelper(renWin, nullptr, source.c_str(), "");
+    variant.Defines = defines;
   }
   else
   {
@@ -253,15 +297,13 @@ bool vtkOpenGLMLAAPass::ReadyQuad(
 }
 
 //------------------------------------------------------------------------------
-void vtkOpenGLMLAAPass::SetEdgeUniforms(vtkShaderProgram* program, bool useAlpha)
+void vtkOpenGLMLAAPass::SetEdgeUniforms(vtkShaderProgram* program)
 {
   program->SetUniformi("colorTexture", this->ColorTexture->GetTextureUnit());
   program->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
-  program->SetUniformi("edgeDetection", this->Options->GetEdgeDetection());
   program->SetUniformf("threshold", static_cast<float>(this->Options->GetThreshold()));
   program->SetUniformf(
     "localContrastFactor", static_cast<float>(this->Options->GetLocalContrastFactor()));
-  program->SetUniformi("useAlpha", useAlpha ? 1 : 0);
 }
 
 //------------------------------------------------------------------------------
@@ -287,15 +329,19 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   ostate->vtkglEnable(GL_DEPTH_TEST);
   ostate->vtkglDepthFunc(GL_ALWAYS);
-  if (!this->ReadyQuad(renWin, this->EdgesQuad, vtkMLAAEdgeDetectionFS))
+  // The edge shader's variant: what is compared, and whether alpha counts (section 4.2).
+  const std::string edgeDefines =
+    Define("MLAA_EDGE_DETECTION", this->Options->GetEdgeDetection()) +
+    Define("MLAA_USE_ALPHA", useAlpha);
+  if (!this->ReadyQuad(renWin, this->EdgesQuad, vtkMLAAEdgeDetectionFS, edgeDefines))
   {
     return false;
   }
-  vtkShaderProgram* program = this->EdgesQuad->Program;
+  vtkShaderProgram* program = this->EdgesQuad.Quad->Program;
   this->ColorTexture->Activate();
   this->DepthTexture->Activate();
-  this->SetEdgeUniforms(program, useAlpha);
-  this->EdgesQuad->Render();
+  this->SetEdgeUniforms(program);
+  this->EdgesQuad.Quad->Render();
 
   // Local contrast adaptation: the edge pixels (those whose mask depth was written) rewrite
   // their edges, keeping those not much weaker than their neighbours.
@@ -303,13 +349,14 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   ostate->vtkglDepthFunc(GL_EQUAL);
   if (this->Options->GetLocalContrastFactor() > 0.0)
   {
-    if (!this->ReadyQuad(renWin, this->LocalContrastQuad, LocalContrastShader().c_str()))
+    if (!this->ReadyQuad(renWin, this->LocalContrastQuad, vtkMLAAEdgeDetectionFS,
+          edgeDefines + Define("MLAA_LOCAL_CONTRAST", true)))
     {
       return false;
     }
-    program = this->LocalContrastQuad->Program;
-    this->SetEdgeUniforms(program, useAlpha);
-    this->LocalContrastQuad->Render();
+    program = this->LocalContrastQuad.Quad->Program;
+    this->SetEdgeUniforms(program);
+    this->LocalContrastQuad.Quad->Render();
   }
   this->DepthTexture->Deactivate();
   this->ColorTexture->Deactivate();
@@ -318,22 +365,24 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   fbo->AddColorAttachment(0, this->WeightsTexture);
   fbo->ActivateDrawBuffer(0);
   ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
-  if (!this->ReadyQuad(renWin, this->WeightsQuad, vtkMLAABlendingWeightsFS))
+  // The search length and the diagonal patterns are compile-time: constant loop bounds, and no
+  // diagonal code at all without DiagonalDetection (section 4.3).
+  const std::string weightsDefines =
+    Define("MLAA_MAX_SEARCH_STEPS", this->Options->GetMaxSearchSteps()) +
+    Define("MLAA_DIAGONAL_DETECTION", this->Options->GetDiagonalDetection()) +
+    Define("MLAA_MINIMUM_DIAGONAL_LENGTH", vtkMLAAOptions::MinimumDiagonalLength);
+  if (!this->ReadyQuad(renWin, this->WeightsQuad, vtkMLAABlendingWeightsFS, weightsDefines))
   {
     return false;
   }
-  program = this->WeightsQuad->Program;
+  program = this->WeightsQuad.Quad->Program;
   this->EdgesTexture->Activate();
   this->AreaTexture->Activate();
   this->DiagonalAreaTexture->Activate();
   program->SetUniformi("edgesTexture", this->EdgesTexture->GetTextureUnit());
   program->SetUniformi("areaTexture", this->AreaTexture->GetTextureUnit());
   program->SetUniformi("diagonalAreaTexture", this->DiagonalAreaTexture->GetTextureUnit());
-  program->SetUniformi("maxSearchSteps", this->Options->GetMaxSearchSteps());
-  program->SetUniformi("cellSize", this->AreaTextureMaxDistance + 1);
-  program->SetUniformi("diagonalDetection", this->Options->GetDiagonalDetection() ? 1 : 0);
-  program->SetUniformi("minimumDiagonalLength", vtkMLAAOptions::MinimumDiagonalLength);
-  this->WeightsQuad->Render();
+  this->WeightsQuad.Quad->Render();
   this->DiagonalAreaTexture->Deactivate();
   this->AreaTexture->Deactivate();
   this->EdgesTexture->Deactivate();
@@ -342,37 +391,65 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
 }
 
 //------------------------------------------------------------------------------
-bool vtkOpenGLMLAAPass::Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int width, int height)
+bool vtkOpenGLMLAAPass::Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int width,
+  int height, bool composite, bool straightAlpha, bool inPlace)
 {
   vtkOpenGLState* ostate = renWin->GetState();
   ostate->vtkglViewport(x, y, width, height);
   ostate->vtkglScissor(x, y, width, height);
-  ostate->vtkglDisable(GL_BLEND);
+  if (composite && this->Options->GetDebugOutput() == vtkMLAAOptions::NO_DEBUG_OUTPUT)
+  {
+    // Premultiplied "over": result + (1 - its alpha) * what lower layers drew. Where this
+    // renderer drew nothing (transparent black) the framebuffer keeps its pixels exactly; an
+    // opaque pixel replaces them, as it would without the pass.
+    ostate->vtkglEnable(GL_BLEND);
+    ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  }
+  else
+  {
+    ostate->vtkglDisable(GL_BLEND);
+  }
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  // Depth writes need the depth test on; ALWAYS copies the delegate's depth.
-  ostate->vtkglEnable(GL_DEPTH_TEST);
-  ostate->vtkglDepthFunc(GL_ALWAYS);
-  ostate->vtkglDepthMask(GL_TRUE);
-  if (!this->ReadyQuad(renWin, this->BlendQuad, vtkMLAANeighborhoodBlendingFS))
+  if (inPlace)
+  {
+    // The target already holds the delegate's image and depth: only the blended pixels are
+    // written, and no depth.
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+  }
+  else
+  {
+    // Depth writes need the depth test on; ALWAYS copies the delegate's depth.
+    ostate->vtkglEnable(GL_DEPTH_TEST);
+    ostate->vtkglDepthFunc(GL_ALWAYS);
+    ostate->vtkglDepthMask(GL_TRUE);
+  }
+  const std::string blendDefines =
+    Define("MLAA_DEBUG_OUTPUT", this->Options->GetDebugOutput()) +
+    Define("MLAA_DOMINANT_DIRECTION", this->Options->GetDominantDirectionBlending()) +
+    Define("MLAA_STRAIGHT_ALPHA", straightAlpha) + Define("MLAA_IN_PLACE", inPlace);
+  if (!this->ReadyQuad(renWin, this->BlendQuad, vtkMLAANeighborhoodBlendingFS, blendDefines))
   {
     return false;
   }
-  vtkShaderProgram* program = this->BlendQuad->Program;
+  vtkShaderProgram* program = this->BlendQuad.Quad->Program;
   this->ColorTexture->Activate();
-  this->DepthTexture->Activate();
+  if (!inPlace)
+  {
+    this->DepthTexture->Activate();
+    program->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
+  }
   this->EdgesTexture->Activate();
   this->WeightsTexture->Activate();
   program->SetUniformi("colorTexture", this->ColorTexture->GetTextureUnit());
-  program->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
   program->SetUniformi("edgesTexture", this->EdgesTexture->GetTextureUnit());
   program->SetUniformi("weightsTexture", this->WeightsTexture->GetTextureUnit());
-  program->SetUniformi("debugOutput", this->Options->GetDebugOutput());
-  program->SetUniformi(
-    "dominantDirection", this->Options->GetDominantDirectionBlending() ? 1 : 0);
-  this->BlendQuad->Render();
+  this->BlendQuad.Quad->Render();
   this->WeightsTexture->Deactivate();
   this->EdgesTexture->Deactivate();
-  this->DepthTexture->Deactivate();
+  if (!inPlace)
+  {
+    this->DepthTexture->Deactivate();
+  }
   this->ColorTexture->Deactivate();
   return true;
 }
@@ -397,11 +474,27 @@ void vtkOpenGLMLAAPass::Render(const vtkRenderState* s)
   }
   vtkOpenGLState* ostate = renWin->GetState();
 
+  // A hardware selection render (picking): the colour buffer holds encoded prop, cell and point
+  // ids, not colours, and a blend of two ids is a third, wrong one. Render straight into the
+  // target, untouched, as vtkOpenGLRenderer does without a pass: the camera (which clears), the
+  // lights, and UpdateGeometry, which hands the props to the selector. (The selector numbers the
+  // props only in UpdateGeometry; render passes such as vtkRenderStepsPass do not call it.)
+  if (renderer->GetSelector())
+  {
+    renWin->MakeCurrent();
+    this->UpdateCamera(renderer);
+    this->UpdateLightGeometry(renderer);
+    this->UpdateLights(renderer);
+    this->UpdateGeometry(renderer, s->GetFrameBuffer());
+    this->NumberOfRenderedProps = renderer->GetNumberOfPropsRendered();
+    vtkOpenGLCheckErrorMacro("failed after vtkOpenGLMLAAPass::Render");
+    return;
+  }
+
   // The viewport to fill: the renderer's (tiled) viewport in the window, or the whole of a
   // framebuffer object when an enclosing pass renders this one into its own target.
   int x = 0, y = 0, width = 0, height = 0;
   bool floatColor = false;
-  bool useAlpha = renWin->GetAlphaBitPlanes() != 0;
   if (auto* targetFbo = vtkOpenGLFramebufferObject::SafeDownCast(s->GetFrameBuffer()))
   {
     int size[2];
@@ -410,7 +503,6 @@ void vtkOpenGLMLAAPass::Render(const vtkRenderState* s)
     height = size[1];
     vtkTextureObject* target = targetFbo->GetColorAttachmentAsTextureObject(0);
     floatColor = target && target->GetVTKDataType() == VTK_FLOAT;
-    useAlpha = true;
   }
   else
   {
@@ -420,6 +512,28 @@ void vtkOpenGLMLAAPass::Render(const vtkRenderState* s)
   {
     return;
   }
+  // A renderer that preserves the colour buffer (a layer above 0, or
+  // SetPreserveColorBuffer(1)) draws over what is already there: its image is composited over
+  // the target, and its alpha (coverage) takes part in edge detection.
+  const bool composite = renderer->Transparent() != 0;
+  // Alpha takes part in edge detection only where the result keeps it: when compositing, and
+  // with KeepAlpha. Otherwise the image is opaque to whoever reads it (an RGB screenshot, the
+  // screen), and the alpha VTK leaves in the framebuffer (0 on the background, 1 on geometry,
+  // whatever the background colour) would make edges that nobody sees.
+  const bool useAlpha = composite || this->KeepAlpha;
+  // Straight alpha: the colours are premultiplied before blending and divided by alpha after.
+  // The texture of a composited renderer is premultiplied by construction.
+  const bool straightAlpha =
+    this->KeepAlpha && !composite && !this->Options->GetPremultipliedAlpha();
+  // In place: the delegate renders straight into the target, as it would without the pass; its
+  // colour is copied (blitted) into ColorTexture, and the last pass writes only the pixels that
+  // blending changes. This saves copying every pixel's colour and depth back with a shader. A
+  // composited renderer needs its own transparent texture, and depth edges the delegate's depth
+  // as a texture: those render the delegate into the pass's textures and copy everything back.
+  const bool inPlace =
+    !composite && this->Options->GetEdgeDetection() != vtkMLAAOptions::DEPTH;
+  unsigned int targetBinding = 0, targetBuffer = 0;
+  ostate->GetCurrentDrawFramebufferState(targetBinding, targetBuffer);
 
   vtkRenderStepsPass* steps =
     this->AntialiasOverlays ? nullptr : vtkRenderStepsPass::SafeDownCast(this->DelegatePass);
@@ -428,6 +542,7 @@ void vtkOpenGLMLAAPass::Render(const vtkRenderState* s)
   {
     // Save the state this pass changes; restored at the end of this block.
     vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
     vtkOpenGLState::ScopedglEnableDisable depthTestSaver(ostate, GL_DEPTH_TEST);
     vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
     vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
@@ -436,16 +551,27 @@ void vtkOpenGLMLAAPass::Render(const vtkRenderState* s)
     vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
     vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
 
-    this->PrepareTargets(renWin, width, height, floatColor);
+    this->PrepareTargets(renWin, width, height, floatColor, !inPlace);
 
     // Render the delegate, keeping its overlay step for after the antialiasing.
     if (overlay)
     {
       steps->SetOverlayPass(nullptr);
     }
-    ostate->PushFramebufferBindings();
-    this->RenderDelegateToTextures(s, width, height);
-    ostate->PopFramebufferBindings();
+    if (inPlace)
+    {
+      this->DelegatePass->Render(s);
+      this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
+      ostate->PushFramebufferBindings();
+      this->CopyTargetToColorTexture(renWin, targetBinding, targetBuffer, x, y, width, height);
+      ostate->PopFramebufferBindings();
+    }
+    else
+    {
+      ostate->PushFramebufferBindings();
+      this->RenderDelegateToTextures(s, width, height, composite);
+      ostate->PopFramebufferBindings();
+    }
     if (overlay)
     {
       steps->SetOverlayPass(overlay);
@@ -454,7 +580,8 @@ void vtkOpenGLMLAAPass::Render(const vtkRenderState* s)
     ostate->PushFramebufferBindings();
     const bool computed = this->ComputeEdgesAndWeights(renWin, width, height, useAlpha);
     ostate->PopFramebufferBindings();
-    done = computed && this->Blend(renWin, x, y, width, height);
+    done =
+      computed && this->Blend(renWin, x, y, width, height, composite, straightAlpha, inPlace);
   }
 
   // The overlays (not over a debug image): drawn on top of the result, in the state the pass was
@@ -473,15 +600,16 @@ void vtkOpenGLMLAAPass::Render(const vtkRenderState* s)
 void vtkOpenGLMLAAPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
-  for (vtkOpenGLQuadHelper** quad :
+  for (ShaderVariant* variant :
     { &this->EdgesQuad, &this->LocalContrastQuad, &this->WeightsQuad, &this->BlendQuad })
   {
-    if (*quad)
+    if (variant->Quad)
     {
-      (*quad)->ReleaseGraphicsResources(w);
-      delete *quad;
-      *quad = nullptr;
+      variant->Quad->ReleaseGraphicsResources(w);
+      delete variant->Quad;
+      variant->Quad = nullptr;
     }
+    variant->Defines.clear();
   }
   DeleteObject(this->DelegateFramebuffer, w);
   DeleteObject(this->MLAAFramebuffer, w);
@@ -516,6 +644,7 @@ void vtkOpenGLMLAAPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "AntialiasOverlays: " << (this->AntialiasOverlays ? "On" : "Off") << "\n";
+  os << indent << "KeepAlpha: " << (this->KeepAlpha ? "On" : "Off") << "\n";
   os << indent << "Options:\n";
   this->Options->PrintSelf(os, indent.GetNextIndent());
 }

@@ -2,9 +2,13 @@
  * @class   vtkOpenGLMLAAPass
  * @brief   Render pass that antialiases a renderer's image with morphological antialiasing.
  *
- * vtkOpenGLMLAAPass renders its delegate into a colour and a depth texture, then runs the three
- * full-screen passes of Jimenez et al., "Practical Morphological Antialiasing" (GPU Pro 2,
- * sections 4.2 to 4.4) and draws the result into the renderer's viewport:
+ * vtkOpenGLMLAAPass renders its delegate into the renderer's viewport as it would be rendered
+ * without the pass, copies the colour into a texture, then runs the three full-screen passes of
+ * Jimenez et al., "Practical Morphological Antialiasing" (GPU Pro 2, sections 4.2 to 4.4) and
+ * writes the pixels that blending changes back into the viewport (in place). With depth edges,
+ * and for renderers that are composited over lower layers (below), the delegate is rendered
+ * into a colour and a depth texture of the pass instead, and every pixel and its depth are
+ * written back. The passes:
  * 1. edge detection into an RG8 edges texture (luma, colour or the delegate's depth); pixels
  *    without an edge are marked in a depth buffer so that the second pass skips them (the
  *    chapter's stencil trick); with a LocalContrastFactor, a second run of the edge shader on
@@ -17,8 +21,12 @@
  * 3. blending of each pixel with its four neighbours (along the dominant line only at a
  *    staircase's corner, with DominantDirectionBlending).
  * It reads the same vtkMLAAOptions as the CPU filter vtkImageMLAA (share one object with
- * SetOptions), and the two produce the same image within 1/255 on the same input: the shaders are
- * in Rendering/glsl/vtkMLAA*FS.glsl.
+ * SetOptions), and the two produce the same image within 2/255 on the same input (on an opaque
+ * window, the filter run on the RGB screenshot). The shaders are in
+ * Rendering/glsl/vtkMLAA*FS.glsl; the options that change their work (edge detection mode, alpha
+ * edges, local contrast adaptation, search length, diagonal detection, dominant-direction
+ * blending, straight alpha, debug output) select compile-time variants of each (#defines
+ * prepended to the source; a quad is rebuilt when they change), thresholds are uniforms.
  *
  * Use it in place of the renderer's default passes:
  * @code
@@ -38,11 +46,47 @@
  * over the debug image.
  *
  * Framebuffers: the pass draws into whatever framebuffer and viewport the renderer draws into,
- * so several renderers, viewports, window resizes and tiled rendering work. When the target is a
- * floating-point framebuffer (for example under vtkToneMappingPass), the delegate is rendered in
- * floating point too. Alpha takes part in edge detection when the window has alpha bit planes or
- * the target is a framebuffer object, as it does in the CPU filter for 4-component images.
- * Thresholds apply to normalised colours (1 = full intensity).
+ * so several renderers, viewports, window resizes, tiled rendering and multisampled windows (the
+ * copy is resolved) work. When the target is a floating-point framebuffer (for example under
+ * vtkToneMappingPass), the pass's copy is floating point too. Thresholds apply to normalised
+ * colours (1 = full intensity).
+ *
+ * Alpha: VTK's framebuffer always has an alpha channel; a renderer clears it to its
+ * BackgroundAlpha (default 0) with its background colour, geometry writes alpha 1, and VTK's
+ * blending (source alpha, one minus source alpha for colour; one, one minus source alpha for
+ * alpha) draws translucent geometry over it. What the pass reads and writes:
+ * - By default (KeepAlpha off) the image is opaque to its reader (the screen, an RGB
+ *   screenshot): edges are found in the colour alone, exactly as vtkImageMLAA finds them in the
+ *   RGB screenshot, and the four channels are blended with the same weights.
+ * - With KeepAlpha on, alpha changes are edges too, and the blending honours
+ *   vtkMLAAOptions::PremultipliedAlpha. Off (the default, straight alpha): the framebuffer is
+ *   read as straight colour, which is what VTK leaves for opaque geometry over a transparent
+ *   background of any colour (the background colour sits under alpha 0 and means nothing);
+ *   colours are premultiplied, blended, and divided by the blended alpha again, so a silhouette
+ *   gets a soft alpha border of its own colour and no fringe of the background colour, and the
+ *   result is written back as straight colour (pixels without an edge unchanged). On: the
+ *   framebuffer is read and written as premultiplied colour, which is what VTK's blending
+ *   leaves over a transparent black background (translucent geometry included); it is blended
+ *   as it is.
+ * - A renderer that preserves the colour buffer (layers) renders into a texture of its own,
+ *   cleared to transparent black, so its image is premultiplied whatever the options; it keeps
+ *   alpha and is composited over the target (below).
+ *
+ * Layers: a renderer that preserves the colour buffer (any renderer on a layer above 0, or one
+ * with SetPreserveColorBuffer(1)) draws over what lower layers and earlier renderers drew. The
+ * pass then renders its delegate into a texture cleared to transparent black (so VTK's blending
+ * leaves premultiplied colour in it), antialiases it with alpha taking part in edge detection,
+ * and composites the result over the target with premultiplied "over" blending (one, one minus
+ * source alpha): pixels where the renderer drew nothing keep their colour exactly, and its
+ * antialiased silhouettes blend into what lies below. Such a renderer renders into a depth
+ * buffer of its own, so its depth test does not see what lower layers left in the window's
+ * (SetPreserveDepthBuffer(1) has no effect on it).
+ *
+ * Picking: while a vtkHardwareSelector renders (renderer->GetSelector() is set; this includes
+ * vtkRenderedAreaPicker and vtkHardwareSelector::Select), the colour buffer holds encoded ids,
+ * which must not be blended. The pass then renders as the renderer does without a pass (camera,
+ * lights and vtkRenderer's geometry update, which hands the props to the selector) straight into
+ * the target, without its delegate, so selections give the same ids with and without it.
  *
  * Only VTK's OpenGL abstractions are used (vtkOpenGLRenderWindow state, vtkTextureObject,
  * vtkOpenGLFramebufferObject, vtkOpenGLQuadHelper), so the pass runs on GLX, EGL and OSMesa
@@ -56,6 +100,8 @@
 
 #include "vtkImageProcessingPass.h"
 #include "vtkRenderingMLAAModule.h" // For export macro
+
+#include <string> // For std::string
 
 class vtkMLAAOptions;
 class vtkOpenGLFramebufferObject;
@@ -99,9 +145,30 @@ public:
   vtkBooleanMacro(AntialiasOverlays, bool);
   ///@}
 
+  ///@{
   /**
-   * Bytes of GPU memory held by the pass's render targets at the last render (colour and depth
-   * copy of the delegate's image, edges, blending weights, the pixel mask and the area texture).
+   * Whether the alpha channel of the renderer's image is part of the result: a window with a
+   * transparent background (renderer BackgroundAlpha below 1) read back as RGBA
+   * (vtkWindowToImageFilter::SetInputBufferTypeToRGBA) or composited by the application.
+   * Default off: the image is treated as opaque, as the screen and an RGB screenshot show it;
+   * edges are found in the colour alone, so the RGB result equals vtkImageMLAA on the RGB
+   * screenshot (VTK's framebuffer holds alpha 0 on the background and 1 on geometry whatever
+   * their colours, which would otherwise make edges nobody sees). On: alpha changes are edges
+   * too, and colours are blended with their coverage, in the convention of
+   * vtkMLAAOptions::PremultipliedAlpha (see the class description). Renderers that preserve the
+   * colour buffer (layers) always keep alpha. VTK 9.1's GetAlphaBitPlanes() reports the bits of
+   * the window's framebuffer (8 on every offscreen window), not whether alpha is wanted, so the
+   * pass cannot tell by itself.
+   */
+  vtkSetMacro(KeepAlpha, bool);
+  vtkGetMacro(KeepAlpha, bool);
+  vtkBooleanMacro(KeepAlpha, bool);
+  ///@}
+
+  /**
+   * Bytes of GPU memory held by the pass's render targets at the last render (the copy of the
+   * delegate's colour, and of its depth when the pass renders it into its own textures, edges,
+   * blending weights, the pixel mask and the area textures).
    */
   vtkIdType GetTargetMemorySize();
 
@@ -117,23 +184,45 @@ protected:
 
   vtkMLAAOptions* Options = nullptr;
   bool AntialiasOverlays = false;
+  bool KeepAlpha = false;
 
 private:
   vtkOpenGLMLAAPass(const vtkOpenGLMLAAPass&) = delete;
   void operator=(const vtkOpenGLMLAAPass&) = delete;
 
   // Creates or resizes the render targets for a viewport of width x height.
-  void PrepareTargets(vtkOpenGLRenderWindow* renWin, int width, int height, bool floatColor);
-  // Renders the delegate into ColorTexture and DepthTexture.
-  void RenderDelegateToTextures(const vtkRenderState* s, int width, int height);
+  // (with a depth texture for the delegate when `depth`).
+  void PrepareTargets(
+    vtkOpenGLRenderWindow* renWin, int width, int height, bool floatColor, bool depth);
+  // Copies the viewport (x, y, width, height) of the target framebuffer (binding and colour
+  // buffer) into ColorTexture.
+  void CopyTargetToColorTexture(vtkOpenGLRenderWindow* renWin, unsigned int targetBinding,
+    unsigned int targetBuffer, int x, int y, int width, int height);
+  // Renders the delegate into ColorTexture and DepthTexture (cleared to transparent black first
+  // when compositing over the target).
+  void RenderDelegateToTextures(const vtkRenderState* s, int width, int height, bool composite);
   // Passes 1 and 2 into EdgesTexture and WeightsTexture.
   bool ComputeEdgesAndWeights(vtkOpenGLRenderWindow* renWin, int width, int height, bool useAlpha);
-  // Pass 3 (or a debug output) into the target viewport.
-  bool Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int width, int height);
-  // The uniforms of both variants of the edge detection shader.
-  void SetEdgeUniforms(vtkShaderProgram* program, bool useAlpha);
-  // Builds a quad helper for a fragment shader, or binds the existing one.
-  bool ReadyQuad(vtkOpenGLRenderWindow* renWin, vtkOpenGLQuadHelper*& quad, const char* fs);
+  // Pass 3 (or a debug output) into the target viewport, composited over it with premultiplied
+  // alpha when `composite`.
+  // With `straightAlpha`, colours are premultiplied before blending and divided by alpha after.
+  // `inPlace`: the target holds the delegate's image; only blended pixels are written.
+  bool Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int width, int height, bool composite,
+    bool straightAlpha, bool inPlace);
+  // The uniforms of both edge detection programs.
+  void SetEdgeUniforms(vtkShaderProgram* program);
+
+  // A full-screen quad and the #defines its fragment shader was built with: the options that
+  // change a shader's work select a compile-time variant of its one .glsl source.
+  struct ShaderVariant
+  {
+    vtkOpenGLQuadHelper* Quad = nullptr;
+    std::string Defines;
+  };
+  // Builds the quad helper of a fragment shader with `defines` in place of //VTK::MLAA::Dec
+  // (rebuilt when they differ from the last build), or binds the existing one.
+  bool ReadyQuad(vtkOpenGLRenderWindow* renWin, ShaderVariant& variant, const char* fs,
+    const std::string& defines);
 
   vtkOpenGLFramebufferObject* DelegateFramebuffer = nullptr;
   vtkOpenGLFramebufferObject* MLAAFramebuffer = nullptr;
@@ -145,10 +234,10 @@ private:
   vtkTextureObject* AreaTexture = nullptr;
   vtkTextureObject* DiagonalAreaTexture = nullptr;
   int AreaTextureMaxDistance = 0;
-  vtkOpenGLQuadHelper* EdgesQuad = nullptr;
-  vtkOpenGLQuadHelper* LocalContrastQuad = nullptr;
-  vtkOpenGLQuadHelper* WeightsQuad = nullptr;
-  vtkOpenGLQuadHelper* BlendQuad = nullptr;
+  ShaderVariant EdgesQuad;
+  ShaderVariant LocalContrastQuad;
+  ShaderVariant WeightsQuad;
+  ShaderVariant BlendQuad;
 };
 
 #endif

@@ -1,5 +1,6 @@
 //VTK::System::Dec
 //VTK::Output::Dec
+//VTK::MLAA::Dec
 
 // MLAA pass 2 of 3: blending weights (Jimenez et al., "Practical Morphological Antialiasing",
 // GPU Pro 2, section 4.3, Listing 4.2).
@@ -16,7 +17,13 @@
 // the left neighbour. GL's y grows upwards, so "above" is y + 1 and the published shader's -0.25
 // offset towards the upper row becomes +0.25 here.
 //
-// With diagonalDetection, edgels that belong to a staircase of one-pixel steps (at least
+// Compile-time variants (#defines prepended by vtkOpenGLMLAAPass in place of //VTK::MLAA::Dec;
+// the program is rebuilt when the options change):
+//   MLAA_MAX_SEARCH_STEPS         vtkMLAAOptions::MaxSearchSteps (a constant loop bound)
+//   MLAA_DIAGONAL_DETECTION       defined: vtkMLAAOptions::DiagonalDetection
+//   MLAA_MINIMUM_DIAGONAL_LENGTH  vtkMLAAOptions::MinimumDiagonalLength
+//
+// With MLAA_DIAGONAL_DETECTION, edgels that belong to a staircase of one-pixel steps (at least
 // minimumDiagonalLength units) take their weights from the 45-degree line through it instead,
 // from the diagonal area table (vtkMLAAAreaTexture::ComputeDiagonalAreas). Exact texel reads are
 // used there; the staircase is followed one unit per step.
@@ -27,11 +34,10 @@ in vec2 texCoord;
 
 uniform sampler2D edgesTexture; // RG8, red = left edgel, green = top edgel; LINEAR, clamp to edge
 uniform sampler2D areaTexture;  // vtkMLAAAreaTexture's table, RG32F (texelFetch only)
-uniform int maxSearchSteps;     // vtkMLAAOptions::MaxSearchSteps
-uniform int cellSize;           // D = 2 * maxSearchSteps + 1, the area texture's cell size
 uniform sampler2D diagonalAreaTexture; // vtkMLAAAreaTexture's diagonal table, RGB32F
-uniform int diagonalDetection;         // vtkMLAAOptions::DiagonalDetection
-uniform int minimumDiagonalLength;     // vtkMLAAOptions::MinimumDiagonalLength
+
+const int maxSearchSteps = MLAA_MAX_SEARCH_STEPS;
+const int cellSize = 2 * MLAA_MAX_SEARCH_STEPS + 1; // D, the area texture's cell size
 
 vec2 edgesSize;
 
@@ -179,14 +185,14 @@ void main()
   bool top = e.g > 0.5;
   bool left = e.r > 0.5;
 
-  if (diagonalDetection != 0)
+#ifdef MLAA_DIAGONAL_DETECTION
   {
     if (top && left) // a unit of a rising staircase: the first end is the lower-left one
     {
       bool end1, end2;
       int d1 = searchDiagonal(p, ivec2(-1, -1), true, end1);
       int d2 = searchDiagonal(p, ivec2(1, 1), true, end2);
-      if (d1 + d2 + 1 >= minimumDiagonalLength)
+      if (d1 + d2 + 1 >= MLAA_MINIMUM_DIAGONAL_LENGTH)
       {
         ivec2 p1 = p - ivec2(d1);
         ivec2 p2 = p + ivec2(d2);
@@ -213,7 +219,7 @@ void main()
       bool end1, end2;
       int d1 = searchDiagonal(q, ivec2(-1, 1), false, end1);
       int d2 = searchDiagonal(q, ivec2(1, -1), false, end2);
-      if (d1 + d2 + 1 < minimumDiagonalLength)
+      if (d1 + d2 + 1 < MLAA_MINIMUM_DIAGONAL_LENGTH)
       {
         continue;
       }
@@ -235,6 +241,7 @@ void main()
       }
     }
   }
+#endif
 
   if (top) // edge at the top: a horizontal line, ends to the left and to the right
   {

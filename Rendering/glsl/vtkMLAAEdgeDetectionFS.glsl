@@ -1,9 +1,16 @@
 //VTK::System::Dec
 //VTK::Output::Dec
-//VTK::MLAALocalContrast::Dec
+//VTK::MLAA::Dec
 
 // MLAA pass 1 of 3: edge detection (Jimenez et al., "Practical Morphological Antialiasing",
-// GPU Pro 2, section 4.2, Listing 4.1; luma as in section 4.2.1), built in two variants.
+// GPU Pro 2, section 4.2, Listing 4.1; luma as in section 4.2.1).
+//
+// Compile-time variants (vtkOpenGLMLAAPass prepends the #defines in place of //VTK::MLAA::Dec
+// and rebuilds the program when the options change, so no pixel pays for a run-time branch):
+//   MLAA_EDGE_DETECTION   0 luma, 1 colour, 2 depth (vtkMLAAOptions::EdgeDetection)
+//   MLAA_USE_ALPHA        defined: a change in alpha alone is an edge too (the result keeps
+//                         alpha: vtkOpenGLMLAAPass::KeepAlpha, or a composited layer)
+//   MLAA_LOCAL_CONTRAST   defined: the local contrast adaptation pass (below)
 //
 // Detection (the default build): writes, for the pixel under this fragment, whether its left
 // boundary (red) and its top boundary (green) are edges. "Top" is the next row up (GL's y + 1,
@@ -25,10 +32,8 @@ in vec2 texCoord;
 
 uniform sampler2D colorTexture;    // the delegate's image (texelFetch only)
 uniform sampler2D depthTexture;    // its depth buffer, for depth edges
-uniform int edgeDetection;         // vtkMLAAOptions: 0 luma, 1 colour, 2 depth
 uniform float threshold;           // vtkMLAAOptions::Threshold
 uniform float localContrastFactor; // vtkMLAAOptions::LocalContrastFactor (> 0 here)
-uniform bool useAlpha;             // also an edge where alpha alone changes
 
 // Rec. 709 luma weights.
 const vec3 lumaWeights = vec3(0.2126, 0.7152, 0.0722);
@@ -56,17 +61,29 @@ float contrast(vec4 a, float da, ivec2 q)
   {
     return 0.0;
   }
-  float c = useAlpha ? kept(abs(a.a - b.a)) : 0.0;
-  if (edgeDetection == 1)
-  {
-    vec3 d = abs(a.rgb - b.rgb);
-    return max(c, max(kept(d.r), max(kept(d.g), kept(d.b))));
-  }
-  if (edgeDetection == 2)
-  {
-    return max(c, kept(abs(da - texelFetch(depthTexture, q, 0).r)));
-  }
+#ifdef MLAA_USE_ALPHA
+  float c = kept(abs(a.a - b.a));
+#else
+  float c = 0.0;
+#endif
+#if MLAA_EDGE_DETECTION == 1
+  vec3 d = abs(a.rgb - b.rgb);
+  return max(c, max(kept(d.r), max(kept(d.g), kept(d.b))));
+#elif MLAA_EDGE_DETECTION == 2
+  return max(c, kept(abs(da - texelFetch(depthTexture, q, 0).r)));
+#else
   return max(c, kept(abs(dot(a.rgb, lumaWeights) - dot(b.rgb, lumaWeights))));
+#endif
+}
+
+// The depth of pixel p, read in depth mode only.
+float depthAt(ivec2 p)
+{
+#if MLAA_EDGE_DETECTION == 2
+  return texelFetch(depthTexture, p, 0).r;
+#else
+  return 0.0;
+#endif
 }
 
 // The contrast across the boundary between pixels p and q (q = p + (1, 0) or p + (0, 1)); 0
@@ -77,9 +94,7 @@ float contrastBetween(ivec2 p, ivec2 q, ivec2 size)
   {
     return 0.0;
   }
-  vec4 a = texelFetch(colorTexture, p, 0);
-  float da = edgeDetection == 2 ? texelFetch(depthTexture, p, 0).r : 0.0;
-  return contrast(a, da, q);
+  return contrast(texelFetch(colorTexture, p, 0), depthAt(p), q);
 }
 
 void main()
@@ -91,7 +106,7 @@ void main()
   ivec2 dx = ivec2(1, 0);
   ivec2 dy = ivec2(0, 1);
   vec4 color = texelFetch(colorTexture, p, 0);
-  float depth = edgeDetection == 2 ? texelFetch(depthTexture, p, 0).r : 0.0;
+  float depth = depthAt(p);
   float left = p.x > 0 ? contrast(color, depth, p - dx) : 0.0;
   float top = p.y < size.y - 1 ? contrast(color, depth, p + dy) : 0.0;
   bool keepLeft = left > 0.0;

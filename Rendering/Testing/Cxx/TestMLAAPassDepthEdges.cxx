@@ -9,7 +9,7 @@ using namespace vtkMLAATest;
 
 int TestMLAAPassDepthEdges(int, char*[])
 {
-  SceneWindow scene("isosurface", 400, 300, true);
+  SceneWindow scene("isosurface", 400, 300);
   vtkNew<vtkWindowToImageFilter> zGrab;
   zGrab->SetInput(scene.Window);
   zGrab->SetInputBufferTypeToZBuffer();
@@ -23,7 +23,7 @@ int TestMLAAPassDepthEdges(int, char*[])
   options->SetEdgeDetectionToDepth();
   options->SetThreshold(0.005);
   UseMLAA(scene.Renderer, options);
-  auto gpu = vtkMLAAScenes::Capture(scene.Window, true);
+  auto gpu = vtkMLAAScenes::Capture(scene.Window);
 
   vtkNew<vtkImageMLAA> filter;
   filter->SetOptions(options);
@@ -41,10 +41,10 @@ int TestMLAAPassDepthEdges(int, char*[])
   options->SetEdgeDetectionToLuma();
   options->SetThreshold(0.1);
   options->SetDebugOutputToEdges();
-  auto lumaEdges = vtkMLAAScenes::Capture(scene.Window, true);
+  auto lumaEdges = vtkMLAAScenes::Capture(scene.Window);
   options->SetEdgeDetectionToDepth();
   options->SetThreshold(0.005);
-  auto depthEdges = vtkMLAAScenes::Capture(scene.Window, true);
+  auto depthEdges = vtkMLAAScenes::Capture(scene.Window);
   MLAA_CHECK(Compare(lumaEdges, depthEdges, 0.0).Pixels > 0);
   return Result();
 }
