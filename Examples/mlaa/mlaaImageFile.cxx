@@ -720,6 +720,13 @@ std::string WriteImageFile(vtkImageData* image, const std::string& path,
   }
 
   TemporaryFile temporary(path);
+  // On failure the writer is destroyed before the temporary file is removed: writers that
+  // write on closing (HEIF) would otherwise create it again.
+  struct WriterFirst
+  {
+    std::unique_ptr<OIIO::ImageOutput>& Output;
+    ~WriterFirst() { this->Output.reset(); }
+  } writerFirst{ output };
   if (!output->open(temporary.GetPath(), spec))
   {
     const std::string error = output->geterror();
