@@ -124,9 +124,14 @@ void WriteFile(vtkImageData* image, const fs::path& path, OIIO::TypeDesc fileTyp
     throw std::runtime_error("cannot write test image " + path.string() + ": " +
       (out ? out->geterror() : OIIO::geterror()));
   }
+  // Each row from a copy with room after it: OpenImageIO 2.4's HEIF writer reads past the end
+  // of rows (the tool works around it in its own way).
+  const size_t rowBytes = static_cast<size_t>(dims[0]) * channels * bufferType.size();
+  std::vector<char> rowCopy(rowBytes + 256, 0);
   for (int row = 0; row < dims[1]; ++row)
   {
-    if (!out->write_scanline(row, 0, bufferType, image->GetScalarPointer(0, dims[1] - 1 - row, 0)))
+    std::memcpy(rowCopy.data(), image->GetScalarPointer(0, dims[1] - 1 - row, 0), rowBytes);
+    if (!out->write_scanline(row, 0, bufferType, rowCopy.data()))
     {
       throw std::runtime_error("cannot write test image " + path.string() + ": " + out->geterror());
     }
