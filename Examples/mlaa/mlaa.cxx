@@ -14,6 +14,7 @@
  * bad command line); OUTPUT is then left as it was (see WriteImageFile).
  */
 
+#include "mlaaCrashReport.h"
 #include "mlaaImageFile.h"
 
 #include "vtkCallbackCommand.h"
@@ -262,6 +263,13 @@ void PrintUsage(std::ostream& os)
   option("--value-range LO HI|auto", text);
 
   text.str("");
+  text << "The largest image, in pixels (width x height), that INPUT and the depth image may "
+          "be; checked from the file's header before anything is allocated. Default: what "
+          "fits in half of the memory available now (about "
+       << mlaa::DefaultMaxPixels(4, OIIO::TypeDesc::UINT8) << " RGBA 8-bit pixels).";
+  option("--max-pixels N", text);
+
+  text.str("");
   text << "Write the area texture of section 4.3.3 (Figure 4.2) to OUTPUT instead, for cells "
           "of D texels (D = 2 * search steps + 1: 9, 17, 33, ...; D in ["
        << texture->GetMaxDistanceMinValue() + 1 << ", " << texture->GetMaxDistanceMaxValue() + 1
@@ -281,8 +289,18 @@ void PrintUsage(std::ostream& os)
     "once complete: if anything fails, an existing OUTPUT is left untouched.");
   os << "\n";
   PrintWrapped(os, "", 0,
+    "INPUT (and the depth image) must be regular files: directories, FIFOs, devices and "
+    "sockets are refused. OUTPUT's format must hold the image: formats without alpha (JPEG, "
+    "PNM, HDR) get the colour channels and GIF and ICO an added alpha channel, each with a "
+    "warning; what a format cannot hold, or OpenImageIO 2.4 is known to write wrongly (JPEG "
+    "2000, FITS, RLA, grey + alpha DPX), is refused. The written file is read back (size and "
+    "channels) before it replaces OUTPUT.");
+  os << "\n";
+  PrintWrapped(os, "", 0,
     "Exit status: 0 on success; 1 if reading, antialiasing or writing failed; 2 for a bad "
-    "command line. Errors are one line on stderr starting with \"mlaa: \".");
+    "command line. Errors are one line on stderr, \"mlaa: FILE: what went wrong\". If a "
+    "library crashes, a line saying so and what the library printed are shown, and no "
+    "temporary file is left behind.");
 }
 
 //------------------------------------------------------------------------------
@@ -315,6 +333,7 @@ struct CommandLine
   int ValueRangeMode = 0;               // ValueRangeDefault, ValueRangeGiven or ValueRangeAuto
   int AlphaMode = AlphaAuto;
   int AreaTextureCellSize = 0;            // 0: antialias INPUT
+  unsigned long long MaxPixels = 0;       // 0: mlaa::DefaultMaxPixels
   std::vector<std::string> FilterOptions; // the options given that configure the filter
   std::vector<std::string> Files;
 };
@@ -547,6 +566,19 @@ void ParseCommandLine(const std::vector<std::string>& args, CommandLine& cl)
       cl.ValueRange[1] = range[1];
       cl.ValueRangeMode = ValueRangeGiven;
     }
+    else if (name == "--max-pixels")
+    {
+      const std::string text = takeValues(1)[0];
+      char* end = nullptr;
+      errno = 0;
+      const unsigned long long value = std::strtoull(text.c_str(), &end, 10);
+      if (text.empty() || text[0] == '-' || *end != '\0' || errno != 0 || value == 0)
+      {
+        throw UsageError("--max-pixels: '" + text + "' is not a positive integer");
+      }
+      cl.MaxPixels = value;
+      continue; // not a filter option
+    }
     else if (name == "--area-texture")
     {
       const std::string text = takeValues(1)[0];
@@ -721,7 +753,7 @@ void WriteAreaTexture(int cellSize, const std::string& path)
     OIIO::ImageSpec(size, size, 3, OIIO::TypeDesc::UINT8), OIIO::TypeDesc::UINT8, unitRange);
   if (!note.empty())
   {
-    std::cerr << "mlaa: warning: " << note << std::endl;
+    std::cerr << "mlaa: warning: " << mlaa::Printable(note, 600) << std::endl;
   }
 }
 
@@ -755,10 +787,10 @@ void Antialias(const CommandLine& cl)
 {
   const std::string& inputPath = cl.Files[0];
   const std::string& outputPath = cl.Files[1];
-  const mlaa::ImageFile input = mlaa::ReadImageFile(inputPath);
+  const mlaa::ImageFile input = mlaa::ReadImageFile(inputPath, cl.MaxPixels);
   if (!input.Warning.empty())
   {
-    std::cerr << "mlaa: warning: " << input.Warning << std::endl;
+    std::cerr << "mlaa: warning: " << mlaa::Printable(input.Warning, 600) << std::endl;
   }
 
   // Straight alpha unless the file holds premultiplied colours: OpenEXR always does, TIFF does
@@ -788,21 +820,21 @@ void Antialias(const CommandLine& cl)
   mlaa::ImageFile depth;
   if (!cl.DepthImage.empty())
   {
-    depth = mlaa::ReadImageFile(cl.DepthImage);
+    depth = mlaa::ReadImageFile(cl.DepthImage, cl.MaxPixels);
     if (!depth.Warning.empty())
     {
-      std::cerr << "mlaa: warning: " << depth.Warning << std::endl;
+      std::cerr << "mlaa: warning: " << mlaa::Printable(depth.Warning, 600) << std::endl;
     }
     if (depth.Spec.nchannels != 1)
     {
-      throw mlaa::Error("the depth image '" + cl.DepthImage + "' has " +
+      throw mlaa::Error(mlaa::Printable(cl.DepthImage) + ": the depth image has " +
         std::to_string(depth.Spec.nchannels) + " channels; it must have 1");
     }
     if (depth.Spec.width != input.Spec.width || depth.Spec.height != input.Spec.height)
     {
-      throw mlaa::Error("the depth image '" + cl.DepthImage + "' is " +
+      throw mlaa::Error(mlaa::Printable(cl.DepthImage) + ": the depth image is " +
         std::to_string(depth.Spec.width) + "x" + std::to_string(depth.Spec.height) + ", '" +
-        inputPath + "' is " + std::to_string(input.Spec.width) + "x" +
+        mlaa::Printable(inputPath) + "' is " + std::to_string(input.Spec.width) + "x" +
         std::to_string(input.Spec.height));
     }
     filter->SetDepthInputData(depth.Image);
@@ -817,13 +849,13 @@ void Antialias(const CommandLine& cl)
   const std::string error = messages.GetError();
   if (!error.empty() || !scalars || dims[0] != input.Spec.width || dims[1] != input.Spec.height)
   {
-    throw mlaa::Error("cannot antialias '" + inputPath +
-      "': " + (error.empty() ? std::string("vtkImageMLAA produced no image") : error));
+    throw mlaa::Error(mlaa::Printable(inputPath) +
+      ": cannot antialias: " + (error.empty() ? std::string("vtkImageMLAA produced no image") : error));
   }
   const std::string warnings = messages.GetWarnings();
   if (!warnings.empty())
   {
-    std::cerr << "mlaa: warning: " << warnings << std::endl;
+    std::cerr << "mlaa: warning: " << mlaa::Printable(warnings, 600) << std::endl;
   }
 
   // The antialiased image keeps the input's description and pixel type; a debug image is
@@ -846,7 +878,7 @@ void Antialias(const CommandLine& cl)
     mlaa::WriteImageFile(result, outputPath, description, pixelType, valueRange);
   if (!note.empty())
   {
-    std::cerr << "mlaa: warning: " << note << std::endl;
+    std::cerr << "mlaa: warning: " << mlaa::Printable(note, 600) << std::endl;
   }
 }
 } // namespace
@@ -854,6 +886,7 @@ void Antialias(const CommandLine& cl)
 //------------------------------------------------------------------------------
 int main(int argc, char* argv[])
 {
+  mlaa::InstallCrashReport();
   const std::vector<std::string> args(argv + 1, argv + argc);
   int status = EXIT_SUCCESS;
   try
@@ -875,12 +908,13 @@ int main(int argc, char* argv[])
   }
   catch (const UsageError& e)
   {
-    std::cerr << "mlaa: " << e.what() << " (see mlaa --help)" << std::endl;
+    std::cerr << "mlaa: " << mlaa::Printable(e.what(), 400, false) << " (see mlaa --help)"
+              << std::endl;
     status = ExitUsage;
   }
   catch (const std::exception& e)
   {
-    std::cerr << "mlaa: " << e.what() << std::endl;
+    std::cerr << "mlaa: " << mlaa::Printable(e.what(), 400) << std::endl;
     status = ExitFailure;
   }
   // Any error OpenImageIO still holds was reported above; leaving it would make OpenImageIO

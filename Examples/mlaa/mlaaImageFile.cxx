@@ -1,4 +1,5 @@
 #include "mlaaImageFile.h"
+#include "mlaaCrashReport.h"
 
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
@@ -8,11 +9,14 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <memory>
 #include <sstream>
@@ -23,91 +27,56 @@ namespace mlaa
 {
 namespace
 {
-// OpenImageIO and the C library report errors that may span several lines; the tool reports
-// exactly one.
-std::string OneLine(const std::string& text)
+// A line with its digits left out: libraries repeat one message per scanline or strip with
+// only the number changing.
+std::string WithoutNumbers(const std::string& line)
 {
-  std::string line;
-  bool pendingBreak = false;
-  for (char c : text)
+  std::string shape;
+  for (char c : line)
   {
-    if (c == '\n' || c == '\r')
+    if (c < '0' || c > '9')
     {
-      pendingBreak = !line.empty();
-      continue;
+      shape += c;
     }
-    if (pendingBreak)
+    else if (shape.empty() || shape.back() != '#')
     {
-      line += "; ";
-      pendingBreak = false;
+      shape += '#';
     }
-    line += c;
   }
-  return line.empty() ? std::string("unknown error") : line;
+  return shape;
 }
 
-// What the libraries under OpenImageIO print on stderr themselves (libpng does, before
-// OpenImageIO turns its errors into messages of its own), captured instead of shown: the tool's
-// errors are one line, and its warnings too.
-class LibraryMessages
+// The length of the valid UTF-8 sequence at text[i] that is not a control character, or 0.
+size_t PrintableUTF8Length(const std::string& text, size_t i)
 {
-public:
-  LibraryMessages()
+  const unsigned char c = static_cast<unsigned char>(text[i]);
+  size_t length = c >= 0xf0 && c <= 0xf4 ? 4 : c >= 0xe0 ? 3 : c >= 0xc2 && c < 0xe0 ? 2 : 0;
+  if (length == 0 || i + length > text.size())
   {
-    std::fflush(stderr);
-    this->Capture = std::tmpfile();
-    this->SavedStderr = this->Capture ? dup(STDERR_FILENO) : -1;
-    if (this->SavedStderr < 0 || dup2(fileno(this->Capture), STDERR_FILENO) < 0)
+    return 0;
+  }
+  for (size_t k = 1; k < length; ++k)
+  {
+    if ((static_cast<unsigned char>(text[i + k]) & 0xc0) != 0x80)
     {
-      this->Restore(); // nothing captured: messages show, nothing else goes wrong
+      return 0;
     }
   }
-
-  ~LibraryMessages() { this->Restore(); }
-
-  // Stops capturing; returns what was printed, as one line ("" if nothing).
-  std::string Finish()
+  // U+0080..U+009F are the C1 control characters.
+  if (c == 0xc2 && static_cast<unsigned char>(text[i + 1]) < 0xa0)
   {
-    const bool captured = this->SavedStderr >= 0;
-    std::string text;
-    if (captured)
-    {
-      std::fflush(stderr);
-      std::rewind(this->Capture);
-      char buffer[4096];
-      size_t n;
-      while ((n = std::fread(buffer, 1, sizeof(buffer), this->Capture)) > 0)
-      {
-        text.append(buffer, n);
-      }
-    }
-    this->Restore();
-    return text.find_first_not_of(" \t\r\n") == std::string::npos ? std::string() : OneLine(text);
+    return 0;
   }
+  return length;
+}
 
-private:
-  LibraryMessages(const LibraryMessages&) = delete;
-  void operator=(const LibraryMessages&) = delete;
-
-  void Restore()
-  {
-    if (this->SavedStderr >= 0)
-    {
-      std::fflush(stderr);
-      dup2(this->SavedStderr, STDERR_FILENO);
-      close(this->SavedStderr);
-      this->SavedStderr = -1;
-    }
-    if (this->Capture)
-    {
-      std::fclose(this->Capture);
-      this->Capture = nullptr;
-    }
-  }
-
-  std::FILE* Capture = nullptr;
-  int SavedStderr = -1;
-};
+// An error of OpenImageIO's (possibly empty) as one line, or `fallback` if it says nothing.
+std::string OneLine(const std::string& text, const std::string& fallback = "")
+{
+  const std::string line = Printable(text);
+  return line.empty() ? (fallback.empty() ? std::string("OpenImageIO gave no reason") : fallback)
+                      : line;
+}
 
 // Where several channels have their own types (an EXR file with half colour and float depth,
 // say), all are read as the most precise one: floating point over integers, then the widest.
@@ -212,10 +181,11 @@ public:
     const int fd = mkstemps(name.data(), static_cast<int>(extension.size()));
     if (fd < 0)
     {
-      throw Error("cannot write '" + destination + "': cannot create a file in '" +
-        directory.string() + "': " + std::strerror(errno));
+      throw Error(Printable(destination) + ": cannot create a file in '" +
+        Printable(directory.string()) + "': " + std::strerror(errno));
     }
     this->Path = name.data();
+    SetTemporaryOutput(this->Path.c_str()); // removed even if a library crashes
 
     // mkstemps creates the file for its owner only; give it the permissions of the file it
     // replaces, or those a newly created file gets.
@@ -236,8 +206,8 @@ public:
     close(fd);
     if (chmodResult != 0)
     {
-      throw Error("cannot write '" + destination + "': cannot set the permissions of '" +
-        this->Path + "': " + std::strerror(chmodErrno));
+      throw Error(Printable(destination) + ": cannot set the permissions of '" +
+        Printable(this->Path) + "': " + std::strerror(chmodErrno));
     }
   }
 
@@ -246,6 +216,7 @@ public:
     if (!this->Path.empty())
     {
       std::remove(this->Path.c_str());
+      SetTemporaryOutput(nullptr);
     }
   }
 
@@ -256,9 +227,10 @@ public:
   {
     if (std::rename(this->Path.c_str(), destination.c_str()) != 0)
     {
-      throw Error("cannot write '" + destination + "': " + std::strerror(errno));
+      throw Error(Printable(destination) + ": cannot replace it: " + std::strerror(errno));
     }
     this->Path.clear();
+    SetTemporaryOutput(nullptr);
   }
 
 private:
@@ -268,6 +240,124 @@ private:
   std::string Path;
 };
 } // namespace
+
+//------------------------------------------------------------------------------
+std::string Printable(const std::string& text, size_t maxLength, bool joinLines)
+{
+  if (!joinLines)
+  {
+    std::string escaped;
+    for (char c : text)
+    {
+      escaped += c == '\n' ? std::string("\\x0a") : c == '\r' ? std::string("\\x0d") : std::string(1, c);
+    }
+    return Printable(escaped, maxLength, true);
+  }
+  // Lines, each once, in order of first appearance, with how often they (or lines that differ
+  // only in their numbers) came.
+  std::vector<std::pair<std::string, int>> lines;
+  std::vector<std::string> shapes;
+  size_t begin = 0;
+  while (begin <= text.size())
+  {
+    size_t end = text.find_first_of("\r\n", begin);
+    if (end == std::string::npos)
+    {
+      end = text.size();
+    }
+    std::string line = text.substr(begin, end - begin);
+    const size_t first = line.find_first_not_of(" \t");
+    const size_t last = line.find_last_not_of(" \t");
+    line = first == std::string::npos ? "" : line.substr(first, last - first + 1);
+    if (!line.empty())
+    {
+      const std::string shape = WithoutNumbers(line);
+      const auto seen = std::find(shapes.begin(), shapes.end(), shape);
+      if (seen == shapes.end())
+      {
+        shapes.push_back(shape);
+        lines.emplace_back(line, 1);
+      }
+      else
+      {
+        ++lines[static_cast<size_t>(seen - shapes.begin())].second;
+      }
+    }
+    begin = end + 1;
+  }
+
+  std::string joined;
+  for (const auto& line : lines)
+  {
+    joined += (joined.empty() ? "" : "; ") + line.first;
+    if (line.second > 1)
+    {
+      joined += " (" + std::to_string(line.second) + " times)";
+    }
+  }
+
+  std::string printable;
+  for (size_t i = 0; i < joined.size() && printable.size() < maxLength + 8;)
+  {
+    const unsigned char c = static_cast<unsigned char>(joined[i]);
+    if (c >= 0x20 && c < 0x7f)
+    {
+      printable += static_cast<char>(c);
+      ++i;
+      continue;
+    }
+    const size_t length = c >= 0x80 ? PrintableUTF8Length(joined, i) : 0;
+    if (length)
+    {
+      printable.append(joined, i, length);
+      i += length;
+      continue;
+    }
+    const char* hex = "0123456789abcdef";
+    printable += "\\x";
+    printable += hex[c >> 4];
+    printable += hex[c & 15];
+    ++i;
+  }
+  if (printable.size() > maxLength)
+  {
+    // Cut at a character boundary, not inside a UTF-8 sequence.
+    size_t cut = maxLength - 3;
+    while (cut > 0 && (static_cast<unsigned char>(printable[cut]) & 0xc0) == 0x80)
+    {
+      --cut;
+    }
+    printable = printable.substr(0, cut) + "...";
+  }
+  return printable;
+}
+
+//------------------------------------------------------------------------------
+std::uint64_t DefaultMaxPixels(int channels, OIIO::TypeDesc type)
+{
+  // Bytes per pixel: the input and the output images, a double copy of floating-point values
+  // rescaled for an integer format, and the filter's edges, weights and contrasts (about 16).
+  const std::uint64_t valueBytes = type.is_floating_point() ? std::max<size_t>(type.size(), 4)
+                                                            : std::max<size_t>(type.size(), 1);
+  const std::uint64_t perPixel =
+    2 * valueBytes * static_cast<std::uint64_t>(channels) + 8 * channels + 16;
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key;
+  std::uint64_t kilobytes = 0;
+  while (meminfo >> key)
+  {
+    if (key == "MemAvailable:" && meminfo >> kilobytes)
+    {
+      break;
+    }
+    meminfo.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+  }
+  if (kilobytes == 0)
+  {
+    return std::uint64_t(1) << 28;
+  }
+  return kilobytes * 1024 / 2 / perPixel;
+}
 
 //------------------------------------------------------------------------------
 int GetVTKScalarType(OIIO::TypeDesc type)
@@ -304,21 +394,154 @@ int GetVTKScalarType(OIIO::TypeDesc type)
   }
 }
 
-//------------------------------------------------------------------------------
-ImageFile ReadImageFile(const std::string& path)
+namespace
 {
-  const std::string what = "cannot read '" + path + "': ";
+// A path as it may appear in a message: control bytes escaped, length bounded.
+std::string Name(const std::string& path)
+{
+  return Printable(path, 160, false);
+}
+
+// Only regular files are read: a FIFO blocks the reader, /dev/zero and its kind never end, a
+// directory or socket is no image. Checked before any library opens the file.
+void CheckRegularFile(const std::string& path)
+{
   struct stat status;
   if (stat(path.c_str(), &status) != 0)
   {
-    throw Error(what + std::strerror(errno));
+    throw Error(Name(path) + ": " + std::strerror(errno));
   }
-  if (S_ISDIR(status.st_mode))
+  const char* kind = S_ISDIR(status.st_mode) ? "a directory"
+    : S_ISFIFO(status.st_mode)               ? "a FIFO (named pipe)"
+    : S_ISCHR(status.st_mode)                ? "a character device"
+    : S_ISBLK(status.st_mode)                ? "a block device"
+    : S_ISSOCK(status.st_mode)               ? "a socket"
+                                             : nullptr;
+  if (kind)
   {
-    throw Error(what + "it is a directory");
+    throw Error(Name(path) + ": is " + kind + ", not a regular file");
   }
+  if (!S_ISREG(status.st_mode))
+  {
+    throw Error(Name(path) + ": is not a regular file");
+  }
+  if (status.st_size == 0)
+  {
+    throw Error(Name(path) + ": the file is empty");
+  }
+}
 
-  LibraryMessages messages;
+// What a writer of OpenImageIO 2.4 does with an image of 1 to 4 channels, found by writing
+// and reading back every case (the tool's tests keep checking it).
+enum class Channels
+{
+  Keep,       // written as they are
+  DropAlpha,  // the format has no alpha: the colour channels are written
+  AddAlpha,   // the writer always writes 4 channels (GIF, ICO)
+  Refuse      // the writer refuses them or is known to get them wrong
+};
+
+struct WriterRule
+{
+  const char* Format;
+  Channels ByCount[4];  // for 1, 2, 3, 4 channels
+  const char* Why;      // for Refuse
+};
+
+const WriterRule WriterRules[] = {
+  { "bmp", { Channels::Keep, Channels::Refuse, Channels::Keep, Channels::Keep },
+    "BMP files have no grey + alpha" },
+  { "dpx", { Channels::Keep, Channels::Refuse, Channels::Keep, Channels::Keep },
+    "OpenImageIO's DPX writer aborts on grey + alpha" },
+  { "gif", { Channels::Refuse, Channels::Refuse, Channels::AddAlpha, Channels::Keep },
+    "OpenImageIO's GIF writer takes only RGB and RGBA" },
+  { "hdr", { Channels::Refuse, Channels::Refuse, Channels::Keep, Channels::DropAlpha },
+    "HDR (RGBE) files hold RGB only" },
+  { "heif", { Channels::Refuse, Channels::Refuse, Channels::Keep, Channels::Keep },
+    "OpenImageIO's HEIF writer takes only RGB and RGBA" },
+  { "ico", { Channels::AddAlpha, Channels::AddAlpha, Channels::AddAlpha, Channels::Keep }, "" },
+  { "iff", { Channels::Refuse, Channels::Refuse, Channels::Keep, Channels::Keep },
+    "IFF files hold RGB and RGBA only" },
+  { "jpeg", { Channels::Keep, Channels::DropAlpha, Channels::Keep, Channels::DropAlpha }, "" },
+  { "pnm", { Channels::Keep, Channels::DropAlpha, Channels::Keep, Channels::DropAlpha }, "" },
+  { "webp", { Channels::Refuse, Channels::Refuse, Channels::Keep, Channels::Keep },
+    "OpenImageIO's WebP writer takes only RGB and RGBA" },
+  { "zfile", { Channels::Keep, Channels::Refuse, Channels::Refuse, Channels::Refuse },
+    "Zfile files hold one channel" },
+  { "jpeg2000", { Channels::Refuse, Channels::Refuse, Channels::Refuse, Channels::Refuse },
+    "OpenImageIO 2.4's JPEG 2000 writer writes files that cannot be read back" },
+  { "fits", { Channels::Refuse, Channels::Refuse, Channels::Refuse, Channels::Refuse },
+    "OpenImageIO 2.4's FITS writer writes truncated or transposed images" },
+  { "rla", { Channels::Refuse, Channels::Refuse, Channels::Refuse, Channels::Refuse },
+    "OpenImageIO 2.4's RLA writer writes wrong headers (a width of -1)" },
+  { "null", { Channels::Refuse, Channels::Refuse, Channels::Refuse, Channels::Refuse },
+    "the null format writes no file" },
+  { "term", { Channels::Refuse, Channels::Refuse, Channels::Refuse, Channels::Refuse },
+    "the term format draws on a terminal and writes no file" },
+};
+
+Channels RuleFor(const std::string& format, int channels, std::string& why)
+{
+  for (const WriterRule& rule : WriterRules)
+  {
+    if (format == rule.Format && channels >= 1 && channels <= 4)
+    {
+      why = rule.Why;
+      return rule.ByCount[channels - 1];
+    }
+  }
+  return Channels::Keep; // other writers: the read-back check below is the safeguard
+}
+
+const char* ChannelWord(int channels)
+{
+  switch (channels)
+  {
+    case 1:
+      return "grey";
+    case 2:
+      return "grey + alpha";
+    case 3:
+      return "RGB";
+    case 4:
+      return "RGBA";
+    default:
+      return "other";
+  }
+}
+
+// For tests only: MLAA_TEST_CRASH_WHILE_WRITING=abort|segv|exit makes the tool fail as a library
+// would, after a library message, while it writes, so that the tests can see a crash reported.
+void SimulateLibraryCrashForTests()
+{
+  const char* crash = std::getenv("MLAA_TEST_CRASH_WHILE_WRITING");
+  if (!crash || !*crash)
+  {
+    return;
+  }
+  std::fprintf(stderr, "simulated library message before a crash\n");
+  if (std::strcmp(crash, "abort") == 0)
+  {
+    std::abort();
+  }
+  if (std::strcmp(crash, "segv") == 0)
+  {
+    std::raise(SIGSEGV);
+  }
+  if (std::strcmp(crash, "exit") == 0)
+  {
+    std::exit(3);
+  }
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+ImageFile ReadImageFile(const std::string& path, std::uint64_t maxPixels)
+{
+  const std::string what = Name(path) + ": ";
+  CheckRegularFile(path);
+
+  CapturedStderr messages(Name(path), "OpenImageIO was reading it");
   // Keep unassociated alpha as stored (PNG, TIFF): premultiplying it on reading and dividing
   // it out again on writing would change pixels that antialiasing leaves alone.
   OIIO::ImageSpec config;
@@ -326,7 +549,10 @@ ImageFile ReadImageFile(const std::string& path)
   std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::open(path, &config);
   if (!input)
   {
-    throw Error(what + OneLine(OIIO::geterror()));
+    const std::string printed = messages.Finish();
+    throw Error(what +
+      OneLine(OIIO::geterror() + "\n" + printed,
+        "OpenImageIO cannot read it (no reader knows it, or the file is damaged)"));
   }
 
   ImageFile file;
@@ -344,13 +570,38 @@ ImageFile ReadImageFile(const std::string& path)
   }
   if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1)
   {
-    throw Error(what + "the image is empty");
+    throw Error(what + "the image is empty (" + std::to_string(spec.width) + " x " +
+      std::to_string(spec.height) + " pixels, " + std::to_string(spec.nchannels) + " channels)");
   }
   file.PixelType = FilePixelType(spec);
   const int vtkType = GetVTKScalarType(file.PixelType);
   if (!vtkType)
   {
     throw Error(what + "pixels of type " + file.PixelType.c_str() + " are not supported");
+  }
+  // vtkImageMLAA takes up to 4 channels; more would only cost memory before it says so.
+  if (spec.nchannels > 64)
+  {
+    throw Error(what + "the file claims " + std::to_string(spec.nchannels) +
+      " channels; at most 4 can be antialiased");
+  }
+
+  // The size comes from the header, which may lie: checked before anything is allocated.
+  const std::uint64_t pixels =
+    static_cast<std::uint64_t>(spec.width) * static_cast<std::uint64_t>(spec.height);
+  const bool defaultLimit = maxPixels == 0;
+  const std::uint64_t limit =
+    defaultLimit ? DefaultMaxPixels(spec.nchannels, file.PixelType) : maxPixels;
+  const std::uint64_t hardLimit = std::numeric_limits<int>::max() / 4; // VTK's point ids
+  if (pixels > limit || pixels > hardLimit)
+  {
+    throw Error(what + "the image is " + std::to_string(spec.width) + " x " +
+      std::to_string(spec.height) + " = " + std::to_string(pixels) + " pixels, more than " +
+      (pixels > hardLimit ? "the tool can hold (" + std::to_string(hardLimit) + ")"
+                          : defaultLimit
+            ? "the " + std::to_string(limit) +
+              " that fit in half of the available memory (--max-pixels N raises the limit)"
+            : "--max-pixels " + std::to_string(limit)));
   }
 
   file.Image = vtkSmartPointer<vtkImageData>::New();
@@ -366,13 +617,18 @@ ImageFile ReadImageFile(const std::string& path)
   char* lastRow = static_cast<char*>(file.Image->GetScalarPointer()) + (spec.height - 1) * rowBytes;
   if (!input->read_image(0, 0, 0, spec.nchannels, bufferType, lastRow, OIIO::AutoStride, -rowBytes))
   {
-    throw Error(what + OneLine(input->geterror()));
+    const std::string error = input->geterror();
+    const std::string printed = messages.Finish();
+    throw Error(what +
+      OneLine(error + "\n" + printed,
+        "cannot read the pixels (OpenImageIO's " + file.FormatName +
+          " reader gave no reason: the file is probably truncated or damaged)"));
   }
   input->close();
-  const std::string printed = messages.Finish();
+  const std::string printed = Printable(messages.Finish());
   if (!printed.empty())
   {
-    file.Warning = "reading '" + path + "': " + printed;
+    file.Warning = what + "while reading: " + printed;
   }
   return file;
 }
@@ -381,7 +637,7 @@ ImageFile ReadImageFile(const std::string& path)
 std::string WriteImageFile(vtkImageData* image, const std::string& path,
   const OIIO::ImageSpec& description, OIIO::TypeDesc pixelType, const double valueRange[2])
 {
-  const std::string what = "cannot write '" + path + "': ";
+  const std::string what = Name(path) + ": ";
   vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
   int dims[3] = { 0, 0, 0 };
   if (image)
@@ -403,23 +659,54 @@ std::string WriteImageFile(vtkImageData* image, const std::string& path,
   {
     throw Error(what + "pixels of type " + scalars->GetDataTypeAsString() + " cannot be written");
   }
+  // Only a file is replaced: not a directory, a device or a FIFO.
+  struct stat existing;
+  if (stat(path.c_str(), &existing) == 0 && !S_ISREG(existing.st_mode))
+  {
+    throw Error(what + "exists and is not a regular file; OUTPUT must name a file");
+  }
 
-  LibraryMessages messages; // declared first: also covers the writer's destruction
+  CapturedStderr messages(Name(path), "OpenImageIO was writing it"); // also covers the writer's destruction
   // The writer comes from the destination's extension, before any file is created.
   std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create(path);
   if (!output)
   {
     OIIO::geterror(); // consumed: the message below says it in one line
     throw Error(what +
-      "OpenImageIO has no writer for files named like this (unsupported "
-      "format '" +
-      std::filesystem::path(path).extension().string() + "')");
+      "OpenImageIO has no writer for files named like this (unsupported format '" +
+      Printable(std::filesystem::path(path).extension().string(), 40) + "')");
   }
+  const std::string formatName = output->format_name();
+
+  // What the writer is given: all channels, or the colour ones of a format without alpha.
+  std::string why;
+  const Channels rule = RuleFor(formatName, channels, why);
+  std::string ignored;
+  const bool refusesAll = RuleFor(formatName, 1, ignored) == Channels::Refuse &&
+    RuleFor(formatName, 3, ignored) == Channels::Refuse &&
+    RuleFor(formatName, 4, ignored) == Channels::Refuse;
+  if (refusesAll)
+  {
+    throw Error(what + "the tool does not write " + formatName + " files: " + why);
+  }
+  if (rule == Channels::Refuse)
+  {
+    throw Error(what + "cannot write " + std::to_string(channels) + "-channel (" +
+      ChannelWord(channels) + ") images as " + formatName + ": " + why);
+  }
+  const int written = rule == Channels::DropAlpha ? channels - 1 : channels;
+  const int expectedChannels = rule == Channels::AddAlpha ? 4 : written;
 
   OIIO::ImageSpec spec = description;
   spec.width = dims[0];
   spec.height = dims[1];
   spec.depth = 1;
+  spec.nchannels = written;
+  spec.channelnames.resize(static_cast<size_t>(written));
+  if (spec.alpha_channel >= written)
+  {
+    spec.alpha_channel = -1;
+  }
   spec.set_format(pixelType);
   spec.channelformats.clear();
   spec.tile_width = spec.tile_height = 0;
@@ -433,19 +720,27 @@ std::string WriteImageFile(vtkImageData* image, const std::string& path,
   }
 
   TemporaryFile temporary(path);
+  // On failure the writer is destroyed before the temporary file is removed: writers that
+  // write on closing (HEIF) would otherwise create it again.
+  struct WriterFirst
+  {
+    std::unique_ptr<OIIO::ImageOutput>& Output;
+    ~WriterFirst() { this->Output.reset(); }
+  } writerFirst{ output };
   if (!output->open(temporary.GetPath(), spec))
   {
-    throw Error(what + OneLine(output->geterror()));
+    const std::string error = output->geterror();
+    throw Error(what + OneLine(error + "\n" + messages.Finish()));
   }
-  const OIIO::TypeDesc written = output->spec().format;
-  const std::string formatName = output->format_name();
+  const OIIO::TypeDesc writtenType = output->spec().format;
+  SimulateLibraryCrashForTests();
 
   // Floating-point pixels in an integer format: OpenImageIO maps [0, 1] to the whole integer
   // range; map the value range there instead.
   const void* pixels = scalars->GetVoidPointer(0);
   std::vector<double> rescaled;
   OIIO::TypeDesc sourceType = bufferType;
-  const bool floatToInteger = bufferType.is_floating_point() && !written.is_floating_point();
+  const bool floatToInteger = bufferType.is_floating_point() && !writtenType.is_floating_point();
   if (floatToInteger && (valueRange[0] != 0.0 || valueRange[1] != 1.0))
   {
     const vtkIdType count = scalars->GetNumberOfValues();
@@ -462,37 +757,91 @@ std::string WriteImageFile(vtkImageData* image, const std::string& path,
     sourceType = OIIO::TypeDesc::DOUBLE;
   }
 
-  const OIIO::stride_t rowBytes =
-    static_cast<OIIO::stride_t>(dims[0]) * channels * sourceType.size();
+  // Pixels are `channels` values apart; the writer takes the first `written` of each.
+  const OIIO::stride_t pixelBytes = static_cast<OIIO::stride_t>(channels) * sourceType.size();
+  const OIIO::stride_t rowBytes = static_cast<OIIO::stride_t>(dims[0]) * pixelBytes;
   const char* lastRow = static_cast<const char*>(pixels) + (dims[1] - 1) * rowBytes;
-  if (!output->write_image(sourceType, lastRow, OIIO::AutoStride, -rowBytes))
+  bool ok;
+  if (formatName == "heif")
   {
-    throw Error(what + OneLine(output->geterror()));
+    // OpenImageIO 2.4's HEIF writer copies each row with the length of libheif's (aligned)
+    // row, reading past the end of rows whose length is not a multiple of it. It is given 8-bit
+    // rows (all it writes) with room after each.
+    const OIIO::stride_t rowOut = static_cast<OIIO::stride_t>(dims[0]) * written;
+    const OIIO::stride_t paddedRow = rowOut + 256;
+    std::vector<unsigned char> padded(static_cast<size_t>(paddedRow) * dims[1], 0);
+    ok = OIIO::convert_image(written, dims[0], dims[1], 1, lastRow, sourceType, pixelBytes,
+      -rowBytes, OIIO::AutoStride, padded.data(), OIIO::TypeDesc::UINT8, written, paddedRow,
+      OIIO::AutoStride);
+    for (int row = 0; ok && row < dims[1]; ++row)
+    {
+      ok = output->write_scanline(row, 0, OIIO::TypeDesc::UINT8, padded.data() + row * paddedRow);
+    }
+  }
+  else
+  {
+    ok = output->write_image(sourceType, lastRow, pixelBytes, -rowBytes);
+  }
+  if (!ok)
+  {
+    const std::string error = output->geterror();
+    throw Error(what + OneLine(error + "\n" + messages.Finish()));
   }
   if (!output->close())
   {
-    throw Error(what + OneLine(output->geterror()));
+    const std::string error = output->geterror();
+    throw Error(what + OneLine(error + "\n" + messages.Finish()));
   }
   output.reset();
+
+  // Read back before it replaces anything: a writer that reported success may still have
+  // written something else.
+  {
+    std::unique_ptr<OIIO::ImageInput> check = OIIO::ImageInput::open(temporary.GetPath());
+    if (!check)
+    {
+      const std::string error = OIIO::geterror();
+      throw Error(what + "OpenImageIO's " + formatName +
+        " writer wrote a file that cannot be read back (" + OneLine(error + "\n" + messages.Finish()) +
+        ")");
+    }
+    const OIIO::ImageSpec& back = check->spec();
+    if (back.width != dims[0] || back.height != dims[1] || back.nchannels != expectedChannels)
+    {
+      throw Error(what + "OpenImageIO's " + formatName + " writer wrote a " +
+        std::to_string(back.width) + " x " + std::to_string(back.height) + " image with " +
+        std::to_string(back.nchannels) + " channels instead of " + std::to_string(dims[0]) +
+        " x " + std::to_string(dims[1]) + " with " + std::to_string(expectedChannels) +
+        "; nothing was written");
+    }
+    check->close();
+  }
   temporary.Commit(path);
 
-  const std::string printed = messages.Finish();
-  std::string note = printed.empty() ? "" : "writing '" + path + "': " + printed;
-  if (written.basetype == pixelType.basetype)
+  const std::string printed = Printable(messages.Finish());
+  std::string note = printed.empty() ? "" : what + "while writing: " + printed;
+  if (expectedChannels != channels)
+  {
+    note += note.empty() ? "" : "; ";
+    note += what + formatName + " files cannot hold " + ChannelWord(channels) + " images: wrote " +
+      ChannelWord(expectedChannels) + " (" +
+      (expectedChannels < channels ? "alpha dropped" : "alpha added") + ")";
+  }
+  if (writtenType.basetype == pixelType.basetype)
   {
     return note;
   }
   note += note.empty() ? "" : "; ";
-  note += "'" + path + "': " + formatName + " files cannot hold " + pixelType.c_str() +
-    " pixels; wrote " + written.c_str();
+  note += what + formatName + " files cannot hold " + pixelType.c_str() + " pixels; wrote " +
+    writtenType.c_str();
   if (floatToInteger)
   {
     std::ostringstream range;
     range << " (values in [" << valueRange[0] << ", " << valueRange[1] << "] scaled to 0.."
-          << IntegerTypeMaximum(written) << ", others clamped)";
+          << IntegerTypeMaximum(writtenType) << ", others clamped)";
     note += range.str();
   }
-  else if (!pixelType.is_floating_point() && written.is_floating_point())
+  else if (!pixelType.is_floating_point() && writtenType.is_floating_point())
   {
     note += " (values scaled to [0, 1])";
   }

@@ -11,9 +11,15 @@
  * unassociated where the format stores it so (PNG, TIFF), so that pixels the filter leaves
  * alone come back bit for bit.
  *
- * Every failure throws mlaa::Error, whose message is one line without the "mlaa: " prefix.
- * What the image libraries print on stderr themselves (libpng does) is captured: it is part of
- * OpenImageIO's error message on failure, and a warning otherwise.
+ * Every failure throws mlaa::Error, whose message is one line "FILE: what" without the "mlaa: "
+ * prefix. What the image libraries print on stderr themselves (libpng does) is captured (see
+ * mlaaCrashReport.h): it is part of OpenImageIO's error message on failure, and a warning
+ * otherwise.
+ *
+ * Hostile files: only regular files are opened (a FIFO would block, a device never ends), the
+ * image size in the header is checked against a limit before anything is allocated, writers are
+ * given only what they are known to handle (see WriteImageFile), and every written file is read
+ * back before it replaces the destination.
  */
 
 #ifndef mlaaImageFile_h
@@ -23,6 +29,7 @@
 
 #include <OpenImageIO/imageio.h> // For OIIO::ImageSpec, OIIO::TypeDesc
 
+#include <cstdint>   // For std::uint64_t
 #include <stdexcept> // For std::runtime_error
 #include <string>    // For std::string
 
@@ -36,6 +43,22 @@ class Error : public std::runtime_error
 public:
   using std::runtime_error::runtime_error;
 };
+
+/**
+ * `text` made safe for one line of a terminal: lines joined with "; ", lines repeated (or the
+ * same but for their numbers, as libraries report one per scanline) given once with a count,
+ * control bytes and invalid UTF-8 written as \xNN, and at most `maxLength` bytes ("..." at the
+ * end when cut). With `joinLines` false, line breaks are escaped too (for names and values
+ * given by the user, which must be shown as they are).
+ */
+std::string Printable(const std::string& text, size_t maxLength = 300, bool joinLines = true);
+
+/**
+ * The largest image, in pixels, that reading `channels` channels of `type` may allocate by
+ * default: what the tool would hold of it (input, output, the filter's buffers) must fit in half
+ * of the memory the kernel says is available (MemAvailable); 2^28 pixels if that is unknown.
+ */
+std::uint64_t DefaultMaxPixels(int channels, OIIO::TypeDesc type);
 
 /** An image read from a file. */
 struct ImageFile
@@ -60,10 +83,12 @@ struct ImageFile
 int GetVTKScalarType(OIIO::TypeDesc type);
 
 /**
- * Reads subimage 0, MIP level 0 of `path`. Throws for a missing or unreadable file, deep data
- * and volumes (images deeper than one slice).
+ * Reads subimage 0, MIP level 0 of `path`. Throws for a missing or unreadable file, anything
+ * but a regular file (directories, FIFOs, devices, sockets), an empty file, deep data, volumes
+ * (images deeper than one slice), and images of more than `maxPixels` pixels (0: the default of
+ * DefaultMaxPixels), checked from the header before the pixels are allocated.
  */
-ImageFile ReadImageFile(const std::string& path);
+ImageFile ReadImageFile(const std::string& path, std::uint64_t maxPixels = 0);
 
 /**
  * Writes `image` (bottom row first, 2D, scalars of any pixel type of GetVTKScalarType) to
@@ -75,12 +100,20 @@ ImageFile ReadImageFile(const std::string& path);
  * When floating-point pixels end up in an integer format, the values in `valueRange` are mapped
  * to the whole integer range and the others clamped (OpenImageIO's conversion maps [0, 1]).
  *
- * The image goes to a new temporary file in the destination's directory, with the same
- * extension; only once it is completely written is it renamed over `path`. On any failure the
- * temporary file is removed and an existing `path` is left untouched.
+ * Writers get only what they are known to take (OpenImageIO 2.4): a format without alpha gets
+ * the colour channels (JPEG, PNM, HDR: a warning says so), GIF and ICO add an alpha channel (a
+ * warning says so), and what a writer cannot hold or is known to get wrong is refused before it
+ * is called: grey + alpha in BMP, DPX (its writer aborts), GIF, IFF, HDR, HEIF, WebP; more than
+ * one channel in Zfile; and every JPEG 2000 (unreadable files), FITS (truncated or transposed
+ * images), RLA (bad headers), null and term output.
  *
- * Returns a one-line note when the written pixel type differs from `pixelType` or the image
- * libraries printed something, else "".
+ * The image goes to a new temporary file in the destination's directory, with the same
+ * extension, which is read back (size and channels) before it is renamed over `path`. On any
+ * failure the temporary file is removed and an existing `path` is left untouched; `path` must
+ * not name anything but a regular file.
+ *
+ * Returns a one-line note when the written pixel type or channels differ from the image's or
+ * the image libraries printed something, else "".
  */
 std::string WriteImageFile(vtkImageData* image, const std::string& path,
   const OIIO::ImageSpec& description, OIIO::TypeDesc pixelType, const double valueRange[2]);
