@@ -13,6 +13,7 @@
 
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
+#include "vtkAlgorithm.h"
 #include "vtkConeSource.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
@@ -32,6 +33,17 @@ void SetActorsVisible(vtkRenderer* renderer, bool visible)
   }
 }
 
+// Adds the output of `source` to `renderer` in the given colour.
+void AddSurface(vtkRenderer* renderer, vtkAlgorithm* source, double r, double g, double b)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(source->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(r, g, b);
+  renderer->AddActor(actor);
+}
+
 // Fills `renderer` with a sphere and a cone (opaque, lit).
 void BuildUpperScene(vtkRenderer* renderer)
 {
@@ -39,23 +51,13 @@ void BuildUpperScene(vtkRenderer* renderer)
   sphere->SetThetaResolution(40);
   sphere->SetPhiResolution(20);
   sphere->SetCenter(-0.6, 0.0, 0.0);
-  vtkNew<vtkPolyDataMapper> sphereMapper;
-  sphereMapper->SetInputConnection(sphere->GetOutputPort());
-  vtkNew<vtkActor> sphereActor;
-  sphereActor->SetMapper(sphereMapper);
-  sphereActor->GetProperty()->SetColor(0.95, 0.55, 0.1);
-  renderer->AddActor(sphereActor);
+  AddSurface(renderer, sphere, 0.95, 0.55, 0.1);
 
   vtkNew<vtkConeSource> cone;
   cone->SetResolution(7);
   cone->SetCenter(0.7, 0.1, 0.0);
   cone->SetDirection(0.3, 1.0, 0.2);
-  vtkNew<vtkPolyDataMapper> coneMapper;
-  coneMapper->SetInputConnection(cone->GetOutputPort());
-  vtkNew<vtkActor> coneActor;
-  coneActor->SetMapper(coneMapper);
-  coneActor->GetProperty()->SetColor(0.2, 0.4, 0.9);
-  renderer->AddActor(coneActor);
+  AddSurface(renderer, cone, 0.2, 0.4, 0.9);
   renderer->ResetCamera();
 }
 
