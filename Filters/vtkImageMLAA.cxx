@@ -4,20 +4,15 @@
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
-#include "vtkMLAAAreaTexture.h"
 #include "vtkMLAAOptions.h"
 #include "vtkMLAAStages.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
-#include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <memory>
-#include <type_traits>
-#include <vector>
 
 vtkStandardNewMacro(vtkImageMLAA);
 
@@ -278,14 +273,28 @@ int vtkImageMLAA::RequestData(
   outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), outExt);
   input->GetExtent(inExt);
   inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
+  // The output: the input's type and components, or 8-bit RGBA for a debug image.
+  const int debugOutput = this->Options->GetDebugOutput();
+  auto allocateOutput = [&]() {
+    output->SetExtent(outExt);
+    if (debugOutput != vtkMLAAOptions::NO_DEBUG_OUTPUT)
+    {
+      output->AllocateScalars(VTK_UNSIGNED_CHAR, 4);
+      output->GetPointData()->GetScalars()->SetName(
+        debugOutput == vtkMLAAOptions::EDGES ? "Edges" : "BlendingWeights");
+    }
+    else
+    {
+      output->AllocateScalars(scalarType, components);
+      output->GetPointData()->GetScalars()->SetName(scalars->GetName());
+    }
+  };
   const bool emptyWhole = whole[0] > whole[1] || whole[2] > whole[3] || whole[4] > whole[5];
   if (!emptyWhole && (outExt[0] > outExt[1] || outExt[2] > outExt[3] || outExt[4] > outExt[5]))
   {
     // An empty request (a streamer's piece of an image smaller than its piece count): nothing
     // to produce, and nothing wrong.
-    const bool debug = this->Options->GetDebugOutput() != vtkMLAAOptions::NO_DEBUG_OUTPUT;
-    output->SetExtent(outExt);
-    output->AllocateScalars(debug ? VTK_UNSIGNED_CHAR : scalarType, debug ? 4 : components);
+    allocateOutput();
     return 1;
   }
   if (emptyWhole || inExt[0] > inExt[1] || inExt[2] > inExt[3] || inExt[4] > inExt[5])
@@ -305,7 +314,6 @@ int vtkImageMLAA::RequestData(
   }
 
   const int mode = this->Options->GetEdgeDetection();
-  const int debugOutput = this->Options->GetDebugOutput();
   const int pad = this->GetInputPadding();
 
   vtkMLAAStages::SliceSetup setup;
@@ -352,18 +360,7 @@ int vtkImageMLAA::RequestData(
     }
   }
 
-  output->SetExtent(outExt);
-  if (debugOutput != vtkMLAAOptions::NO_DEBUG_OUTPUT)
-  {
-    output->AllocateScalars(VTK_UNSIGNED_CHAR, 4);
-    output->GetPointData()->GetScalars()->SetName(
-      debugOutput == vtkMLAAOptions::EDGES ? "Edges" : "BlendingWeights");
-  }
-  else
-  {
-    output->AllocateScalars(scalarType, components);
-    output->GetPointData()->GetScalars()->SetName(scalars->GetName());
-  }
+  allocateOutput();
 
   vtkIdType inIncrements[3];
   input->GetIncrements(scalars, inIncrements);
@@ -375,10 +372,7 @@ int vtkImageMLAA::RequestData(
   // polled between tasks, from this thread.
   const int slices = outExt[5] - outExt[4] + 1;
   vtkMLAAStages::Progress progress([this](double fraction) { this->UpdateProgress(fraction); },
-    [this]() { return this->GetAbortExecute() != 0; },
-    static_cast<double>(slices) *
-      (setup.Input.Height() + std::min(setup.Input.Height(), setup.Output.Height() + 1) +
-        setup.Output.Height()));
+    [this]() { return this->GetAbortExecute() != 0; }, slices * setup.RowsOfWork());
   vtkMLAAStages::SliceBuffers& buffers = *this->Buffers;
   for (int z = outExt[4]; z <= outExt[5] && !progress.CheckAbort(); ++z)
   {

@@ -24,10 +24,10 @@ Halo ComputeHalo(vtkMLAAOptions* options)
 
 //------------------------------------------------------------------------------
 Progress::Progress(
-  std::function<void(double)> report, std::function<bool()> aborted, double totalRows)
+  std::function<void(double)> report, std::function<bool()> aborted, vtkIdType totalRows)
   : Report(std::move(report))
   , AbortQuery(std::move(aborted))
-  , Total(totalRows > 0 ? totalRows : 1.0)
+  , Total(totalRows > 0 ? totalRows : 1)
   , Owner(std::this_thread::get_id())
 {
 }
@@ -37,17 +37,14 @@ Progress::Progress()
 {
 }
 
-void Progress::RowsDone(double rows)
+void Progress::RowsDone(vtkIdType rows)
 {
-  double done = this->Done.load(std::memory_order_relaxed);
-  while (!this->Done.compare_exchange_weak(done, done + rows, std::memory_order_relaxed))
-  {
-  }
+  const vtkIdType done = this->Done.fetch_add(rows, std::memory_order_relaxed) + rows;
   if (std::this_thread::get_id() != this->Owner)
   {
     return;
   }
-  const double fraction = std::min(1.0, (done + rows) / this->Total);
+  const double fraction = std::min(1.0, static_cast<double>(done) / this->Total);
   if (this->Report && fraction - this->LastReported >= 0.01)
   {
     this->LastReported = fraction;
@@ -282,7 +279,7 @@ void DetectEdges(const std::function<void(int, Acc*)>& readRow, int features,
       detector.KeepEdgels(contrastRow(row - 1), contrastRow(row), contrastRow(row + 1),
         edges.At(r.X0, r.Y0 + row), w);
     }
-    progress.RowsDone(static_cast<double>(end - begin));
+    progress.RowsDone(end - begin);
   });
 }
 
@@ -656,7 +653,7 @@ void ComputeBlendingWeights(const EdgesBuffer& edges, const Rect& whole,
         ++x;
       }
     }
-    progress.RowsDone(static_cast<double>(end - begin));
+    progress.RowsDone(end - begin);
   });
 }
 

@@ -48,8 +48,6 @@
 #include <type_traits>
 #include <vector>
 
-class vtkMLAAOptions;
-
 namespace vtkMLAAStages
 {
 /** Rows per task of the stages' threaded loops. */
@@ -112,11 +110,11 @@ VTKFILTERSMLAA_EXPORT Halo ComputeHalo(vtkMLAAOptions* options);
 class VTKFILTERSMLAA_EXPORT Progress
 {
 public:
-  Progress(std::function<void(double)> report, std::function<bool()> aborted, double totalRows);
+  Progress(std::function<void(double)> report, std::function<bool()> aborted, vtkIdType totalRows);
   Progress();
 
   /** Count rows as done; from the creating thread, report progress and poll for an abort. */
-  void RowsDone(double rows);
+  void RowsDone(vtkIdType rows);
   /** Whether the work was aborted (any thread). */
   bool Aborted() const { return this->AbortFlag.load(std::memory_order_relaxed); }
   /** Poll the abort query now (creating thread only). */
@@ -125,8 +123,8 @@ public:
 private:
   std::function<void(double)> Report;
   std::function<bool()> AbortQuery;
-  double Total = 1.0;
-  std::atomic<double> Done{ 0.0 };
+  vtkIdType Total = 1;
+  std::atomic<vtkIdType> Done{ 0 };
   double LastReported = -1.0;
   std::atomic<bool> AbortFlag{ false };
   std::thread::id Owner;
@@ -319,12 +317,6 @@ public:
   unsigned char* Get() { return this->Bytes.get(); }
   const unsigned char* Get() const { return this->Bytes.get(); }
   size_t GetSize() const { return this->Size; }
-  size_t GetCapacity() const { return this->Capacity; }
-  void Release()
-  {
-    this->Bytes.reset();
-    this->Capacity = this->Size = 0;
-  }
 
 private:
   std::unique_ptr<unsigned char[]> Bytes;
@@ -424,8 +416,8 @@ struct WeightSettings
 VTKFILTERSMLAA_EXPORT void MakeWeightSettings(vtkMLAAOptions* options, WeightSettings& settings);
 
 /**
- * The blending weights of every pixel of weights.Extent (already allocated, within
- * edges.Extent), from the edges. `whole` is the image: edgels are read clamped to edges.Extent,
+ * The blending weights of the pixels of weights.Extent (already allocated, within edges.Extent)
+ * that have an edgel, from the edges; the entries of the others are not written. `whole` is the image: edgels are read clamped to edges.Extent,
  * as a GPU clamps texture reads, and the image border is not a crossing edge.
  */
 VTKFILTERSMLAA_EXPORT void ComputeBlendingWeights(const EdgesBuffer& edges, const Rect& whole,
@@ -540,11 +532,10 @@ void BlendRow(int y, const Rect& out, int components, const EdgesBuffer& edges,
     {
       continue;
     }
-    const unsigned char* own = w;
-    Acc a[4] = { top ? static_cast<Acc>(value[own[0]]) : Acc(0),
+    Acc a[4] = { top ? static_cast<Acc>(value[w[0]]) : Acc(0),
       fromBelow ? static_cast<Acc>(value[wBelow[1]]) : Acc(0),
-      left ? static_cast<Acc>(value[own[2]]) : Acc(0),
-      fromRight ? static_cast<Acc>(value[own[4 + 3]]) : Acc(0) };
+      left ? static_cast<Acc>(value[w[2]]) : Acc(0),
+      fromRight ? static_cast<Acc>(value[w[4 + 3]]) : Acc(0) };
     if (settings.Dominant)
     {
       // DominantDirectionBlending: on a corner, only the line with the larger weight counts.
@@ -588,14 +579,14 @@ void BlendRow(int y, const Rect& out, int components, const EdgesBuffer& edges,
             (static_cast<double>(px[c - 1]) - settings.AlphaLo) * settings.AlphaInverseRange;
           return static_cast<Acc>(std::min(1.0, std::max(0.0, v)));
         };
-        const Acc own = coverage(p);
+        const Acc ownCoverage = coverage(p);
         Acc mixedAlpha = 0;
         Acc mixed[3] = { 0, 0, 0 };
         for (int n = 0; n < 4; ++n)
         {
           if (a[n] > Acc(0))
           {
-            const Acc selfShare = a[n] * (Acc(1) - a[n]) * own;
+            const Acc selfShare = a[n] * (Acc(1) - a[n]) * ownCoverage;
             const Acc otherShare = a[n] * a[n] * coverage(neighbours[n]);
             mixedAlpha += selfShare + otherShare;
             for (int k = 0; k < c - 1; ++k)
@@ -683,6 +674,22 @@ struct SliceSetup
   bool PremultipliedAlpha = false;
   double Lo = 0.0; // normalisation: value -> (value - Lo) / (Hi - Lo)
   double Hi = 1.0;
+
+  /**
+   * The pixels whose blending weights the output needs: its own, and those of the row below it
+   * and the column right of it, which its blending reads; within the available pixels.
+   */
+  Rect WeightsExtent() const
+  {
+    return Rect{ this->Output.X0, this->Output.X1 + 1, this->Output.Y0 - 1, this->Output.Y1 }
+      .Intersect(this->Input);
+  }
+  /** The rows the stages go through on one slice (edges, weights, blending), for progress. */
+  vtkIdType RowsOfWork() const
+  {
+    return static_cast<vtkIdType>(this->Input.Height()) + this->WeightsExtent().Height() +
+      this->Output.Height();
+  }
 };
 
 /** The full-size buffers of the stages, reused from slice to slice. */
@@ -733,9 +740,10 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
     setup.Layout, static_cast<Acc>(setup.Lo), static_cast<Acc>(1.0 / (setup.Hi - setup.Lo)));
   const std::function<void(int, Acc*)> readRow = [&](int y, Acc* features) {
     const double* depthRow = nullptr;
-    std::vector<double> depthValues;
     if (depth.Normalise)
     {
+      // One row of normalised depths per thread, kept from row to row.
+      static thread_local std::vector<double> depthValues;
       depthValues.resize(in.Width());
       depth.Normalise(depth.Origin + (y - in.Y0) * depth.RowBytes, depth.PixelStride, in.Width(),
         depthValues.data());
@@ -750,7 +758,7 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
   // Stage 3: blending weights of the output pixels and of the pixels whose weights their
   // blending reads (the row below and the column right of them).
   const Rect& out = setup.Output;
-  buffers.Weights.Allocate(Rect{ out.X0, out.X1 + 1, out.Y0 - 1, out.Y1 }.Intersect(in));
+  buffers.Weights.Allocate(setup.WeightsExtent());
   if (progress.Aborted())
   {
     return;
@@ -785,7 +793,7 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
       BlendRow<T, Acc>(out.Y0 + static_cast<int>(i), out, c, buffers.Edges, buffers.Weights, blend, pixel,
         output + i * out.Width() * c);
     }
-    progress.RowsDone(static_cast<double>(end - begin));
+    progress.RowsDone(end - begin);
   });
   lap(&StageTimes::Blending);
 }

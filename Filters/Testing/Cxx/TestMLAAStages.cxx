@@ -50,7 +50,8 @@ void Features()
     const unsigned char rgb[] = { 255, 0, 0, 0, 255, 0, 0, 0, 255, 10, 20, 30 };
     const FeatureReader<unsigned char, float> reader(
       MakeFeatureLayout(vtkMLAAOptions::LUMA, 3), 0.0f, 1.0f / 255.0f);
-    float f[4];
+    // Room for two planes: GCC cannot see that RGB has no alpha plane and warns otherwise.
+    float f[8];
     reader.Row(rgb, 4, nullptr, f);
     for (int x = 0; x < 4; ++x)
     {
