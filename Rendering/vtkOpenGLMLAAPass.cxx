@@ -265,18 +265,28 @@ void vtkOpenGLMLAAPass::CopyTargetToColorTexture(vtkOpenGLRenderWindow* renWin,
 }
 
 //------------------------------------------------------------------------------
+void vtkOpenGLMLAAPass::ShaderVariant::Release(vtkWindow* window)
+{
+  if (this->Quad)
+  {
+    this->Quad->ReleaseGraphicsResources(window);
+    delete this->Quad;
+    this->Quad = nullptr;
+  }
+  this->Defines.clear();
+}
+
+//------------------------------------------------------------------------------
 bool vtkOpenGLMLAAPass::ReadyQuad(vtkOpenGLRenderWindow* renWin, ShaderVariant& variant,
   const char* fs, const std::string& defines)
 {
-  vtkOpenGLQuadHelper*& quad = variant.Quad;
-  if (quad && variant.Defines != defines)
+  if (variant.Quad && variant.Defines != defines)
   {
     // The options changed what the shader does: build the other variant (the shader cache
     // keeps the programs, so switching back is cheap).
-    quad->ReleaseGraphicsResources(renWin);
-    delete quad;
-    quad = nullptr;
+    variant.Release(renWin);
   }
+  vtkOpenGLQuadHelper*& quad = variant.Quad;
   if (!quad)
   {
     std::string source = fs;
@@ -603,13 +613,7 @@ void vtkOpenGLMLAAPass::ReleaseGraphicsResources(vtkWindow* w)
   for (ShaderVariant* variant :
     { &this->EdgesQuad, &this->LocalContrastQuad, &this->WeightsQuad, &this->BlendQuad })
   {
-    if (variant->Quad)
-    {
-      variant->Quad->ReleaseGraphicsResources(w);
-      delete variant->Quad;
-      variant->Quad = nullptr;
-    }
-    variant->Defines.clear();
+    variant->Release(w);
   }
   DeleteObject(this->DelegateFramebuffer, w);
   DeleteObject(this->MLAAFramebuffer, w);

@@ -218,6 +218,8 @@ private:
   {
     vtkOpenGLQuadHelper* Quad = nullptr;
     std::string Defines;
+    // Frees the quad helper's graphics resources and the helper itself.
+    void Release(vtkWindow* window);
   };
   // Builds the quad helper of a fragment shader with `defines` in place of //VTK::MLAA::Dec
   // (rebuilt when they differ from the last build), or binds the existing one.
