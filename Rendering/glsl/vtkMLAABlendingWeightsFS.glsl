@@ -28,7 +28,7 @@
 // from the diagonal area table (vtkMLAAAreaTexture::ComputeDiagonalAreas). Exact texel reads are
 // used there; the staircase is followed one unit per step.
 //
-// Must match vtkImageMLAA's blending weights (Filters/vtkImageMLAA.cxx).
+// Must match vtkImageMLAA's blending weights (ComputeBlendingWeights in Filters/vtkMLAAStages.cxx).
 
 in vec2 texCoord;
 

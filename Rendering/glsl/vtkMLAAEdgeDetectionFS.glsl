@@ -26,7 +26,7 @@
 // keeps its extra reads off the pixels without edges (the depth test rejects them before the
 // shader runs), which matters on rasterisers that run both sides of every branch.
 //
-// Must match vtkImageMLAA's edge detection (Filters/vtkImageMLAA.cxx).
+// Must match vtkImageMLAA's edge detection (DetectEdges in Filters/vtkMLAAStages.cxx).
 
 in vec2 texCoord;
 
