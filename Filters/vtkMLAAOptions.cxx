@@ -8,8 +8,27 @@ vtkStandardNewMacro(vtkMLAAOptions);
 
 namespace
 {
-const char* const EdgeDetectionNames[] = { "luma", "color", "depth" };
+const char* const EdgeDetectionNames[] = { "luma", "color", "depth", "lab" };
 const char* const DebugOutputNames[] = { "none", "edges", "weights" };
+const char* const PresetNames[] = { "low", "medium", "high", "ultra" };
+
+// The quality settings of each preset (see the class description).
+struct PresetSettings
+{
+  double Threshold;
+  double LocalContrastFactor;
+  int EdgeDetection;
+  int MaxSearchSteps;
+  bool DiagonalDetection;
+  bool DominantDirectionBlending;
+  bool Reconstruction;
+};
+const PresetSettings PresetTable[] = {
+  { 0.15, 2.0, vtkMLAAOptions::LUMA, 4, false, true, false }, // low
+  { 0.1, 2.0, vtkMLAAOptions::LUMA, 8, true, true, false },   // medium
+  { 0.1, 2.0, vtkMLAAOptions::LUMA, 32, true, true, false },  // high
+  { 0.05, 2.0, vtkMLAAOptions::LAB, 128, true, true, true },  // ultra
+};
 
 template <int N>
 int IndexOfName(const char* const (&names)[N], const char* name)
@@ -31,7 +50,7 @@ int IndexOfName(const char* const (&names)[N], const char* name)
 //------------------------------------------------------------------------------
 const char* vtkMLAAOptions::GetEdgeDetectionAsString(int mode)
 {
-  return (mode >= LUMA && mode <= DEPTH) ? EdgeDetectionNames[mode] : "unknown";
+  return (mode >= LUMA && mode <= LAB) ? EdgeDetectionNames[mode] : "unknown";
 }
 
 //------------------------------------------------------------------------------
@@ -54,6 +73,58 @@ int vtkMLAAOptions::GetDebugOutputFromString(const char* name)
 }
 
 //------------------------------------------------------------------------------
+const char* vtkMLAAOptions::GetPresetAsString(int preset)
+{
+  if (preset == -1)
+  {
+    return "custom";
+  }
+  return (preset >= LOW && preset <= ULTRA) ? PresetNames[preset] : "unknown";
+}
+
+//------------------------------------------------------------------------------
+int vtkMLAAOptions::GetPresetFromString(const char* name)
+{
+  return IndexOfName(PresetNames, name);
+}
+
+//------------------------------------------------------------------------------
+void vtkMLAAOptions::SetPreset(int preset)
+{
+  if (preset < LOW || preset > ULTRA)
+  {
+    vtkErrorMacro("SetPreset: " << preset << " is not a preset (LOW, MEDIUM, HIGH or ULTRA).");
+    return;
+  }
+  const PresetSettings& p = PresetTable[preset];
+  this->SetThreshold(p.Threshold);
+  this->SetLocalContrastFactor(p.LocalContrastFactor);
+  this->SetEdgeDetection(p.EdgeDetection);
+  this->SetMaxSearchSteps(p.MaxSearchSteps);
+  this->SetDiagonalDetection(p.DiagonalDetection);
+  this->SetDominantDirectionBlending(p.DominantDirectionBlending);
+  this->SetReconstruction(p.Reconstruction);
+}
+
+//------------------------------------------------------------------------------
+int vtkMLAAOptions::GetPreset()
+{
+  for (int preset = LOW; preset <= ULTRA; ++preset)
+  {
+    const PresetSettings& p = PresetTable[preset];
+    if (this->Threshold == p.Threshold && this->LocalContrastFactor == p.LocalContrastFactor &&
+      this->EdgeDetection == p.EdgeDetection && this->MaxSearchSteps == p.MaxSearchSteps &&
+      this->DiagonalDetection == p.DiagonalDetection &&
+      this->DominantDirectionBlending == p.DominantDirectionBlending &&
+      this->Reconstruction == p.Reconstruction)
+    {
+      return preset;
+    }
+  }
+  return -1;
+}
+
+//------------------------------------------------------------------------------
 void vtkMLAAOptions::DeepCopy(vtkMLAAOptions* other)
 {
   if (!other || other == this)
@@ -68,6 +139,7 @@ void vtkMLAAOptions::DeepCopy(vtkMLAAOptions* other)
   this->SetDiagonalDetection(other->DiagonalDetection);
   this->SetDominantDirectionBlending(other->DominantDirectionBlending);
   this->SetPremultipliedAlpha(other->PremultipliedAlpha);
+  this->SetReconstruction(other->Reconstruction);
 }
 
 //------------------------------------------------------------------------------
@@ -107,4 +179,6 @@ void vtkMLAAOptions::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DominantDirectionBlending: " << (this->DominantDirectionBlending ? "On" : "Off")
      << "\n";
   os << indent << "PremultipliedAlpha: " << (this->PremultipliedAlpha ? "On" : "Off") << "\n";
+  os << indent << "Reconstruction: " << (this->Reconstruction ? "On" : "Off") << "\n";
+  os << indent << "Preset: " << GetPresetAsString(this->GetPreset()) << "\n";
 }

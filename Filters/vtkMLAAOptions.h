@@ -31,13 +31,23 @@
  *   - Depth: the difference of depth values (section 4.2): the filter's second input or the
  *     pass's depth buffer. Shading edges are then left alone. Depth buffers are non-linear,
  *     so this mode usually wants a far smaller threshold (1e-3 to 1e-2).
+ *   - Lab: the CIELAB colour difference of "Morphological antialiasing and topological
+ *     reconstruction" (Biri et al., section 3.2). The normalised colours are taken as sRGB,
+ *     linearised, converted to CIE XYZ (D65) and to L*a*b*; the contrast is the Euclidean
+ *     distance Delta E (CIE 1976) divided by 100, so the threshold is Delta E / 100: the default
+ *     0.1 is Delta E 10, and 0.023 is one just-noticeable difference. Finds edges between
+ *     colours of equal luma (red against blue) and weighs differences as a person sees them,
+ *     at the highest cost of the four modes. Grey images are grey sRGB (a* = b* = 0).
  *   With an alpha channel (2 or 4 components), a change in alpha alone is also an edge, in
  *   every mode.
- * - MaxSearchSteps (default 8, range [1, 64]): the distance search of section 4.3.1 reads two
+ * - MaxSearchSteps (default 8, range [1, 128]): the distance search of section 4.3.1 reads two
  *   edgels per step, so lines are followed for up to 2 * MaxSearchSteps pixels on each side of
- *   a pixel (16 by default, as in the chapter). The area texture then has cells of
- *   2 * MaxSearchSteps + 1 texels (vtkMLAAAreaTexture). Longer searches smooth longer, flatter
- *   staircases, at a cost that grows with the number of steps.
+ *   a pixel (16 by default, as in the chapter; 256 at most, the 255-pixel lines of Biri et al.,
+ *   section 3.3). The area texture then has cells of 2 * MaxSearchSteps + 1 texels
+ *   (vtkMLAAAreaTexture). Longer searches smooth longer, flatter staircases (a nearly
+ *   horizontal horizon gets one ramp per step of its staircase instead of one every 16 pixels).
+ *   The CPU filter finds the distances from run lengths and the GPU pass by recursive doubling,
+ *   so their cost grows slowly with the number of steps.
  * - DiagonalDetection (default on): also recognise staircases of one-pixel steps as lines at
  *   45 degrees and revectorise them along the diagonal (vtkMLAAAreaTexture::ComputeDiagonalAreas).
  *   The chapter's method only follows horizontal and vertical lines, and gives every pixel of
@@ -52,6 +62,14 @@
  *   The chapter (section 4.4) averages the blends with all four neighbours, which at every corner
  *   mixes in a second, cross-wise share of the other colour that no revectorised line covers.
  *   Off gives the chapter's blending.
+ * - Reconstruction (default off): topological reconstruction (Biri et al., section 4) before
+ *   edge detection. Each pixel's eight neighbours are classed as unlike it (the CIELAB
+ *   difference of the Lab mode reaches the threshold, or alpha differs by as much) or like it;
+ *   where the unlike neighbours form exactly two 8-connected pieces, all of one colour, and the
+ *   like ones a single piece, the pixel is where point sampling dropped a piece of a thin
+ *   shape (a wire, a streamline, an iso-line) and is replaced by the mean of the unlike
+ *   neighbours. MLAA alone cannot restore such pixels. A line end, an isolated dot, a corner or
+ *   a thin line crossing the pixel's own thin line are left alone.
  * - PremultipliedAlpha (default off): how the colour of an image with alpha (2 or 4 components)
  *   relates to its alpha. Off: straight (unassociated) alpha, as image files hold it (PNG always)
  *   and as VTK images usually do: the colour is that of the surface, whatever its coverage. The
@@ -69,6 +87,16 @@
  *     pixel above takes this pixel's colour; blue: weight with which this pixel takes the colour
  *     of its left neighbour; alpha: weight with which the left neighbour takes this pixel's.
  *     Weights are at most 0.5, so values are at most 128.
+ *
+ * Presets set every quality setting at once (Threshold, LocalContrastFactor, EdgeDetection,
+ * MaxSearchSteps, DiagonalDetection, DominantDirectionBlending, Reconstruction), as SMAA's
+ * quality presets do; PremultipliedAlpha and DebugOutput describe the data and the output and
+ * are left as they are. Settings changed after a preset override it. The README lists what
+ * each preset costs and gains, as measured by the project's benchmarks.
+ * - Low: luma, threshold 0.15, 4 steps, no diagonals.
+ * - Medium: luma, threshold 0.1, 8 steps, diagonals (the defaults).
+ * - High: luma, threshold 0.1, 32 steps, diagonals.
+ * - Ultra: Lab, threshold 0.05, 128 steps, diagonals, reconstruction.
  *
  * "Top" and "above" mean towards the top of the displayed image: higher row index in a
  * vtkImageData and in an OpenGL texture.
@@ -94,7 +122,17 @@ public:
   {
     LUMA = 0,
     COLOR = 1,
-    DEPTH = 2
+    DEPTH = 2,
+    LAB = 3
+  };
+
+  /** The quality presets (SetPreset). */
+  enum Presets
+  {
+    LOW = 0,
+    MEDIUM = 1,
+    HIGH = 2,
+    ULTRA = 3
   };
 
   /** Which image the filter or pass outputs. */
@@ -125,21 +163,22 @@ public:
 
   ///@{
   /**
-   * What edge detection compares: LUMA (default), COLOR or DEPTH.
+   * What edge detection compares: LUMA (default), COLOR, DEPTH or LAB.
    */
-  vtkSetClampMacro(EdgeDetection, int, LUMA, DEPTH);
+  vtkSetClampMacro(EdgeDetection, int, LUMA, LAB);
   vtkGetMacro(EdgeDetection, int);
   void SetEdgeDetectionToLuma() { this->SetEdgeDetection(LUMA); }
   void SetEdgeDetectionToColor() { this->SetEdgeDetection(COLOR); }
   void SetEdgeDetectionToDepth() { this->SetEdgeDetection(DEPTH); }
+  void SetEdgeDetectionToLab() { this->SetEdgeDetection(LAB); }
   ///@}
 
   ///@{
   /**
    * Number of steps of the distance search, two pixels per step. Default 8 (lines followed for
-   * up to 16 pixels each way), range [1, 64].
+   * up to 16 pixels each way), range [1, 128].
    */
-  vtkSetClampMacro(MaxSearchSteps, int, 1, 64);
+  vtkSetClampMacro(MaxSearchSteps, int, 1, 128);
   vtkGetMacro(MaxSearchSteps, int);
   ///@}
 
@@ -179,6 +218,30 @@ public:
   vtkBooleanMacro(PremultipliedAlpha, bool);
   ///@}
 
+  ///@{
+  /**
+   * Whether topological reconstruction restores the pixels that point sampling dropped from
+   * thin shapes, before edge detection. Default off.
+   */
+  vtkSetMacro(Reconstruction, bool);
+  vtkGetMacro(Reconstruction, bool);
+  vtkBooleanMacro(Reconstruction, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Set every quality setting to those of a preset: LOW, MEDIUM, HIGH or ULTRA (see the class
+   * description). Out-of-range values are ignored with an error. GetPreset() returns the
+   * preset whose settings the current ones equal, or -1 when they equal none.
+   */
+  void SetPreset(int preset);
+  int GetPreset();
+  void SetPresetToLow() { this->SetPreset(LOW); }
+  void SetPresetToMedium() { this->SetPreset(MEDIUM); }
+  void SetPresetToHigh() { this->SetPreset(HIGH); }
+  void SetPresetToUltra() { this->SetPreset(ULTRA); }
+  ///@}
+
   /**
    * Fewest units (turns of the staircase) that DiagonalDetection treats as a diagonal line.
    */
@@ -198,11 +261,14 @@ public:
 
   ///@{
   /**
-   * Names of the modes, as the `mlaa` tool spells them: "luma", "color", "depth"; "none",
-   * "edges", "weights". The parsing functions return -1 for an unknown name.
+   * Names of the modes, as the `mlaa` tool spells them: "luma", "color", "depth", "lab";
+   * "none", "edges", "weights"; "low", "medium", "high", "ultra" (GetPresetAsString(-1) is
+   * "custom"). The parsing functions return -1 for an unknown name.
    */
   static const char* GetEdgeDetectionAsString(int mode);
   static int GetEdgeDetectionFromString(const char* name);
+  static const char* GetPresetAsString(int preset);
+  static int GetPresetFromString(const char* name);
   static const char* GetDebugOutputAsString(int output);
   static int GetDebugOutputFromString(const char* name);
   ///@}
@@ -231,6 +297,7 @@ protected:
   bool DiagonalDetection = true;
   bool DominantDirectionBlending = true;
   bool PremultipliedAlpha = false;
+  bool Reconstruction = false;
 
 private:
   vtkMLAAOptions(const vtkMLAAOptions&) = delete;

@@ -1,6 +1,7 @@
 // Tests of vtkMLAAOptions: defaults, clamping, names, sharing with the filter.
 #include "vtkImageMLAA.h"
 #include "vtkMLAAOptions.h"
+#include "vtkMLAATestUtilities.h"
 #include "vtkNew.h"
 
 #include <cstring>
@@ -28,6 +29,8 @@ int TestMLAAOptions(int, char*[])
   CHECK(options->GetDiagonalDetection());
   CHECK(options->GetLocalContrastFactor() == 2.0);
   CHECK(options->GetDominantDirectionBlending());
+  CHECK(!options->GetReconstruction());
+  CHECK(options->GetPreset() == vtkMLAAOptions::MEDIUM);
 
   // Clamping to the documented ranges.
   options->SetThreshold(-1.0);
@@ -37,16 +40,17 @@ int TestMLAAOptions(int, char*[])
   options->SetMaxSearchSteps(0);
   CHECK(options->GetMaxSearchSteps() == 1);
   options->SetMaxSearchSteps(1000);
-  CHECK(options->GetMaxSearchSteps() == 64);
+  CHECK(options->GetMaxSearchSteps() == 128);
+  CHECK(options->GetMaxDistance() == 256);
   options->SetEdgeDetection(17);
-  CHECK(options->GetEdgeDetection() == vtkMLAAOptions::DEPTH);
+  CHECK(options->GetEdgeDetection() == vtkMLAAOptions::LAB);
   options->SetLocalContrastFactor(-1.0);
   CHECK(options->GetLocalContrastFactor() == 0.0);
   options->SetLocalContrastFactor(1e9);
   CHECK(options->GetLocalContrastFactor() == 100.0);
 
   // Names used by the command-line tool, both ways.
-  for (int mode = vtkMLAAOptions::LUMA; mode <= vtkMLAAOptions::DEPTH; ++mode)
+  for (int mode = vtkMLAAOptions::LUMA; mode <= vtkMLAAOptions::LAB; ++mode)
   {
     CHECK(vtkMLAAOptions::GetEdgeDetectionFromString(
             vtkMLAAOptions::GetEdgeDetectionAsString(mode)) == mode);
@@ -56,7 +60,14 @@ int TestMLAAOptions(int, char*[])
     CHECK(vtkMLAAOptions::GetDebugOutputFromString(vtkMLAAOptions::GetDebugOutputAsString(out)) ==
       out);
   }
-  CHECK(vtkMLAAOptions::GetEdgeDetectionFromString("lab") == -1);
+  CHECK(vtkMLAAOptions::GetEdgeDetectionFromString("lab") == vtkMLAAOptions::LAB);
+  CHECK(vtkMLAAOptions::GetEdgeDetectionFromString("Lab") == -1);
+  for (int preset = vtkMLAAOptions::LOW; preset <= vtkMLAAOptions::ULTRA; ++preset)
+  {
+    CHECK(vtkMLAAOptions::GetPresetFromString(vtkMLAAOptions::GetPresetAsString(preset)) == preset);
+  }
+  CHECK(std::strcmp(vtkMLAAOptions::GetPresetAsString(-1), "custom") == 0);
+  CHECK(vtkMLAAOptions::GetPresetFromString("extreme") == -1);
   CHECK(vtkMLAAOptions::GetEdgeDetectionFromString(nullptr) == -1);
   CHECK(std::strcmp(vtkMLAAOptions::GetDebugOutputAsString(2), "weights") == 0);
 
@@ -72,9 +83,39 @@ int TestMLAAOptions(int, char*[])
   CHECK(!copy->GetDiagonalDetection());
   CHECK(copy->GetLocalContrastFactor() == 3.5);
   CHECK(copy->GetThreshold() == 0.25);
-  CHECK(copy->GetEdgeDetection() == vtkMLAAOptions::DEPTH);
-  CHECK(copy->GetMaxSearchSteps() == 64);
+  CHECK(copy->GetEdgeDetection() == vtkMLAAOptions::LAB);
+  CHECK(copy->GetMaxSearchSteps() == 128);
   CHECK(copy->GetDebugOutput() == vtkMLAAOptions::EDGES);
+  options->ReconstructionOn();
+  copy->DeepCopy(options);
+  CHECK(copy->GetReconstruction());
+
+  // Presets set every quality setting and leave the data's settings alone; later settings
+  // override them; the current settings are recognised as a preset or as custom.
+  vtkNew<vtkMLAAOptions> preset;
+  preset->PremultipliedAlphaOn();
+  preset->SetDebugOutputToEdges();
+  preset->SetPresetToUltra();
+  CHECK(preset->GetPreset() == vtkMLAAOptions::ULTRA);
+  CHECK(preset->GetEdgeDetection() == vtkMLAAOptions::LAB);
+  CHECK(preset->GetReconstruction());
+  CHECK(preset->GetMaxSearchSteps() == 128);
+  CHECK(preset->GetPremultipliedAlpha());
+  CHECK(preset->GetDebugOutput() == vtkMLAAOptions::EDGES);
+  preset->SetPresetToLow();
+  CHECK(preset->GetPreset() == vtkMLAAOptions::LOW);
+  CHECK(!preset->GetReconstruction());
+  CHECK(!preset->GetDiagonalDetection());
+  preset->SetMaxSearchSteps(5);
+  CHECK(preset->GetPreset() == -1);
+  preset->SetPresetToHigh();
+  CHECK(preset->GetPreset() == vtkMLAAOptions::HIGH);
+  const vtkMTimeType presetTime = preset->GetMTime();
+  vtkNew<vtkMLAATest::MessageObserver> messages;
+  messages->Watch(preset);
+  preset->SetPreset(7); // refused with an error, nothing changes
+  CHECK(messages->HasError("not a preset"));
+  CHECK(preset->GetPreset() == vtkMLAAOptions::HIGH && preset->GetMTime() == presetTime);
 
   // A filter owns default options, can share an object, and sees its changes.
   vtkNew<vtkImageMLAA> filter;
