@@ -70,9 +70,28 @@ const char* DescribeEdgeDetection(int mode)
     case vtkMLAAOptions::DEPTH:
       return "difference of the --depth-image values; leaves shading edges alone, usually "
              "wants a threshold of 1e-3 to 1e-2";
+    case vtkMLAAOptions::LAB:
+      return "CIELAB colour difference (Biri et al., section 3.2): the threshold is Delta E / 100 "
+             "(0.1 = Delta E 10); finds edges between colours of equal luma and weighs them as a "
+             "person sees them; the slowest mode";
     default:
       return "";
   }
+}
+
+// The settings of a preset, from vtkMLAAOptions' own table.
+std::string DescribePreset(int preset)
+{
+  vtkNew<vtkMLAAOptions> options;
+  options->SetPreset(preset);
+  std::ostringstream text;
+  text << vtkMLAAOptions::GetEdgeDetectionAsString(options->GetEdgeDetection()) << ", threshold "
+       << options->GetThreshold() << ", local contrast " << options->GetLocalContrastFactor()
+       << ", " << options->GetMaxSearchSteps() << " search steps, diagonals "
+       << (options->GetDiagonalDetection() ? "on" : "off") << ", dominant blending "
+       << (options->GetDominantDirectionBlending() ? "on" : "off") << ", reconstruction "
+       << (options->GetReconstruction() ? "on" : "off");
+  return text.str();
 }
 
 const char* DescribeDebugOutput(int output)
@@ -233,6 +252,26 @@ void PrintUsage(std::ostream& os)
           "again, so the colour of transparent pixels never shows as a fringe. Default: auto, "
           "from the file.";
   option("--alpha auto|straight|premultiplied", text);
+
+  text.str("");
+  text << "Topological reconstruction (Biri et al., section 4) before edge detection: a pixel "
+          "where point sampling broke a thin shape (a wire, a streamline, an iso-line) in two "
+          "is given the shape's colour. Line ends, dots and corners are left alone. Default: "
+       << (defaults->GetReconstruction() ? "on" : "off") << ".";
+  option("--reconstruction on|off", text);
+
+  text.str("");
+  text << "Set every quality option (--threshold, --local-contrast, --edges, "
+          "--max-search-steps, --diagonals, --dominant-blending, --reconstruction) at once; "
+          "those options may follow it to override it, but not precede it. Default: "
+       << vtkMLAAOptions::GetPresetAsString(defaults->GetPreset())
+       << " (the defaults above). The README lists what each costs and gains.";
+  option("--preset NAME", text);
+  for (int p = vtkMLAAOptions::LOW; p <= vtkMLAAOptions::ULTRA; ++p)
+  {
+    PrintWrapped(os, std::string(column + 2, ' ') + vtkMLAAOptions::GetPresetAsString(p) + ":",
+      column + 4, DescribePreset(p));
+  }
 
   text.str("");
   text << "Whether a pixel on the corner of a staircase is blended along its dominant line only "
@@ -515,6 +554,36 @@ void ParseCommandLine(const std::vector<std::string>& args, CommandLine& cl)
     else if (name == "--dominant-blending")
     {
       options->SetDominantDirectionBlending(takeSwitch());
+    }
+    else if (name == "--reconstruction")
+    {
+      options->SetReconstruction(takeSwitch());
+    }
+    else if (name == "--preset")
+    {
+      const std::string text = takeValues(1)[0];
+      const int preset = vtkMLAAOptions::GetPresetFromString(text.c_str());
+      if (preset < 0)
+      {
+        std::string names;
+        for (int p = vtkMLAAOptions::LOW; p <= vtkMLAAOptions::ULTRA; ++p)
+        {
+          names += std::string(p > vtkMLAAOptions::LOW ? ", " : "") +
+            vtkMLAAOptions::GetPresetAsString(p);
+        }
+        throw UsageError("--preset: unknown preset '" + text + "' (expected one of " + names + ")");
+      }
+      // A quality option before the preset would be silently replaced by it.
+      for (const std::string& given : cl.FilterOptions)
+      {
+        if (given != "--alpha" && given != "--debug" && given != "--depth-image" &&
+          given != "--value-range" && given != "--preset")
+        {
+          throw UsageError(
+            "--preset sets " + given + " too: put --preset before the options that override it");
+        }
+      }
+      options->SetPreset(preset);
     }
     else if (name == "--alpha")
     {

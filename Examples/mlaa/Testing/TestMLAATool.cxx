@@ -540,6 +540,7 @@ void HelpListsEveryOption()
     }
     for (const char* option : { "--threshold T", "--edges MODE", "--depth-image FILE",
            "--max-search-steps N", "--diagonals on|off", "--local-contrast F", "--dominant-blending on|off", "--alpha auto|straight|premultiplied", "--debug", "--value-range LO HI|auto", "--area-texture D",
+           "--reconstruction on|off", "--preset NAME",
            "-h, --help", "Usage: mlaa [options] INPUT OUTPUT" })
     {
       if (!MLAA_CHECK(words.find(option) != std::string::npos))
@@ -549,9 +550,14 @@ void HelpListsEveryOption()
     }
     // Every mode name, and the defaults, as vtkMLAAOptions has them.
     vtkNew<vtkMLAAOptions> defaults;
-    for (int m = vtkMLAAOptions::LUMA; m <= vtkMLAAOptions::DEPTH; ++m)
+    for (int m = vtkMLAAOptions::LUMA; m <= vtkMLAAOptions::LAB; ++m)
     {
       MLAA_CHECK(words.find(std::string(vtkMLAAOptions::GetEdgeDetectionAsString(m)) + ":") !=
+        std::string::npos);
+    }
+    for (int p = vtkMLAAOptions::LOW; p <= vtkMLAAOptions::ULTRA; ++p)
+    {
+      MLAA_CHECK(words.find(std::string(vtkMLAAOptions::GetPresetAsString(p)) + ":") !=
         std::string::npos);
     }
     for (int d = vtkMLAAOptions::NO_DEBUG_OUTPUT; d <= vtkMLAAOptions::BLENDING_WEIGHTS; ++d)
@@ -771,6 +777,81 @@ void OptionEdgesColor()
   const std::string color = vtkMLAAOptions::GetEdgeDetectionAsString(vtkMLAAOptions::COLOR);
   RoundTrip(pixels, OIIO::TypeDesc::UINT8, "in.png", "out.png", { "--edges", color },
     [](vtkImageMLAA* f) { f->GetOptions()->SetEdgeDetectionToColor(); });
+}
+
+void OptionEdgesLab()
+{
+  // Red against a blue of the same luma (87 * 0.2126 = 255 * 0.0722, within 0.0003): no luma
+  // edge at all, a CIELAB one (Delta E above 50).
+  auto pixels = StaircaseImage(VTK_UNSIGNED_CHAR, { 87, 0, 0 }, { 0, 0, 255 });
+  MLAA_CHECK(Compare(Filter(pixels), pixels).Count == 0);
+  const std::string lab = vtkMLAAOptions::GetEdgeDetectionAsString(vtkMLAAOptions::LAB);
+  RoundTrip(pixels, OIIO::TypeDesc::UINT8, "in.png", "out.png", { "--edges", lab },
+    [](vtkImageMLAA* f) { f->GetOptions()->SetEdgeDetectionToLab(); });
+  MLAA_CHECK(
+    Compare(Filter(pixels, [](vtkImageMLAA* f) { f->GetOptions()->SetEdgeDetectionToLab(); }),
+      pixels)
+      .Count > 0);
+}
+
+void OptionReconstruction()
+{
+  // A one-pixel diagonal line with one pixel missing: --reconstruction on closes it, as the
+  // filter does; off (the default) leaves the gap.
+  auto pixels = TwoToneImage(
+    24, 24, VTK_UNSIGNED_CHAR, { 10, 20, 30 }, { 250, 200, 60 },
+    [](int x, int y) { return x == y && x != 12; });
+  const fs::path input = WorkFile("in.png");
+  const fs::path output = WorkFile("out.png");
+  WriteFile(pixels, input, OIIO::TypeDesc::UINT8);
+  ExpectSuccess({ "--reconstruction", "on", input.string(), output.string() }, output);
+  auto expected = Filter(pixels, [](vtkImageMLAA* f) { f->GetOptions()->ReconstructionOn(); });
+  CheckFile(output, expected, OIIO::TypeDesc::UINT8);
+  MLAA_CHECK(expected->GetScalarComponentAsDouble(12, 12, 0, 0) > 100.0); // the gap is closed
+  MLAA_CHECK(pixels->GetScalarComponentAsDouble(12, 12, 0, 0) < 100.0);
+  ExpectSuccess({ "--reconstruction=off", input.string(), output.string() }, output);
+  CheckFile(output, Filter(pixels), OIIO::TypeDesc::UINT8);
+}
+
+void OptionPreset()
+{
+  // Steps 12 pixels long: the low preset's 4 steps (8 pixels each way) smooth them otherwise
+  // than the default 8 steps.
+  auto pixels = TwoToneImage(
+    64, 16, VTK_UNSIGNED_CHAR, { 0 }, { 255 }, [](int x, int y) { return 12 * y > x + 20; });
+  const fs::path input = WorkFile("in.png");
+  const fs::path output = WorkFile("out.png");
+  WriteFile(pixels, input, OIIO::TypeDesc::UINT8);
+  for (int preset = vtkMLAAOptions::LOW; preset <= vtkMLAAOptions::ULTRA; ++preset)
+  {
+    ExpectSuccess(
+      { "--preset", vtkMLAAOptions::GetPresetAsString(preset), input.string(), output.string() },
+      output);
+    CheckFile(output,
+      Filter(pixels, [preset](vtkImageMLAA* f) { f->GetOptions()->SetPreset(preset); }),
+      OIIO::TypeDesc::UINT8);
+  }
+  auto low = Filter(pixels, [](vtkImageMLAA* f) { f->GetOptions()->SetPresetToLow(); });
+  MLAA_CHECK(Compare(low, Filter(pixels)).Count > 0);
+  // Options after the preset override it.
+  ExpectSuccess(
+    { "--preset=low", "--max-search-steps", "8", input.string(), output.string() }, output);
+  CheckFile(output,
+    Filter(pixels,
+      [](vtkImageMLAA* f)
+      {
+        f->GetOptions()->SetPresetToLow();
+        f->GetOptions()->SetMaxSearchSteps(8);
+      }),
+    OIIO::TypeDesc::UINT8);
+  // Options that describe the data may come first.
+  ExpectSuccess(
+    { "--alpha", "straight", "--preset", "high", input.string(), output.string() }, output);
+  // A quality option before the preset would be silently replaced: refused, nothing written.
+  const fs::path untouched = WorkFile("untouched.png");
+  ExpectFailure(
+    { "--threshold", "0.2", "--preset", "high", input.string(), untouched.string() }, untouched,
+    2);
 }
 
 void OptionEdgesDepth()
@@ -1170,7 +1251,17 @@ void ErrorUnknownDebugName()
 
 void ErrorBadMaxSearchSteps()
 {
-  ExpectBadValues("--max-search-steps", { "0", "65", "-1", "2.5", "eight", "99999999999999999999" });
+  ExpectBadValues("--max-search-steps", { "0", "129", "-1", "2.5", "eight", "99999999999999999999" });
+}
+
+void ErrorBadPreset()
+{
+  ExpectBadValues("--preset", { "best", "High", "", "custom", "2" });
+}
+
+void ErrorBadReconstruction()
+{
+  ExpectBadValues("--reconstruction", { "yes", "1", "On", "" });
 }
 
 void ErrorBadLocalContrast()
@@ -1818,6 +1909,9 @@ int main(int argc, char* argv[])
     { "option-threshold", OptionThreshold },
     { "option-edges-color", OptionEdgesColor },
     { "option-edges-depth", OptionEdgesDepth },
+    { "option-edges-lab", OptionEdgesLab },
+    { "option-reconstruction", OptionReconstruction },
+    { "option-preset", OptionPreset },
     { "option-max-search-steps", OptionMaxSearchSteps },
     { "option-diagonals", OptionDiagonals },
     { "option-local-contrast", OptionLocalContrast },
@@ -1838,6 +1932,8 @@ int main(int argc, char* argv[])
     { "error-unknown-edges-name", ErrorUnknownEdgesName },
     { "error-unknown-debug-name", ErrorUnknownDebugName },
     { "error-bad-max-search-steps", ErrorBadMaxSearchSteps },
+    { "error-bad-preset", ErrorBadPreset },
+    { "error-bad-reconstruction", ErrorBadReconstruction },
     { "error-bad-diagonals", ErrorBadDiagonals },
     { "error-bad-local-contrast", ErrorBadLocalContrast },
     { "error-bad-dominant-blending", ErrorBadDominantBlending },
