@@ -12,6 +12,10 @@
 //   memcpy      a copy of the scalars into a preallocated buffer (the memory-bandwidth floor);
 //   MLAA-stages the stages of vtkImageMLAA (vtkMLAAStages::RunSlice) run directly into a
 //               preallocated output, each stage timed (features+edges, weights, blending);
+//   variants    (unless --no-variants) vtkImageMLAA with each feature of "Morphological
+//               antialiasing and topological reconstruction" over the defaults (+lab, +steps32,
+//               +steps128, +recon), the three together (+all3) and each preset (P-low ...
+//               P-ultra), reported as time / Gaussian;
 // for each thread count n (default 1 and 2), and reports the median time per operation and the
 // ratios MLAA / Gaussian and MLAA / copy.
 #include "BenchmarkUtilities.h"
@@ -52,6 +56,7 @@ void Usage(const char* program)
             << "  --repetitions N     timed repetitions per operation and thread count (default 30)\n"
             << "  --warmup N          untimed repetitions first (default 3)\n"
             << "  --threads a,b       thread counts (default 1,2)\n"
+            << "  --no-variants       do not time the variants (+lab ... P-ultra)\n"
             << mlaaBenchmark::MLAAOptionsUsage();
 }
 
@@ -91,6 +96,7 @@ int main(int argc, char* argv[])
   int width = 1920, height = 1080, repetitions = 30, warmup = 3;
   std::string scene = "mixed", imageFile;
   std::vector<int> threadCounts = { 1, 2 };
+  bool variants = true;
   vtkNew<vtkMLAAOptions> options;
   for (int i = 1; i < argc; ++i)
   {
@@ -135,6 +141,10 @@ int main(int argc, char* argv[])
         }
         threadCounts.push_back(n);
       }
+    }
+    else if (arg == "--no-variants")
+    {
+      variants = false;
     }
     else if (mlaaBenchmark::ParseMLAAOption(argc, argv, i, options))
     {
@@ -212,6 +222,21 @@ int main(int argc, char* argv[])
   const void* scalars = image->GetScalarPointer();
   volatile unsigned char sink = 0;
 
+  // One filter per variant, each with options of its own.
+  std::vector<vtkSmartPointer<vtkImageMLAA>> variantFilters;
+  if (variants)
+  {
+    for (const auto& variant : mlaaBenchmark::Variants())
+    {
+      vtkNew<vtkMLAAOptions> variantOptions;
+      variant.Configure(variantOptions);
+      auto filter = vtkSmartPointer<vtkImageMLAA>::New();
+      filter->SetInputData(image);
+      filter->SetOptions(variantOptions);
+      variantFilters.push_back(filter);
+    }
+  }
+
   struct Row
   {
     int Threads;
@@ -273,6 +298,16 @@ int main(int argc, char* argv[])
         },
         {} },
     };
+    for (size_t v = 0; v < variantFilters.size(); ++v)
+    {
+      vtkImageMLAA* filter = variantFilters[v];
+      operations.push_back({ mlaaBenchmark::Variants()[v].Name,
+        [filter]() {
+          filter->Modified();
+          filter->Update();
+        },
+        {} });
+    }
     for (int w = 0; w < warmup; ++w)
     {
       for (auto& op : operations)
@@ -315,6 +350,18 @@ int main(int argc, char* argv[])
                 << m / gaussian << ")" << std::defaultfloat;
     }
     std::cout << "\n";
+    if (!variantFilters.empty())
+    {
+      std::cout << "  variants (median ms, and / Gaussian; MLAA = the settings above):";
+      for (const auto& variant : mlaaBenchmark::Variants())
+      {
+        const double m = row.Median[variant.Name];
+        std::cout << "\n    " << std::left << std::setw(11) << variant.Name << std::right
+                  << std::fixed << std::setprecision(2) << std::setw(9) << m << std::setw(8)
+                  << m / gaussian << std::defaultfloat;
+      }
+      std::cout << "\n";
+    }
     rows.push_back(row);
   }
 

@@ -10,6 +10,10 @@
 //   MLAA-CPU   vtkImageMLAA with default options on the single-sample render;
 //   MLAA-pass  vtkOpenGLMLAAPass (delegate vtkRenderStepsPass, default options: overlays drawn
 //              after the antialiasing);
+//   variants   (unless --no-variants) MLAA-pass with each feature of "Morphological
+//              antialiasing and topological reconstruction" over the defaults (+lab, +steps32,
+//              +steps128, +recon), the three together (+all3) and each preset (P-low ...
+//              P-ultra);
 // all read back as RGB. Per method it reports, against the reference:
 //   AAR      = 1 - MSE_E(method, reference) / MSE_E(none, reference), over the set E of pixels
 //              where none and reference differ by more than 4/255 in some channel;
@@ -22,9 +26,9 @@
 // AntialiasOverlaysOn, so that it sees the same image as the filter) is within 2/255 of
 // MLAA-CPU in every channel.
 // It prints a table and per-method summaries, writes a CSV and, per scene, a crop mosaic PNG:
-// six crops of the same region (the crop-size window with the largest squared none-vs-reference
+// crops of the same region (the crop-size window with the largest squared none-vs-reference
 // error), magnified with nearest-neighbour, left to right:
-//   none | FXAA | MSAA4 | MLAA-CPU | MLAA-pass | reference
+//   none | FXAA | MSAA4 | MLAA-CPU | MLAA-pass | P-high | P-ultra | reference
 // each under a label strip.
 #include "BenchmarkUtilities.h"
 #include "vtkMLAAScenes.h"
@@ -50,6 +54,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <limits>
@@ -61,8 +66,12 @@ namespace
 {
 using mlaaBenchmark::Stopwatch;
 
-// The methods in table and mosaic order ("none" first: its AAR is 0 by definition).
-const std::vector<std::string> Methods = { "none", "FXAA", "MSAA4", "MLAA-CPU", "MLAA-pass" };
+// The methods in table order ("none" first: its AAR is 0 by definition); the variants are
+// added unless --no-variants is given.
+std::vector<std::string> Methods = { "none", "FXAA", "MSAA4", "MLAA-CPU", "MLAA-pass" };
+// The methods of the crop mosaic, in order.
+std::vector<std::string> MosaicMethods = { "none", "FXAA", "MSAA4", "MLAA-CPU", "MLAA-pass" };
+
 
 // A difference of more than this (0..255 units) in some channel counts as "differs".
 const double Tolerance = 4.0;
@@ -383,8 +392,12 @@ void Usage(const char* program)
     << "  --crop WxH        crop size before magnification (default 100x75)\n"
     << "  --zoom Z          crop magnification (default 4)\n"
     << "  --write-full      also write the full-size render of every method per scene\n"
+    << "  --no-variants     measure only the methods above, not the MLAA-pass variants:\n"
+    << "                    +lab, +steps32, +steps128, +recon (each over the defaults), +all3\n"
+    << "                    (the three), P-low, P-medium, P-high, P-ultra (the presets)\n"
     << "For MLAA-CPU and MLAA-pass alike, " << mlaaBenchmark::MLAAOptionsUsage()
-    << "Mosaic panel order, left to right: none | FXAA | MSAA4 | MLAA-CPU | MLAA-pass | reference\n";
+    << "Mosaic panel order, left to right: none | FXAA | MSAA4 | MLAA-CPU | MLAA-pass | "
+       "P-high | P-ultra | reference\n";
 }
 }
 
@@ -394,6 +407,7 @@ int main(int argc, char* argv[])
   std::vector<std::string> scenes = vtkMLAAScenes::Names();
   std::string outputDir = ".";
   bool writeFull = false;
+  bool variants = true;
   vtkNew<vtkMLAAOptions> options; // for MLAA-CPU and MLAA-pass
   for (int i = 1; i < argc; ++i)
   {
@@ -432,6 +446,10 @@ int main(int argc, char* argv[])
     {
       writeFull = true;
     }
+    else if (arg == "--no-variants")
+    {
+      variants = false;
+    }
     else if (mlaaBenchmark::ParseMLAAOption(argc, argv, i, options))
     {
       continue; // applied to `options`
@@ -450,6 +468,15 @@ int main(int argc, char* argv[])
       std::cerr << "unknown scene: " << scene << std::endl;
       return EXIT_FAILURE;
     }
+  }
+  if (variants)
+  {
+    for (const auto& variant : mlaaBenchmark::Variants())
+    {
+      Methods.push_back(variant.Name);
+    }
+    MosaicMethods.push_back("P-high");
+    MosaicMethods.push_back("P-ultra");
   }
   cropW = std::min(cropW, width);
   cropH = std::min(cropH, height);
@@ -555,6 +582,19 @@ int main(int argc, char* argv[])
       // Parity with MLAA-CPU: the overlays antialiased too, as the filter sees them.
       pass->AntialiasOverlaysOn();
       Capture(window, images["MLAA-pass-overlays"]);
+      pass->AntialiasOverlaysOff();
+      // The variants, with the pass as MLAA-pass (overlays after the antialiasing; the filter
+      // gives the same image: TestMLAAPassMatchesFilter).
+      if (variants)
+      {
+        for (const auto& variant : mlaaBenchmark::Variants())
+        {
+          vtkNew<vtkMLAAOptions> variantOptions;
+          variant.Configure(variantOptions);
+          pass->SetOptions(variantOptions);
+          Capture(window, images[variant.Name]);
+        }
+      }
       renderer->SetPass(nullptr);
       pass->ReleaseGraphicsResources(window);
     }
@@ -611,7 +651,7 @@ int main(int argc, char* argv[])
     FindCrop(images["none"], reference, cropW, cropH, cx, cy);
     std::vector<const Image*> panels;
     std::vector<std::string> labels;
-    for (const auto& method : Methods)
+    for (const auto& method : MosaicMethods)
     {
       panels.push_back(&images[method]);
       labels.push_back(method);
@@ -735,7 +775,8 @@ int main(int argc, char* argv[])
               << std::defaultfloat << "\n";
   }
   std::cout << "\nCSV: " << outputDir << "/quality.csv; crop mosaics: " << outputDir
-            << "/quality-<scene>-crops.png (none | FXAA | MSAA4 | MLAA-CPU | MLAA-pass | reference)"
+            << "/quality-<scene>-crops.png (none | FXAA | MSAA4 | MLAA-CPU | MLAA-pass | P-high | P-ultra | "
+               "reference)"
             << std::endl;
   return problems ? EXIT_FAILURE : EXIT_SUCCESS;
 }

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <functional>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -71,12 +72,14 @@ inline bool ParseNumber(const std::string& text, double lo, double hi, double& v
 inline const char* MLAAOptionsUsage()
 {
   return "MLAA settings (vtkMLAAOptions; default: the library's defaults):\n"
+         "  --preset low|medium|high|ultra  every setting below at once (put it first)\n"
          "  --threshold T          edge threshold in [0, 1]\n"
-         "  --edges luma|color     what edge detection compares\n"
-         "  --max-search-steps N   search steps in [1, 64]\n"
+         "  --edges luma|color|lab what edge detection compares\n"
+         "  --max-search-steps N   search steps in [1, 128]\n"
          "  --diagonals on|off     diagonal detection\n"
          "  --local-contrast F     local contrast factor in [0, 100]\n"
-         "  --dominant-blending on|off  dominant-direction blending\n";
+         "  --dominant-blending on|off  dominant-direction blending\n"
+         "  --reconstruction on|off     topological reconstruction\n";
 }
 
 // If argv[i] is one of the MLAA settings above with a valid value, applies it to `options`,
@@ -95,11 +98,20 @@ inline bool ParseMLAAOption(int argc, char* argv[], int& i, vtkMLAAOptions* opti
   {
     options->SetThreshold(number);
   }
-  else if (name == "--edges" && (value == "luma" || value == "color"))
+  else if (name == "--edges" && (value == "luma" || value == "color" || value == "lab"))
   {
     options->SetEdgeDetection(vtkMLAAOptions::GetEdgeDetectionFromString(value.c_str()));
   }
-  else if (name == "--max-search-steps" && ParsePositive(value, steps) && steps <= 64)
+  else if (name == "--preset" && vtkMLAAOptions::GetPresetFromString(value.c_str()) >= 0)
+  {
+    options->SetPreset(vtkMLAAOptions::GetPresetFromString(value.c_str()));
+  }
+  else if (name == "--reconstruction" && (value == "on" || value == "off"))
+  {
+    options->SetReconstruction(value == "on");
+  }
+  else if (name == "--max-search-steps" && ParsePositive(value, steps) &&
+    steps <= options->GetMaxSearchStepsMaxValue())
   {
     options->SetMaxSearchSteps(steps);
   }
@@ -132,8 +144,40 @@ inline std::string DescribeMLAAOptions(vtkMLAAOptions* options)
        << ", max search steps " << options->GetMaxSearchSteps() << ", diagonals "
        << (options->GetDiagonalDetection() ? "on" : "off") << ", local contrast factor "
        << options->GetLocalContrastFactor() << ", dominant-direction blending "
-       << (options->GetDominantDirectionBlending() ? "on" : "off");
+       << (options->GetDominantDirectionBlending() ? "on" : "off") << ", reconstruction "
+       << (options->GetReconstruction() ? "on" : "off") << " (preset "
+       << vtkMLAAOptions::GetPresetAsString(options->GetPreset()) << ")";
   return text.str();
+}
+
+// Variants of the MLAA settings that the benchmarks measure besides the default settings: each feature of "Morphological
+// antialiasing and topological reconstruction" alone over the library's defaults, the three
+// together, and each preset.
+struct Variant
+{
+  std::string Name;
+  std::function<void(vtkMLAAOptions*)> Configure;
+};
+const std::vector<Variant>& Variants()
+{
+  static const std::vector<Variant> variants = {
+    { "+lab", [](vtkMLAAOptions* o) { o->SetEdgeDetectionToLab(); } },
+    { "+steps32", [](vtkMLAAOptions* o) { o->SetMaxSearchSteps(32); } },
+    { "+steps128", [](vtkMLAAOptions* o) { o->SetMaxSearchSteps(128); } },
+    { "+recon", [](vtkMLAAOptions* o) { o->ReconstructionOn(); } },
+    { "+all3",
+      [](vtkMLAAOptions* o)
+      {
+        o->SetEdgeDetectionToLab();
+        o->SetMaxSearchSteps(128);
+        o->ReconstructionOn();
+      } },
+    { "P-low", [](vtkMLAAOptions* o) { o->SetPresetToLow(); } },
+    { "P-medium", [](vtkMLAAOptions* o) { o->SetPresetToMedium(); } },
+    { "P-high", [](vtkMLAAOptions* o) { o->SetPresetToHigh(); } },
+    { "P-ultra", [](vtkMLAAOptions* o) { o->SetPresetToUltra(); } },
+  };
+  return variants;
 }
 
 // Splits "a,b,c" into its non-empty items.

@@ -3,10 +3,12 @@
 #include "vtkActor.h"
 #include "vtkArrowSource.h"
 #include "vtkCamera.h"
+#include "vtkCellArray.h"
 #include "vtkConeSource.h"
 #include "vtkContourFilter.h"
 #include "vtkCubeSource.h"
 #include "vtkCylinderSource.h"
+#include "vtkElevationFilter.h"
 #include "vtkGlyph3D.h"
 #include "vtkImageCanvasSource2D.h"
 #include "vtkImageData.h"
@@ -15,6 +17,8 @@
 #include "vtkNew.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointSource.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkQuadric.h"
@@ -28,6 +32,7 @@
 #include "vtkTextProperty.h"
 #include "vtkTexture.h"
 #include "vtkTexturedSphereSource.h"
+#include "vtkTubeFilter.h"
 #include "vtkWindowToImageFilter.h"
 
 #include <cmath>
@@ -312,6 +317,167 @@ void Mixed(vtkRenderer* renderer)
   renderer->ResetCameraClippingRange();
 }
 
+void EqualLumaColormap(vtkRenderer* renderer)
+{
+  // Surfaces colour-mapped with a banded lookup table whose colours all have the same Rec. 709
+  // luma (0.45 within 0.01): the band boundaries are edges that luma cannot see, the
+  // silhouettes against the dark background edges that it can. Unlit, as a 2D plot or a
+  // flat-shaded map would be.
+  renderer->SetBackground(0.12, 0.12, 0.14);
+  const double bands[][3] = { { 0.9, 0.36, 0.0 }, { 0.1, 0.5, 1.0 }, { 0.75, 0.32, 0.9 },
+    { 0.2, 0.55, 0.2 }, { 1.0, 0.28, 0.5 }, { 0.0, 0.575, 0.5 } };
+  vtkNew<vtkLookupTable> lut;
+  lut->SetNumberOfTableValues(6);
+  for (int i = 0; i < 6; ++i)
+  {
+    lut->SetTableValue(i, bands[i][0], bands[i][1], bands[i][2], 1.0);
+  }
+  lut->SetTableRange(0.0, 1.0);
+  auto addMapped = [renderer, &lut](vtkAlgorithm* source, const double low[3],
+                     const double high[3], double repeat) {
+    vtkNew<vtkElevationFilter> elevation;
+    elevation->SetInputConnection(source->GetOutputPort());
+    elevation->SetLowPoint(low[0], low[1], low[2]);
+    elevation->SetHighPoint(high[0], high[1], high[2]);
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(elevation->GetOutputPort());
+    mapper->SetLookupTable(lut);
+    mapper->SetScalarRange(0.0, 1.0 / repeat);
+    mapper->InterpolateScalarsBeforeMappingOn(); // sharp band boundaries inside triangles
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    actor->GetProperty()->LightingOff();
+    renderer->AddActor(actor);
+    return actor;
+  };
+  // A tilted plane whose bands run at a few degrees off the horizontal, and a sphere with
+  // curved bands.
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-2.6, -1.9, -0.5);
+  plane->SetPoint1(0.4, -1.9, -0.5);
+  plane->SetPoint2(-2.6, 1.9, -0.5);
+  plane->SetResolution(60, 60);
+  const double planeLow[3] = { 0.0, -1.9, 0.0 };
+  const double planeHigh[3] = { 0.1, 1.9, 0.0 };
+  addMapped(plane, planeLow, planeHigh, 1.0);
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(96);
+  sphere->SetPhiResolution(64);
+  sphere->SetRadius(1.3);
+  sphere->SetCenter(1.2, 0.0, 0.0);
+  const double sphereLow[3] = { 0.3, -1.0, -1.0 };
+  const double sphereHigh[3] = { 2.0, 1.3, 1.0 };
+  addMapped(sphere, sphereLow, sphereHigh, 1.0);
+  renderer->GetActiveCamera()->SetPosition(0.0, 0.0, 7.5);
+  renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->ResetCameraClippingRange();
+}
+
+void Horizon(vtkRenderer* renderer)
+{
+  // Long, nearly horizontal and nearly vertical edges: the horizon of a large ground plane seen
+  // with the camera rolled by 1 degree, a beam across the view at 3 degrees and a mast at 88:
+  // staircases whose steps are tens of pixels long, longer than the default search.
+  renderer->SetBackground(0.55, 0.7, 0.9);
+  vtkNew<vtkPlaneSource> ground;
+  ground->SetOrigin(-200.0, 0.0, -200.0);
+  ground->SetPoint1(200.0, 0.0, -200.0);
+  ground->SetPoint2(-200.0, 0.0, 200.0);
+  const double earth[3] = { 0.3, 0.35, 0.2 };
+  auto groundActor = AddActor(renderer, ground, earth);
+  groundActor->GetProperty()->LightingOff();
+  vtkNew<vtkCubeSource> beam;
+  beam->SetXLength(14.0);
+  beam->SetYLength(0.25);
+  beam->SetZLength(0.25);
+  const double steel[3] = { 0.75, 0.3, 0.2 };
+  auto beamActor = AddActor(renderer, beam, steel);
+  beamActor->GetProperty()->LightingOff();
+  beamActor->SetPosition(0.0, 1.6, -4.0);
+  beamActor->RotateZ(3.0);
+  vtkNew<vtkCubeSource> mast;
+  mast->SetXLength(0.2);
+  mast->SetYLength(8.0);
+  mast->SetZLength(0.2);
+  const double white[3] = { 0.95, 0.95, 0.9 };
+  auto mastActor = AddActor(renderer, mast, white);
+  mastActor->GetProperty()->LightingOff();
+  mastActor->SetPosition(-2.5, 2.0, -6.0);
+  mastActor->RotateZ(-2.0);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(0.0, 1.2, 6.0);
+  camera->SetFocalPoint(0.0, 1.0, -20.0);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->Roll(1.0);
+  renderer->ResetCameraClippingRange();
+}
+
+void ThinStructures(vtkRenderer* renderer)
+{
+  // Thin structures that point sampling breaks up: iso-lines of a 2D field drawn as 1-pixel
+  // lines, streamline-like curves drawn as tubes about 0.6 pixel wide at 600 pixels of height,
+  // and two "power lines" (cylinders of 0.85 pixel) across the view. Parallel projection keeps
+  // their widths independent of depth.
+  renderer->SetBackground(0.96, 0.95, 0.92);
+  const double pixel = 3.0 / 600.0; // world units per pixel at 600 pixels of height
+  vtkNew<vtkQuadric> field;
+  field->SetCoefficients(1.0, 0.6, 0.0, 0.3, 0.0, 0.0, 0.2, -0.1, 0.0, 0.0);
+  vtkNew<vtkSampleFunction> sample;
+  sample->SetImplicitFunction(field);
+  sample->SetModelBounds(-2.0, 0.3, -1.4, 1.4, 0.0, 0.0);
+  sample->SetSampleDimensions(160, 160, 1);
+  sample->ComputeNormalsOff();
+  vtkNew<vtkContourFilter> isolines;
+  isolines->SetInputConnection(sample->GetOutputPort());
+  isolines->GenerateValues(10, 0.05, 2.0);
+  const double ink[3] = { 0.15, 0.2, 0.45 };
+  auto isoActor = AddActor(renderer, isolines, ink);
+  isoActor->GetProperty()->LightingOff();
+  // Streamline-like curves: y = y0 + a sin(k x + phase), as polylines.
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> lines;
+  for (int c = 0; c < 9; ++c)
+  {
+    const int n = 200;
+    lines->InsertNextCell(n);
+    for (int i = 0; i < n; ++i)
+    {
+      const double x = 0.4 + 1.7 * i / (n - 1.0);
+      const double y = -1.2 + 0.3 * c + 0.12 * std::sin(3.0 * x + 0.7 * c);
+      lines->InsertCellPoint(points->InsertNextPoint(x, y, 0.0));
+    }
+  }
+  vtkNew<vtkPolyData> curves;
+  curves->SetPoints(points);
+  curves->SetLines(lines);
+  vtkNew<vtkTubeFilter> tubes;
+  tubes->SetInputData(curves);
+  tubes->SetRadius(0.3 * pixel);
+  tubes->SetNumberOfSides(6);
+  const double red[3] = { 0.75, 0.15, 0.1 };
+  auto tubeActor = AddActor(renderer, tubes, red);
+  tubeActor->GetProperty()->LightingOff();
+  for (int k = 0; k < 2; ++k)
+  {
+    vtkNew<vtkLineSource> wire;
+    wire->SetPoint1(-2.1, 1.25 - 0.15 * k, 0.1);
+    wire->SetPoint2(2.1, 1.05 - 0.35 * k, 0.1);
+    vtkNew<vtkTubeFilter> cable;
+    cable->SetInputConnection(wire->GetOutputPort());
+    cable->SetRadius(0.42 * pixel);
+    cable->SetNumberOfSides(6);
+    const double black[3] = { 0.05, 0.05, 0.05 };
+    auto cableActor = AddActor(renderer, cable, black);
+    cableActor->GetProperty()->LightingOff();
+  }
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->ParallelProjectionOn();
+  camera->SetParallelScale(1.5);
+  camera->SetPosition(0.0, 0.0, 5.0);
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->ResetCameraClippingRange();
+}
+
 struct Scene
 {
   std::string Description;
@@ -329,6 +495,9 @@ const std::vector<std::pair<std::string, Scene>>& Scenes()
     { "texture", { "checkerboard texture on a plane and a sphere", Texture } },
     { "text", { "coloured sphere with text and a scalar bar", TextAndScalarBar } },
     { "mixed", { "shaded, wireframe and point geometry with a label", Mixed } },
+    { "colormap", { "surfaces banded by a lookup table of equal-luma colours", EqualLumaColormap } },
+    { "horizon", { "long edges at 1 to 3 degrees off horizontal and vertical", Horizon } },
+    { "thin", { "1-pixel iso-lines, sub-pixel streamline tubes and power lines", ThinStructures } },
   };
   return scenes;
 }
