@@ -1,0 +1,332 @@
+// mlaa-temporal: the temporal-stability measure of the project's MEASURING.md.
+//
+// For each scene it renders a slow camera orbit of K frames (the camera turned about its focal
+// point by a fixed angle a frame, vtkCamera::Azimuth) with every method, and per frame the
+// supersampled reference of MEASURING.md (N x N single-sample renders with the projection
+// shifted by stratified sub-pixel offsets, averaged). Flicker and crawl are the frame-to-frame
+// changes that the reference does not have:
+//   TE(method)  = mean over frames k >= 1, pixels and the three colour channels of
+//                 |(M_k - M_{k-1}) - (R_k - R_{k-1})|, in 1/255 units;
+//   T-AAR       = 1 - TE(method) / TE(none): the share of the plain render's temporal error that
+//                 the method removes (0: no steadier than no antialiasing; 1: as steady as the
+//                 reference; negative: it adds flicker).
+// It also reports each method's spatial AAR (1 - MSE(method, reference) / MSE(none, reference)
+// over the pixels where none and the reference differ by more than 4/255, all frames pooled),
+// so that stability and still-image quality can be read side by side.
+//
+// Methods: none (single-sample), FXAA (VTK's built-in, renderer->UseFXAAOn()), MSAA4
+// (window->SetMultiSamples(4)) and vtkOpenGLMLAAPass at each preset of vtkMLAAOptions
+// (MLAA-low ... MLAA-ultra; overlays drawn after the antialiasing). Frames are read back as
+// 8-bit RGB.
+#include "BenchmarkUtilities.h"
+#include "vtkMLAAScenes.h"
+
+#include "vtkCamera.h"
+#include "vtkImageData.h"
+#include "vtkMLAAOptions.h"
+#include "vtkNew.h"
+#include "vtkOpenGLMLAAPass.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace
+{
+using Frame = std::vector<double>; // 3 values per pixel, 0..255
+
+Frame Grab(vtkRenderWindow* window)
+{
+  vtkSmartPointer<vtkImageData> image = vtkMLAAScenes::Capture(window);
+  const auto* p = static_cast<const unsigned char*>(image->GetScalarPointer());
+  int dims[3];
+  image->GetDimensions(dims);
+  return Frame(p, p + static_cast<std::size_t>(dims[0]) * dims[1] * 3);
+}
+
+// A way of rendering one frame.
+struct Method
+{
+  std::string Name;
+  std::function<void(vtkRenderer*, vtkRenderWindow*)> Enable;
+  std::function<void(vtkRenderer*, vtkRenderWindow*)> Disable;
+};
+
+std::vector<Method> Methods()
+{
+  std::vector<Method> methods;
+  auto nothing = [](vtkRenderer*, vtkRenderWindow*) {};
+  methods.push_back({ "none", nothing, nothing });
+  methods.push_back({ "FXAA", [](vtkRenderer* r, vtkRenderWindow*) { r->UseFXAAOn(); },
+    [](vtkRenderer* r, vtkRenderWindow*) { r->UseFXAAOff(); } });
+  methods.push_back({ "MSAA4", [](vtkRenderer*, vtkRenderWindow* w) { w->SetMultiSamples(4); },
+    [](vtkRenderer*, vtkRenderWindow* w) { w->SetMultiSamples(0); } });
+  for (int preset = vtkMLAAOptions::LOW; preset <= vtkMLAAOptions::ULTRA; ++preset)
+  {
+    methods.push_back({ std::string("MLAA-") + vtkMLAAOptions::GetPresetAsString(preset),
+      [preset](vtkRenderer* r, vtkRenderWindow*) {
+        vtkNew<vtkRenderStepsPass> steps;
+        vtkNew<vtkOpenGLMLAAPass> pass;
+        pass->SetDelegatePass(steps);
+        pass->GetOptions()->SetPreset(preset);
+        r->SetPass(pass);
+      },
+      [](vtkRenderer* r, vtkRenderWindow* w) {
+        if (r->GetPass())
+        {
+          r->GetPass()->ReleaseGraphicsResources(w);
+        }
+        r->SetPass(nullptr);
+      } });
+  }
+  return methods;
+}
+
+struct Result
+{
+  double TE = 0.0;         // mean temporal error, 1/255 units
+  double SpatialSSE = 0.0; // squared error against the reference over E, all frames
+};
+
+void Usage(const char* program)
+{
+  std::cout << "Usage: " << program << " [options]\n"
+            << "Measures temporal stability against a supersampled reference sequence "
+               "(MEASURING.md).\n"
+            << "  --size WxH        render size (default 400x300)\n"
+            << "  --scenes a,b,c    scenes (default horizon,thin,texture,silhouettes)\n"
+            << "  --frames K        frames of the orbit (default 60)\n"
+            << "  --degrees D       camera azimuth step per frame (default 0.25)\n"
+            << "  --samples N       reference is N x N shifted renders per frame (default 8)\n"
+            << "  --output-dir DIR  where temporal.csv goes (default .)\n";
+}
+}
+
+int main(int argc, char* argv[])
+{
+  int width = 400, height = 300, frames = 60, samples = 8;
+  double degrees = 0.25;
+  std::vector<std::string> scenes = { "horizon", "thin", "texture", "silhouettes" };
+  std::string outputDir = ".";
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    const bool hasValue = i + 1 < argc;
+    if (arg == "--help" || arg == "-h")
+    {
+      Usage(argv[0]);
+      return EXIT_SUCCESS;
+    }
+    else if (arg == "--size" && hasValue && mlaaBenchmark::ParseSize(argv[i + 1], width, height))
+    {
+      ++i;
+    }
+    else if (arg == "--scenes" && hasValue)
+    {
+      scenes = mlaaBenchmark::SplitList(argv[++i]);
+    }
+    else if (arg == "--frames" && hasValue && mlaaBenchmark::ParsePositive(argv[i + 1], frames) &&
+      frames >= 2)
+    {
+      ++i;
+    }
+    else if (arg == "--degrees" && hasValue &&
+      mlaaBenchmark::ParseNumber(argv[i + 1], 0.0, 10.0, degrees))
+    {
+      ++i;
+    }
+    else if (arg == "--samples" && hasValue && mlaaBenchmark::ParsePositive(argv[i + 1], samples))
+    {
+      ++i;
+    }
+    else if (arg == "--output-dir" && hasValue)
+    {
+      outputDir = argv[++i];
+    }
+    else
+    {
+      std::cerr << "bad or incomplete argument: " << arg << std::endl;
+      Usage(argv[0]);
+      return EXIT_FAILURE;
+    }
+  }
+  for (const auto& scene : scenes)
+  {
+    if (vtkMLAAScenes::Describe(scene).empty())
+    {
+      std::cerr << "unknown scene: " << scene << std::endl;
+      return EXIT_FAILURE;
+    }
+  }
+  std::error_code directoryError;
+  std::filesystem::create_directories(outputDir, directoryError);
+  if (directoryError)
+  {
+    std::cerr << "mlaa-temporal: cannot create " << outputDir << ": " << directoryError.message()
+              << std::endl;
+    return EXIT_FAILURE;
+  }
+
+  std::cout << "mlaa-temporal: " << width << "x" << height << ", " << frames << " frames, "
+            << degrees << " degree(s) of azimuth a frame, reference " << samples << "x" << samples
+            << " shifted renders a frame" << std::endl;
+  const std::vector<Method> methods = Methods();
+  std::map<std::string, std::map<std::string, Result>> results; // scene -> method -> result
+  std::string rendererName;
+  const std::size_t values = static_cast<std::size_t>(width) * height * 3;
+  for (const auto& scene : scenes)
+  {
+    mlaaBenchmark::Stopwatch clock;
+    auto window = vtkMLAAScenes::NewOffscreenWindow(width, height);
+    vtkNew<vtkRenderer> renderer;
+    window->AddRenderer(renderer);
+    vtkMLAAScenes::Build(scene, renderer);
+    vtkCamera* camera = renderer->GetActiveCamera();
+    double center[2];
+    camera->GetWindowCenter(center);
+    if (rendererName.empty())
+    {
+      window->Render();
+      rendererName = mlaaBenchmark::OpenGLRenderer(window);
+      mlaaBenchmark::PrintRasteriserNote(rendererName);
+    }
+
+    std::map<std::string, Frame> previous;
+    Frame previousReference;
+    std::map<std::string, double> sumTE, sumSSE;
+    double sumNoneSSE = 0.0;
+    for (int k = 0; k < frames; ++k)
+    {
+      if (k > 0)
+      {
+        camera->Azimuth(degrees);
+      }
+      renderer->ResetCameraClippingRange();
+      // The reference of this frame.
+      Frame reference(values, 0.0);
+      for (int j = 0; j < samples; ++j)
+      {
+        for (int i = 0; i < samples; ++i)
+        {
+          const double sx = (i + 0.5) / samples - 0.5;
+          const double sy = (j + 0.5) / samples - 0.5;
+          camera->SetWindowCenter(center[0] + 2.0 * sx / width, center[1] + 2.0 * sy / height);
+          const Frame shifted = Grab(window);
+          for (std::size_t v = 0; v < values; ++v)
+          {
+            reference[v] += shifted[v];
+          }
+        }
+      }
+      for (double& v : reference)
+      {
+        v /= static_cast<double>(samples) * samples;
+      }
+      camera->SetWindowCenter(center[0], center[1]);
+
+      std::map<std::string, Frame> current;
+      for (const auto& method : methods)
+      {
+        method.Enable(renderer, window);
+        current[method.Name] = Grab(window);
+        method.Disable(renderer, window);
+      }
+      // Spatial error over E (none and reference differ by more than 4/255 in some channel).
+      const Frame& none = current["none"];
+      for (std::size_t p = 0; p < values; p += 3)
+      {
+        bool inE = false;
+        for (int c = 0; c < 3; ++c)
+        {
+          inE = inE || std::abs(none[p + c] - reference[p + c]) > 4.0;
+        }
+        if (!inE)
+        {
+          continue;
+        }
+        for (int c = 0; c < 3; ++c)
+        {
+          const double dn = none[p + c] - reference[p + c];
+          sumNoneSSE += dn * dn;
+          for (const auto& method : methods)
+          {
+            const double d = current[method.Name][p + c] - reference[p + c];
+            sumSSE[method.Name] += d * d;
+          }
+        }
+      }
+      // Temporal error against the reference's own change.
+      if (k > 0)
+      {
+        for (const auto& method : methods)
+        {
+          const Frame& m = current[method.Name];
+          const Frame& mp = previous[method.Name];
+          double sum = 0.0;
+          for (std::size_t v = 0; v < values; ++v)
+          {
+            sum += std::abs((m[v] - mp[v]) - (reference[v] - previousReference[v]));
+          }
+          sumTE[method.Name] += sum / values;
+        }
+      }
+      previous = std::move(current);
+      previousReference = std::move(reference);
+    }
+    for (const auto& method : methods)
+    {
+      Result& r = results[scene][method.Name];
+      r.TE = sumTE[method.Name] / (frames - 1);
+      r.SpatialSSE = sumNoneSSE > 0.0 ? sumSSE[method.Name] / sumNoneSSE : 0.0;
+    }
+    std::cout << "scene " << scene << " (" << vtkMLAAScenes::Describe(scene) << "): "
+              << std::fixed << std::setprecision(1) << clock.Milliseconds() / 1000.0 << " s"
+              << std::defaultfloat << std::endl;
+  }
+
+  // The table: per scene and method, then the means over the scenes.
+  std::ofstream csv(outputDir + "/temporal.csv");
+  csv << "scene,method,TE,T_AAR,AAR\n";
+  std::cout << "\n"
+            << std::left << std::setw(13) << "scene" << std::setw(13) << "method" << std::right
+            << std::setw(9) << "TE" << std::setw(9) << "T-AAR" << std::setw(9) << "AAR" << "\n";
+  std::map<std::string, double> meanTAAR, meanAAR;
+  for (const auto& scene : scenes)
+  {
+    const double noneTE = results[scene]["none"].TE;
+    for (const auto& method : methods)
+    {
+      const Result& r = results[scene][method.Name];
+      const double tAAR = noneTE > 0.0 ? 1.0 - r.TE / noneTE : 0.0;
+      const double aar = 1.0 - r.SpatialSSE;
+      meanTAAR[method.Name] += tAAR / scenes.size();
+      meanAAR[method.Name] += aar / scenes.size();
+      std::cout << std::left << std::setw(13) << scene << std::setw(13) << method.Name
+                << std::right << std::fixed << std::setprecision(3) << std::setw(9) << r.TE
+                << std::setw(9) << tAAR << std::setw(9) << aar << std::defaultfloat << "\n";
+      csv << scene << "," << method.Name << "," << r.TE << "," << tAAR << "," << aar << "\n";
+    }
+  }
+  std::cout << "\n"
+            << std::left << std::setw(13) << "method" << std::right << std::setw(12)
+            << "mean T-AAR" << std::setw(10) << "mean AAR" << "\n";
+  for (const auto& method : methods)
+  {
+    std::cout << std::left << std::setw(13) << method.Name << std::right << std::fixed
+              << std::setprecision(3) << std::setw(12) << meanTAAR[method.Name] << std::setw(10)
+              << meanAAR[method.Name] << std::defaultfloat << "\n";
+  }
+  std::cout << "\nCSV: " << outputDir << "/temporal.csv" << std::endl;
+  return csv ? EXIT_SUCCESS : EXIT_FAILURE;
+}
