@@ -1,5 +1,7 @@
 #include "vtkMLAAOptions.h"
 
+#include "vtkMLAAOptionsHelpers.h"
+
 #include "vtkObjectFactory.h"
 
 #include <cstring>
@@ -29,22 +31,6 @@ const PresetSettings PresetTable[] = {
   { 0.1, 2.0, vtkMLAAOptions::LUMA, 32, true, true, false },  // high
   { 0.05, 2.0, vtkMLAAOptions::LAB, 128, true, true, true },  // ultra
 };
-
-template <int N>
-int IndexOfName(const char* const (&names)[N], const char* name)
-{
-  if (name)
-  {
-    for (int i = 0; i < N; ++i)
-    {
-      if (std::strcmp(names[i], name) == 0)
-      {
-        return i;
-      }
-    }
-  }
-  return -1;
-}
 }
 
 //------------------------------------------------------------------------------
@@ -56,7 +42,7 @@ const char* vtkMLAAOptions::GetEdgeDetectionAsString(int mode)
 //------------------------------------------------------------------------------
 int vtkMLAAOptions::GetEdgeDetectionFromString(const char* name)
 {
-  return IndexOfName(EdgeDetectionNames, name);
+  return vtkMLAAInternal::IndexOfName(EdgeDetectionNames, name);
 }
 
 //------------------------------------------------------------------------------
@@ -69,7 +55,7 @@ const char* vtkMLAAOptions::GetDebugOutputAsString(int output)
 //------------------------------------------------------------------------------
 int vtkMLAAOptions::GetDebugOutputFromString(const char* name)
 {
-  return IndexOfName(DebugOutputNames, name);
+  return vtkMLAAInternal::IndexOfName(DebugOutputNames, name);
 }
 
 //------------------------------------------------------------------------------
@@ -85,7 +71,7 @@ const char* vtkMLAAOptions::GetPresetAsString(int preset)
 //------------------------------------------------------------------------------
 int vtkMLAAOptions::GetPresetFromString(const char* name)
 {
-  return IndexOfName(PresetNames, name);
+  return vtkMLAAInternal::IndexOfName(PresetNames, name);
 }
 
 //------------------------------------------------------------------------------
@@ -145,25 +131,7 @@ void vtkMLAAOptions::DeepCopy(vtkMLAAOptions* other)
 //------------------------------------------------------------------------------
 bool vtkMLAAOptions::Assign(vtkObject* owner, vtkMLAAOptions*& member, vtkMLAAOptions* options)
 {
-  if (options && options == member)
-  {
-    return false;
-  }
-  vtkMLAAOptions* old = member;
-  if (options)
-  {
-    options->Register(owner);
-    member = options;
-  }
-  else
-  {
-    member = vtkMLAAOptions::New(); // owned by `owner`: the reference New gives
-  }
-  if (old)
-  {
-    old->UnRegister(owner);
-  }
-  return true;
+  return vtkMLAAInternal::AssignOwned(owner, member, options);
 }
 
 //------------------------------------------------------------------------------

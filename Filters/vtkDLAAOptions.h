@@ -1,0 +1,136 @@
+/**
+ * @class   vtkDLAAOptions
+ * @brief   The settings of directionally localized antialiasing (DLAA), shared by the CPU filter
+ *          and the GPU pass.
+ *
+ * DLAA (Andreev, "Anti-Aliasing From a Different Perspective", GDC 2011; the method of The
+ * Force Unleashed 2) blurs each edge along its own direction instead of recognising the
+ * patterns of its staircase as MLAA does. It is a fixed, small set of filters per pixel, so a
+ * staircase that moves by a fraction of a pixel changes the result by a fraction too: it trades
+ * some of MLAA's sharpness on still images for temporal stability. vtkImageDLAA (CPU) and
+ * vtkOpenGLDLAAPass (GPU) read their settings from an instance of this class and compute the
+ * same image within the rounding of the GPU's arithmetic.
+ *
+ * The method, as both back ends implement it. Colours are normalised as vtkImageMLAA normalises
+ * them (its value range: the whole range is 1), reads beyond the image are clamped to its border
+ * (as GPU texture reads are), l(c) is the luminosity function (LumaFunction) of a colour c, and
+ * every channel, alpha included, is filtered alike. For pixel p with colour c:
+ * 1. Short edges (slides 21 to 24, 43). Along x, the four neighbours at distance 1 and 2 give the
+ *    5-pixel high-pass Hx = |sum - 4 c| / 4 (per channel) and the 5-pixel blur
+ *    Bx = (sum + 2 c) / 6; along y the same give Hy and By. The blend masks turn the high-pass
+ *    responses into weights with the contrast curve saturate(lambda * response - epsilon),
+ *    divided by the luminosity of the blur they are used with, which makes them independent of
+ *    the image's intensity:
+ *      mx = saturate((Lambda * l(Hy) - Epsilon) / l(Bx))   (a horizontal edge: blur along x),
+ *      my = saturate((Lambda * l(Hx) - Epsilon) / l(By))   (a vertical edge: blur along y),
+ *    with 0 where the numerator is not positive and 1 where it is positive and the divisor is 0.
+ *    The short-edge result is s = lerp(lerp(c, Bx, mx), By, my / 2).
+ * 2. Long edges (slides 25 to 31, 44 to 47; LongEdges on). A long horizontal edge is a run of
+ *    horizontal-edge responses along x: the long mask Mx = saturate(2 * a - 1), where a is the
+ *    mean of mx over the 17 pixels p - 8 .. p + 8 along x; My likewise along y with my. Where
+ *    both Mx and My are positive (noise, texture: slide 32) nothing more is done. Otherwise, for
+ *    Mx > 0: the 17-pixel mean colour along x (p - 8 .. p + 8) is only a target luminosity t,
+ *    never a colour (a distant colour would bleed); the pixel is moved towards the neighbour
+ *    above (u) or below (d) until its luminosity is t: with k = (t - l(c)) / (l(n) - l(c)) for
+ *    n = u and n = d, the first of u, d whose k lies in (0, 1] (the smaller k if both do) gives
+ *    q = lerp(c, n, k), else q = c; and the result is lerp(s, q, Mx). For My > 0 the same along
+ *    y with the left and right neighbours.
+ * Flat regions (every response 0) and faint noise (Lambda * response <= Epsilon) are left
+ * exactly as they are. Pixels whose neighbourhood holds NaN or infinity are left as they are.
+ *
+ * The settings:
+ * - Epsilon (default 0.1, range [0, 1]) and Lambda (default 3, range [0, 100]): the contrast
+ *   curve of the blend masks (the talk's effectiveness controls, slide 43, with its values).
+ *   Responses below Epsilon / Lambda are ignored; higher Lambda blends more.
+ * - LumaFunction (default REC709): the luminosity l. REC709: 0.2126 R + 0.7152 G + 0.0722 B, as
+ *   MLAA's luma edges; GREEN: the green channel alone (the talk's choice for speed). One- and
+ *   two-component images use their first component.
+ * - LongEdges (default on): the long-edge step; off gives the short-edge result alone.
+ *
+ * @sa vtkImageDLAA vtkOpenGLDLAAPass vtkMLAAOptions
+ */
+
+#ifndef vtkDLAAOptions_h
+#define vtkDLAAOptions_h
+
+#include "vtkFiltersMLAAModule.h" // For export macro
+#include "vtkObject.h"
+
+class VTKFILTERSMLAA_EXPORT vtkDLAAOptions : public vtkObject
+{
+public:
+  static vtkDLAAOptions* New();
+  vtkTypeMacro(vtkDLAAOptions, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** The luminosity functions. */
+  enum LumaFunctions
+  {
+    REC709 = 0,
+    GREEN = 1
+  };
+
+  /** Pixels each way of the long-edge masks and blurs (a 17-pixel window). */
+  static constexpr int LongEdgeRadius = 8;
+
+  ///@{
+  /** Offset of the contrast curve of the blend masks. Default 0.1, range [0, 1]. */
+  vtkSetClampMacro(Epsilon, double, 0.0, 1.0);
+  vtkGetMacro(Epsilon, double);
+  ///@}
+
+  ///@{
+  /** Gain of the contrast curve of the blend masks. Default 3, range [0, 100]. */
+  vtkSetClampMacro(Lambda, double, 0.0, 100.0);
+  vtkGetMacro(Lambda, double);
+  ///@}
+
+  ///@{
+  /** The luminosity function: REC709 (default) or GREEN. */
+  vtkSetClampMacro(LumaFunction, int, REC709, GREEN);
+  vtkGetMacro(LumaFunction, int);
+  void SetLumaFunctionToRec709() { this->SetLumaFunction(REC709); }
+  void SetLumaFunctionToGreen() { this->SetLumaFunction(GREEN); }
+  ///@}
+
+  ///@{
+  /** Whether long edges get the long-edge step. Default on. */
+  vtkSetMacro(LongEdges, bool);
+  vtkGetMacro(LongEdges, bool);
+  vtkBooleanMacro(LongEdges, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Names of the luminosity functions, as the `mlaa` tool spells them: "rec709", "green". The
+   * parsing function returns -1 for an unknown name.
+   */
+  static const char* GetLumaFunctionAsString(int function);
+  static int GetLumaFunctionFromString(const char* name);
+  ///@}
+
+  /** Copy every setting of another instance. */
+  void DeepCopy(vtkDLAAOptions* other);
+
+  /**
+   * For the classes that own options (vtkImageDLAA, vtkOpenGLDLAAPass), whose options are never
+   * null: make `member` refer to `options` (registered to `owner`), or to a fresh default object
+   * when `options` is null, releasing the previous one. Returns true when `member` changed.
+   */
+  static bool Assign(vtkObject* owner, vtkDLAAOptions*& member, vtkDLAAOptions* options);
+
+protected:
+  vtkDLAAOptions() = default;
+  ~vtkDLAAOptions() override = default;
+
+  double Epsilon = 0.1;
+  double Lambda = 3.0;
+  int LumaFunction = REC709;
+  bool LongEdges = true;
+
+private:
+  vtkDLAAOptions(const vtkDLAAOptions&) = delete;
+  void operator=(const vtkDLAAOptions&) = delete;
+};
+
+#endif
