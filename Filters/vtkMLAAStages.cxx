@@ -333,6 +333,129 @@ const float* WeightValues()
 }
 
 //------------------------------------------------------------------------------
+// Line lengths (section 4.3.1 as run lengths; see the header). With C = maxDistance and "p
+// continues to q" meaning that q has the line's edgel and no crossing edgel lies between p and
+// q (edgels read clamped to the extent):
+//   length(p) = continues(p, next(p)) ? min(C, 1 + length(next(p))) : 0,
+// evaluated from the far end of each row or column towards its near end. Past the border of the
+// extent the clamped edgels repeat the border pixel's, so the border pixel continues to its
+// outer neighbour exactly when every further one does too: its length is C or 0.
+void ComputeRowLineLengths(
+  const EdgesBuffer& edges, int y, int maxDistance, LineLength* left, LineLength* right)
+{
+  const Rect& r = edges.Extent;
+  const int w = r.Width();
+  const int cap = maxDistance;
+  const unsigned char* e = edges.At(r.X0, y);
+  // The row above, clamped: its left edgels cross the line too.
+  const unsigned char* a = edges.At(r.X0, std::min(y + 1, r.Y1));
+  // Whether pixel i has a top edgel and no left edgel on this row or the row above: then the
+  // line runs from i - 1 into i (from the left) or on from i (to the right).
+  auto top = [e](int i) { return e[2 * i + 1] != 0; };
+  auto open = [e, a](int i) { return (e[2 * i] | a[2 * i]) == 0; };
+  // Left: i - 1 continues i's line when it has a top edgel and i's left boundary is open.
+  int length = (top(0) && open(0)) ? cap : 0;
+  left[0] = static_cast<LineLength>(length);
+  for (int i = 1; i < w; ++i)
+  {
+    length = (top(i - 1) && open(i)) ? std::min(cap, length + 1) : 0;
+    left[i] = static_cast<LineLength>(length);
+  }
+  // Right: i + 1 continues i's line when it has a top edgel and its left boundary is open.
+  length = (top(w - 1) && open(w - 1)) ? cap : 0;
+  right[w - 1] = static_cast<LineLength>(length);
+  for (int i = w - 2; i >= 0; --i)
+  {
+    length = (top(i + 1) && open(i + 1)) ? std::min(cap, length + 1) : 0;
+    right[i] = static_cast<LineLength>(length);
+  }
+}
+
+void ComputeColumnLineLengths(const EdgesBuffer& edges, const Rect& extent, int maxDistance,
+  LineLength* down, LineLength* up)
+{
+  const Rect& r = edges.Extent;
+  if (extent.Empty())
+  {
+    return;
+  }
+  const int cap = maxDistance;
+  const int w = extent.Width();
+  // Strips of columns, each scanned row by row (contiguous reads and writes within a row); the
+  // running lengths of a strip's columns are carried from row to row.
+  constexpr int strip = 64;
+  vtkSMPTools::For(0, (w + strip - 1) / strip, 1, [&](vtkIdType begin, vtkIdType end) {
+    LineLength carry[strip];
+    for (vtkIdType s = begin; s < end; ++s)
+    {
+      const int i0 = static_cast<int>(s) * strip;
+      const int n = std::min(strip, w - i0);
+      const int x0 = extent.X0 + i0;
+      // Pixel k's edgels on row y, and whether the boundary above it is open: no top edgel on
+      // it in this column or the column to the left (clamped to the extent).
+      const int leftOfFirst = std::max(x0 - 1, r.X0);
+      auto storeCarry = [&](LineLength* lengths, int y) {
+        if (y >= extent.Y0 && y <= extent.Y1)
+        {
+          std::copy(carry, carry + n, lengths + static_cast<size_t>(y - extent.Y0) * w + i0);
+        }
+      };
+      auto scanRow = [&](int lengthsRow, int edgelsRow, int boundaryRow, LineLength* lengths) {
+        const unsigned char* e = edges.At(x0, edgelsRow);
+        const unsigned char* b = edges.At(x0, boundaryRow);
+        const unsigned char* bLeft = edges.At(leftOfFirst, boundaryRow);
+        unsigned char previousTop = bLeft[1];
+        for (int k = 0; k < n; ++k)
+        {
+          const unsigned char ownTop = b[2 * k + 1];
+          const bool continues = e[2 * k] != 0 && (ownTop | previousTop) == 0;
+          previousTop = ownTop;
+          carry[k] = static_cast<LineLength>(continues ? std::min(cap, carry[k] + 1) : 0);
+        }
+        storeCarry(lengths, lengthsRow);
+      };
+      // Up: y + 1 continues y's line when it has a left edgel and y's top boundary is open. The
+      // scan starts at the top of the extent, where the clamped edgels make the length C or 0,
+      // or C rows above the pixels wanted, where it may start from 0: a line that reaches that
+      // row from a wanted pixel is C long already.
+      const int top = std::min(r.Y1, extent.Y1 + cap);
+      if (top == r.Y1)
+      {
+        // The border row: its own edgels stand for every row above it (cap - 1 + 1 = C).
+        std::fill(carry, carry + n, static_cast<LineLength>(cap - 1));
+        scanRow(top, top, top, up);
+      }
+      else
+      {
+        std::fill(carry, carry + n, static_cast<LineLength>(0));
+        storeCarry(up, top);
+      }
+      for (int y = top - 1; y >= extent.Y0; --y)
+      {
+        scanRow(y, y + 1, y, up);
+      }
+      // Down: y - 1 continues y's line when it has a left edgel and y - 1's top boundary (the
+      // boundary between the two) is open.
+      const int bottom = std::max(r.Y0, extent.Y0 - cap);
+      if (bottom == r.Y0)
+      {
+        std::fill(carry, carry + n, static_cast<LineLength>(cap - 1));
+        scanRow(bottom, bottom, bottom, down);
+      }
+      else
+      {
+        std::fill(carry, carry + n, static_cast<LineLength>(0));
+        storeCarry(down, bottom);
+      }
+      for (int y = bottom + 1; y <= extent.Y1; ++y)
+      {
+        scanRow(y, y - 1, y - 1, down);
+      }
+    }
+  });
+}
+
+//------------------------------------------------------------------------------
 namespace
 {
 // Section 4.3: the blending weights of one pixel from the edges around it.
@@ -347,10 +470,11 @@ public:
   {
   }
 
-  // The four weights of a pixel with edgels (see WeightsBuffer). With DiagonalDetection, an
-  // edgel that is part of a 45-degree staircase takes its weights from the diagonal line instead
-  // (ComputeDiagonalWeights).
-  void Compute(int x, int y, unsigned char* w) const
+  // The four weights of a pixel with edgels (see WeightsBuffer), given the lengths of its lines
+  // (ComputeRowLineLengths, ComputeColumnLineLengths): leftEnd and rightEnd along its row,
+  // up and down along its column. With DiagonalDetection, an edgel that is part of a 45-degree
+  // staircase takes its weights from the diagonal line instead (ComputeDiagonalWeights).
+  void Compute(int x, int y, int leftEnd, int rightEnd, int up, int down, unsigned char* w) const
   {
     w[0] = w[1] = w[2] = w[3] = 0;
     bool top = this->E.Top(x, y);
@@ -362,8 +486,6 @@ public:
     if (top)
     {
       // A horizontal line: its ends lie to the left and to the right.
-      const int leftEnd = this->SearchTopEdges(x, y, -1);
-      const int rightEnd = this->SearchTopEdges(x, y, +1);
       const int e1 = this->CrossingLeftEdges(x - leftEnd, y, y + 1);
       const int e2 = this->CrossingLeftEdges(x + rightEnd + 1, y, y + 1);
       this->LookUpArea(e1, e2, leftEnd, rightEnd, w);
@@ -371,8 +493,6 @@ public:
     if (left)
     {
       // A vertical line: its first end is the upper one.
-      const int up = this->SearchLeftEdges(x, y, +1);
-      const int down = this->SearchLeftEdges(x, y, -1);
       const int e1 = this->CrossingTopEdges(x, x - 1, y + up);
       const int e2 = this->CrossingTopEdges(x, x - 1, y - down - 1);
       this->LookUpArea(e1, e2, up, down, w + 2);
@@ -389,56 +509,6 @@ private:
   }
   int TopAt(int x, int y) const { return this->Clamped(x, y)[1] ? 1 : 0; }
   int LeftAt(int x, int y) const { return this->Clamped(x, y)[0] ? 1 : 0; }
-
-  // Section 4.3.1: distance from (x, y) to the end of its line of top edgels in direction dx
-  // (-1 left, +1 right), or of left edgels in direction dy (-1 down, +1 up). Each step looks at
-  // the next two pixels along the line, as the GPU does with two bilinear fetches:
-  // - the two edgels along the line (weighted 3:1, so that each can be told apart);
-  // - the crossing edgels (perpendicular ones, on either side of the line) at the boundary
-  //   before the first pixel and at the boundary between the two.
-  // The line ends before the first pixel without an edgel, or at the first boundary with a
-  // crossing edgel. Stopping at crossing edges (which the chapter's search does not, section
-  // 4.3.1 and 4.6) keeps the top and bottom outlines of one-pixel-wide lines apart.
-  int SearchTopEdges(int x, int y, int dx) const
-  {
-    for (int i = 0; i < this->S.SearchSteps; ++i)
-    {
-      const int first = x + dx * (2 * i + 1);
-      const int second = first + dx;
-      // Left edgels of the pixels right of the two boundaries, on this row and the one above.
-      const int nearOwner = std::max(first, first - dx);
-      const int midOwner = std::max(first, second);
-      if (this->LeftAt(nearOwner, y) || this->LeftAt(nearOwner, y + 1) || !this->TopAt(first, y))
-      {
-        return 2 * i;
-      }
-      if (this->LeftAt(midOwner, y) || this->LeftAt(midOwner, y + 1) || !this->TopAt(second, y))
-      {
-        return 2 * i + 1;
-      }
-    }
-    return 2 * this->S.SearchSteps;
-  }
-  int SearchLeftEdges(int x, int y, int dy) const
-  {
-    for (int i = 0; i < this->S.SearchSteps; ++i)
-    {
-      const int first = y + dy * (2 * i + 1);
-      const int second = first + dy;
-      // Top edgels of the pixels below the two boundaries, in this column and the one left.
-      const int nearOwner = std::min(first, first - dy);
-      const int midOwner = std::min(first, second);
-      if (this->TopAt(x, nearOwner) || this->TopAt(x - 1, nearOwner) || !this->LeftAt(x, first))
-      {
-        return 2 * i;
-      }
-      if (this->TopAt(x, midOwner) || this->TopAt(x - 1, midOwner) || !this->LeftAt(x, second))
-      {
-        return 2 * i + 1;
-      }
-    }
-    return 2 * this->S.SearchSteps;
-  }
 
   // Section 4.3.2: the crossing-edge code at an end of a line, 3 * (edgel on the owning pixel's
   // side) + (edgel on the opposite side), as the bilinear fetch a quarter pixel off the edge
@@ -622,16 +692,35 @@ void ComputeBlendingWeights(const EdgesBuffer& edges, const Rect& whole,
     return;
   }
   const WeightsComputer computer(edges, whole, settings);
+  const int maxDistance = settings.CellSize - 1;
+  // The up and down lengths of every pixel of the extent (the columns are scanned in strips),
+  // the left and right ones row by row in each task.
+  const size_t pixels = static_cast<size_t>(r.Width()) * r.Height();
+  std::unique_ptr<LineLength[]> columnLengths(new LineLength[2 * pixels]);
+  LineLength* down = columnLengths.get();
+  LineLength* up = down + pixels;
+  ComputeColumnLineLengths(edges, r, maxDistance, down, up);
+  if (progress.CheckAbort())
+  {
+    return;
+  }
+  const int edgesWidth = edges.Extent.Width();
   vtkSMPTools::For(0, r.Height(), RowsPerTask, [&](vtkIdType begin, vtkIdType end) {
     if (progress.Aborted())
     {
       return;
     }
+    std::vector<LineLength> rowLengths(2 * static_cast<size_t>(edgesWidth));
+    LineLength* left = rowLengths.data();
+    LineLength* right = left + edgesWidth;
+    const int offset = r.X0 - edges.Extent.X0;
     for (vtkIdType i = begin; i < end; ++i)
     {
       const int y = r.Y0 + static_cast<int>(i);
       const unsigned char* e = edges.At(r.X0, y);
       unsigned char* w = weights.At(r.X0, y);
+      const size_t column = static_cast<size_t>(i) * r.Width();
+      ComputeRowLineLengths(edges, y, maxDistance, left, right);
       // Most pixels have no edgel: four at a time are skipped; their weights are not written.
       for (int x = r.X0; x <= r.X1;)
       {
@@ -648,7 +737,8 @@ void ComputeBlendingWeights(const EdgesBuffer& edges, const Rect& whole,
         const int i = x - r.X0;
         if (e[2 * i] | e[2 * i + 1])
         {
-          computer.Compute(x, y, w + 4 * i);
+          computer.Compute(x, y, left[offset + i], right[offset + i], up[column + i],
+            down[column + i], w + 4 * i);
         }
         ++x;
       }

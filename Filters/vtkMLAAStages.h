@@ -416,9 +416,46 @@ struct WeightSettings
 VTKFILTERSMLAA_EXPORT void MakeWeightSettings(vtkMLAAOptions* options, WeightSettings& settings);
 
 /**
+ * Line lengths (section 4.3.1's distance search, done as run lengths): for a pixel p, the number
+ * of further pixels along its row (left or right) or its column (down or up) that continue its
+ * line, at most maxDistance (vtkMLAAOptions::GetMaxDistance()). Pixel q continues the line from
+ * its neighbour p towards q when q has the line's edgel (a top edgel for a row, a left edgel for
+ * a column) and no crossing edgel lies at the boundary between p and q: no left edgel there on
+ * p's row or the row above (rows), no top edgel there in p's column or the column to the left
+ * (columns). Edgels are read clamped to edges.Extent, as a GPU reads with clamp-to-edge, so a
+ * line that reaches the border of the extent and continues across it (by that rule applied to
+ * the clamped edgels) runs on to maxDistance.
+ *
+ * These equal, for every pixel, the distances of a search that steps pixel by pixel up to
+ * maxDistance (the chapter's loop, vtkOpenGLMLAAPass's SEARCH_LOOP), but cost one linear scan
+ * per row and per column instead of up to maxDistance reads per pixel and direction: each length
+ * is 0 where the next pixel does not continue the line, else 1 plus the next pixel's length,
+ * capped (the recursion that the GPU's recursive doubling, Rendering/glsl/
+ * vtkMLAALineLengthsFS.glsl, evaluates in log4(maxDistance) passes instead; Biri et al., section
+ * 3.3). 16-bit lengths hold maxDistance up to 256.
+ */
+using LineLength = std::uint16_t;
+
+/**
+ * The left and right lengths of the pixels of row y of edges.Extent (one entry per column of the
+ * extent, from edges.Extent.X0).
+ */
+VTKFILTERSMLAA_EXPORT void ComputeRowLineLengths(
+  const EdgesBuffer& edges, int y, int maxDistance, LineLength* left, LineLength* right);
+
+/**
+ * The down and up lengths of the pixels of `extent` (within edges.Extent), row by row, one entry
+ * per pixel of `extent` in each array. Threaded over strips of columns.
+ */
+VTKFILTERSMLAA_EXPORT void ComputeColumnLineLengths(const EdgesBuffer& edges, const Rect& extent,
+  int maxDistance, LineLength* down, LineLength* up);
+
+/**
  * The blending weights of the pixels of weights.Extent (already allocated, within edges.Extent)
  * that have an edgel, from the edges; the entries of the others are not written. `whole` is the image: edgels are read clamped to edges.Extent,
- * as a GPU clamps texture reads, and the image border is not a crossing edge.
+ * as a GPU clamps texture reads, and the image border is not a crossing edge. The distances to
+ * the ends of orthogonal lines are line lengths (ComputeRowLineLengths, per row of each task,
+ * and ComputeColumnLineLengths, held for the whole weights extent: two 16-bit values per pixel).
  */
 VTKFILTERSMLAA_EXPORT void ComputeBlendingWeights(const EdgesBuffer& edges, const Rect& whole,
   const WeightSettings& settings, WeightsBuffer& weights, Progress& progress);
