@@ -5,6 +5,8 @@
 #include "vtkSMPTools.h"
 
 #include <array>
+#include <map>
+#include <mutex>
 #include <cstdint>
 #include <cstring>
 #include <memory>
@@ -303,6 +305,23 @@ std::vector<unsigned char> Quantised(const std::vector<float>& table)
   }
   return quantised;
 }
+
+// The quantised table of one maximum distance, made once and shared, as vtkMLAAAreaTexture
+// shares its float tables.
+using QuantisedTable = std::shared_ptr<const std::vector<unsigned char>>;
+QuantisedTable SharedQuantised(
+  int maxDistance, bool diagonal, std::shared_ptr<const std::vector<float>> (*table)(int))
+{
+  static std::mutex mutex;
+  static std::map<std::pair<int, bool>, QuantisedTable> cache;
+  std::lock_guard<std::mutex> lock(mutex);
+  QuantisedTable& entry = cache[{ maxDistance, diagonal }];
+  if (!entry)
+  {
+    entry = std::make_shared<const std::vector<unsigned char>>(Quantised(*table(maxDistance)));
+  }
+  return entry;
+}
 }
 
 void MakeWeightSettings(vtkMLAAOptions* options, WeightSettings& settings)
@@ -313,10 +332,10 @@ void MakeWeightSettings(vtkMLAAOptions* options, WeightSettings& settings)
   settings.CellSize = maxDistance + 1;
   settings.AreaSize = vtkMLAAAreaTexture::NumberOfCodes * settings.CellSize;
   settings.DiagonalAreaSize = vtkMLAAAreaTexture::NumberOfDiagonalCodes * settings.CellSize;
-  settings.Area = Quantised(*vtkMLAAAreaTexture::GetSharedTable(maxDistance));
+  settings.Area = SharedQuantised(maxDistance, false, &vtkMLAAAreaTexture::GetSharedTable);
   settings.DiagonalArea = settings.Diagonals
-    ? Quantised(*vtkMLAAAreaTexture::GetSharedDiagonalTable(maxDistance))
-    : std::vector<unsigned char>();
+    ? SharedQuantised(maxDistance, true, &vtkMLAAAreaTexture::GetSharedDiagonalTable)
+    : nullptr;
 }
 
 const float* WeightValues()
@@ -340,6 +359,38 @@ const float* WeightValues()
 // evaluated from the far end of each row or column towards its near end. Past the border of the
 // extent the clamped edgels repeat the border pixel's, so the border pixel continues to its
 // outer neighbour exactly when every further one does too: its length is C or 0.
+namespace
+{
+// Whether any of the n pixels of an edges row at e has a left edgel (Which = 0) or a top one
+// (Which = 1), eight bytes (four pixels) at a time. The masks select each pixel's first or
+// second byte on little-endian machines (as BlendRow's skip assumes); elsewhere every byte
+// counts, which only costs the skip.
+template <int Which>
+inline bool AnyEdgel(const unsigned char* e, int n)
+{
+  static const std::uint64_t mask = [] {
+    const std::uint16_t one = 1;
+    unsigned char first;
+    std::memcpy(&first, &one, 1);
+    return first != 1 ? ~0ull : Which == 0 ? 0x00FF00FF00FF00FFull : 0xFF00FF00FF00FF00ull;
+  }();
+  int k = 0;
+  std::uint64_t any = 0;
+  for (; k + 4 <= n; k += 4)
+  {
+    std::uint64_t four;
+    std::memcpy(&four, e + 2 * k, sizeof(four));
+    any |= four;
+  }
+  bool found = (any & mask) != 0;
+  for (; k < n && !found; ++k)
+  {
+    found = e[2 * k + Which] != 0;
+  }
+  return found;
+}
+}
+
 void ComputeRowLineLengths(
   const EdgesBuffer& edges, int y, int maxDistance, LineLength* left, LineLength* right)
 {
@@ -349,15 +400,27 @@ void ComputeRowLineLengths(
   const unsigned char* e = edges.At(r.X0, y);
   // The row above, clamped: its left edgels cross the line too.
   const unsigned char* a = edges.At(r.X0, std::min(y + 1, r.Y1));
-  // Whether pixel i has a top edgel and no left edgel on this row or the row above: then the
-  // line runs from i - 1 into i (from the left) or on from i (to the right).
+  // Whether pixel i has a top edgel, and whether its left boundary is open (no left edgel on
+  // this row or the row above): then the line runs from i - 1 into i, or from i into i - 1.
   auto top = [e](int i) { return e[2 * i + 1] != 0; };
   auto open = [e, a](int i) { return (e[2 * i] | a[2 * i]) == 0; };
-  // Left: i - 1 continues i's line when it has a top edgel and i's left boundary is open.
+  // Only the lengths of pixels with a top edgel are used, by the weights and by the recursion
+  // (a pixel's length is read by its neighbour only if it continues that neighbour's line, so
+  // only if it has a top edgel): groups of eight pixels without one are skipped, their entries
+  // left unwritten.
+  auto noTopEdgels = [e, w](int i) { return i + 8 <= w && !AnyEdgel<1>(e + 2 * i, 8); };
+  // Left: i - 1 continues i's line when it has a top edgel and i's left boundary is open. At the
+  // extent's left border the clamped edgels repeat pixel 0's: C or 0.
   int length = (top(0) && open(0)) ? cap : 0;
   left[0] = static_cast<LineLength>(length);
   for (int i = 1; i < w; ++i)
   {
+    if (noTopEdgels(i))
+    {
+      i += 7;
+      length = 0; // pixel i + 7 has no top edgel: the next one's line does not run into it
+      continue;
+    }
     length = (top(i - 1) && open(i)) ? std::min(cap, length + 1) : 0;
     left[i] = static_cast<LineLength>(length);
   }
@@ -366,6 +429,12 @@ void ComputeRowLineLengths(
   right[w - 1] = static_cast<LineLength>(length);
   for (int i = w - 2; i >= 0; --i)
   {
+    if (i >= 7 && noTopEdgels(i - 7))
+    {
+      i -= 7;
+      length = 0;
+      continue;
+    }
     length = (top(i + 1) && open(i + 1)) ? std::min(cap, length + 1) : 0;
     right[i] = static_cast<LineLength>(length);
   }
@@ -382,8 +451,10 @@ void ComputeColumnLineLengths(const EdgesBuffer& edges, const Rect& extent, int 
   const int cap = maxDistance;
   const int w = extent.Width();
   // Strips of columns, each scanned row by row (contiguous reads and writes within a row); the
-  // running lengths of a strip's columns are carried from row to row.
-  constexpr int strip = 64;
+  // running lengths of a strip's columns are carried from row to row. As for rows, only the
+  // lengths of pixels with a left edgel are used: a row of a strip without left edgels resets
+  // the carried lengths and is not stored.
+  constexpr int strip = 256;
   vtkSMPTools::For(0, (w + strip - 1) / strip, 1, [&](vtkIdType begin, vtkIdType end) {
     LineLength carry[strip];
     for (vtkIdType s = begin; s < end; ++s)
@@ -391,20 +462,21 @@ void ComputeColumnLineLengths(const EdgesBuffer& edges, const Rect& extent, int 
       const int i0 = static_cast<int>(s) * strip;
       const int n = std::min(strip, w - i0);
       const int x0 = extent.X0 + i0;
-      // Pixel k's edgels on row y, and whether the boundary above it is open: no top edgel on
-      // it in this column or the column to the left (clamped to the extent).
       const int leftOfFirst = std::max(x0 - 1, r.X0);
+      auto hasLeftEdgels = [&](int y) { return AnyEdgel<0>(edges.At(x0, y), n); };
       auto storeCarry = [&](LineLength* lengths, int y) {
         if (y >= extent.Y0 && y <= extent.Y1)
         {
           std::copy(carry, carry + n, lengths + static_cast<size_t>(y - extent.Y0) * w + i0);
         }
       };
-      auto scanRow = [&](int lengthsRow, int edgelsRow, int boundaryRow, LineLength* lengths) {
+      // The lengths of row lengthsRow from those carried: pixel k continues when edgelsRow's
+      // pixel has a left edgel and the boundary above boundaryRow's pixel is open (no top edgel
+      // on it in this column or the column to the left, clamped to the extent).
+      auto scanRow = [&](int edgelsRow, int boundaryRow) {
         const unsigned char* e = edges.At(x0, edgelsRow);
         const unsigned char* b = edges.At(x0, boundaryRow);
-        const unsigned char* bLeft = edges.At(leftOfFirst, boundaryRow);
-        unsigned char previousTop = bLeft[1];
+        unsigned char previousTop = edges.At(leftOfFirst, boundaryRow)[1];
         for (int k = 0; k < n; ++k)
         {
           const unsigned char ownTop = b[2 * k + 1];
@@ -412,45 +484,60 @@ void ComputeColumnLineLengths(const EdgesBuffer& edges, const Rect& extent, int 
           previousTop = ownTop;
           carry[k] = static_cast<LineLength>(continues ? std::min(cap, carry[k] + 1) : 0);
         }
-        storeCarry(lengths, lengthsRow);
       };
-      // Up: y + 1 continues y's line when it has a left edgel and y's top boundary is open. The
-      // scan starts at the top of the extent, where the clamped edgels make the length C or 0,
-      // or C rows above the pixels wanted, where it may start from 0: a line that reaches that
-      // row from a wanted pixel is C long already.
-      const int top = std::min(r.Y1, extent.Y1 + cap);
-      if (top == r.Y1)
-      {
-        // The border row: its own edgels stand for every row above it (cap - 1 + 1 = C).
-        std::fill(carry, carry + n, static_cast<LineLength>(cap - 1));
-        scanRow(top, top, top, up);
-      }
-      else
-      {
-        std::fill(carry, carry + n, static_cast<LineLength>(0));
-        storeCarry(up, top);
-      }
-      for (int y = top - 1; y >= extent.Y0; --y)
-      {
-        scanRow(y, y + 1, y, up);
-      }
-      // Down: y - 1 continues y's line when it has a left edgel and y - 1's top boundary (the
-      // boundary between the two) is open.
-      const int bottom = std::max(r.Y0, extent.Y0 - cap);
-      if (bottom == r.Y0)
-      {
-        std::fill(carry, carry + n, static_cast<LineLength>(cap - 1));
-        scanRow(bottom, bottom, bottom, down);
-      }
-      else
-      {
-        std::fill(carry, carry + n, static_cast<LineLength>(0));
-        storeCarry(down, bottom);
-      }
-      for (int y = bottom + 1; y <= extent.Y1; ++y)
-      {
-        scanRow(y, y - 1, y - 1, down);
-      }
+      // One direction (step -1: up, scanned downwards from the top; +1: down, scanned upwards
+      // from the bottom). The scan starts at the extent's border, where the clamped edgels repeat
+      // the border row's so that its length is C or 0, or C rows beyond the pixels wanted, where
+      // it may start from 0: a line that reaches that row from a wanted pixel is C long already.
+      auto scan = [&](int step, LineLength* lengths) {
+        const int border = step < 0 ? r.Y1 : r.Y0;
+        const int wanted = step < 0 ? extent.Y1 : extent.Y0;
+        const int last = step < 0 ? extent.Y0 : extent.Y1;
+        const int start = step < 0 ? std::min(border, wanted + cap) : std::max(border, wanted - cap);
+        if (start == border)
+        {
+          // The border row's own edgels stand for every row beyond it (C - 1 + 1 = C).
+          std::fill(carry, carry + n, static_cast<LineLength>(cap - 1));
+          scanRow(border, border);
+        }
+        else
+        {
+          std::fill(carry, carry + n, static_cast<LineLength>(0));
+        }
+        bool zero = false;
+        bool ownEdgels = hasLeftEdgels(start);
+        if (ownEdgels)
+        {
+          storeCarry(lengths, start);
+        }
+        for (int y = start + step; step < 0 ? y >= last : y <= last; y += step)
+        {
+          // Up: y + 1 continues y's line when it has a left edgel and y's top boundary is open.
+          // Down: y - 1 continues it when it has a left edgel and its own top boundary (the one
+          // between the two) is open.
+          const int previous = y - step;
+          if (!ownEdgels)
+          {
+            if (!zero)
+            {
+              std::fill(carry, carry + n, static_cast<LineLength>(0));
+              zero = true;
+            }
+          }
+          else
+          {
+            scanRow(previous, step < 0 ? y : previous);
+            zero = false;
+          }
+          ownEdgels = hasLeftEdgels(y);
+          if (ownEdgels)
+          {
+            storeCarry(lengths, y);
+          }
+        }
+      };
+      scan(-1, up);
+      scan(+1, down);
     }
   });
 }
@@ -665,15 +752,16 @@ private:
   {
     const int d = this->S.CellSize;
     const size_t texel = static_cast<size_t>(d * e2 + d2) * this->S.DiagonalAreaSize + (d * e1 + d1);
-    return this->S.DiagonalArea.data() + 3 * texel;
+    return this->S.DiagonalArea->data() + 3 * texel;
   }
 
   void LookUpArea(int e1, int e2, int d1, int d2, unsigned char* w) const
   {
     const int d = this->S.CellSize;
     const size_t texel = static_cast<size_t>(d * e2 + d2) * this->S.AreaSize + (d * e1 + d1);
-    w[0] = this->S.Area[2 * texel];
-    w[1] = this->S.Area[2 * texel + 1];
+    const unsigned char* a = this->S.Area->data() + 2 * texel;
+    w[0] = a[0];
+    w[1] = a[1];
   }
 
   const EdgesBuffer& E;
@@ -696,8 +784,8 @@ void ComputeBlendingWeights(const EdgesBuffer& edges, const Rect& whole,
   // The up and down lengths of every pixel of the extent (the columns are scanned in strips),
   // the left and right ones row by row in each task.
   const size_t pixels = static_cast<size_t>(r.Width()) * r.Height();
-  std::unique_ptr<LineLength[]> columnLengths(new LineLength[2 * pixels]);
-  LineLength* down = columnLengths.get();
+  weights.ColumnLengths.Reserve(2 * pixels * sizeof(LineLength));
+  LineLength* down = reinterpret_cast<LineLength*>(weights.ColumnLengths.Get());
   LineLength* up = down + pixels;
   ComputeColumnLineLengths(edges, r, maxDistance, down, up);
   if (progress.CheckAbort())
@@ -737,8 +825,11 @@ void ComputeBlendingWeights(const EdgesBuffer& edges, const Rect& whole,
         const int i = x - r.X0;
         if (e[2 * i] | e[2 * i + 1])
         {
-          computer.Compute(x, y, left[offset + i], right[offset + i], up[column + i],
-            down[column + i], w + 4 * i);
+          // Lengths are only computed for pixels with the edgel they belong to.
+          const bool hasTop = e[2 * i + 1] != 0;
+          const bool hasLeft = e[2 * i] != 0;
+          computer.Compute(x, y, hasTop ? left[offset + i] : 0, hasTop ? right[offset + i] : 0,
+            hasLeft ? up[column + i] : 0, hasLeft ? down[column + i] : 0, w + 4 * i);
         }
         ++x;
       }

@@ -15,8 +15,9 @@
  * Only the features and the blending depend on the scalar type; the edges and weights buffers
  * are laid out as the pass's RG8 edges and RGBA8 blending-weights textures, with the same 8-bit
  * quantisation, so the two back ends compute the same numbers. Features are read row by row into
- * per-task buffers (never a full-size copy of the image); the edges and weights buffers are the
- * only full-size buffers besides the output.
+ * per-task buffers (never a full-size copy of the image); the edges and weights buffers (with
+ * the weights' scratch of 16-bit column line lengths, 4 bytes per pixel) are the only full-size
+ * buffers besides the output.
  *
  * How far each stage reads beyond the pixels it produces (its halo) is derived from the options
  * in one place, Halo (below); vtkImageMLAA pads its input request by Halo::Total().
@@ -386,6 +387,10 @@ struct WeightsBuffer
 {
   Rect Extent;
   ByteBuffer Data;
+  // Scratch of ComputeBlendingWeights: the down and up line lengths of the extent's pixels (two
+  // LineLength per pixel), kept with the weights so that it is not allocated (and its pages not
+  // faulted in afresh) on every run.
+  ByteBuffer ColumnLengths;
 
   void Allocate(const Rect& extent);
   const unsigned char* At(int x, int y) const
@@ -410,8 +415,10 @@ struct WeightSettings
   int CellSize = 17;       // D = 2 * SearchSteps + 1
   int AreaSize = 85;       // 5 D
   int DiagonalAreaSize = 51; // 3 D
-  std::vector<unsigned char> Area;         // 2 per texel
-  std::vector<unsigned char> DiagonalArea; // 3 per texel; empty without diagonals
+  // Quantised once per maximum distance and shared (quantising the tables of 128 steps, 5 million
+  // texels, costs more than the rest of the weights stage).
+  std::shared_ptr<const std::vector<unsigned char>> Area;         // 2 per texel
+  std::shared_ptr<const std::vector<unsigned char>> DiagonalArea; // 3 per texel; null without diagonals
 };
 VTKFILTERSMLAA_EXPORT void MakeWeightSettings(vtkMLAAOptions* options, WeightSettings& settings);
 
@@ -437,15 +444,17 @@ VTKFILTERSMLAA_EXPORT void MakeWeightSettings(vtkMLAAOptions* options, WeightSet
 using LineLength = std::uint16_t;
 
 /**
- * The left and right lengths of the pixels of row y of edges.Extent (one entry per column of the
- * extent, from edges.Extent.X0).
+ * The left and right lengths of the pixels of row y of edges.Extent that have a top edgel (one
+ * entry per column of the extent, from edges.Extent.X0; the entries of pixels without a top
+ * edgel are not all written: they are never needed).
  */
 VTKFILTERSMLAA_EXPORT void ComputeRowLineLengths(
   const EdgesBuffer& edges, int y, int maxDistance, LineLength* left, LineLength* right);
 
 /**
- * The down and up lengths of the pixels of `extent` (within edges.Extent), row by row, one entry
- * per pixel of `extent` in each array. Threaded over strips of columns.
+ * The down and up lengths of the pixels of `extent` (within edges.Extent) that have a left
+ * edgel, row by row, one entry per pixel of `extent` in each array (those of pixels without a
+ * left edgel are not all written). Threaded over strips of columns.
  */
 VTKFILTERSMLAA_EXPORT void ComputeColumnLineLengths(const EdgesBuffer& edges, const Rect& extent,
   int maxDistance, LineLength* down, LineLength* up);

@@ -91,13 +91,17 @@ void RunLengthsMatchSearch()
           e[0] = u(random) < (columnBand ? alongDensity : crossDensity) ? 255 : 0;
         }
       }
-      // Rows: every pixel of the extent.
+      // Rows: every pixel of the extent with a top edgel (the others' lengths are not needed).
       std::vector<LineLength> left(w), right(w);
       for (int y = y0; y < y0 + h; ++y)
       {
         ComputeRowLineLengths(edges, y, maxDistance, left.data(), right.data());
         for (int x = x0; x < x0 + w; ++x)
         {
+          if (!edges.Top(x, y))
+          {
+            continue;
+          }
           const int l = ReferenceLength(edges, x, y, -1, 0, maxDistance);
           const int r = ReferenceLength(edges, x, y, +1, 0, maxDistance);
           atCap += (l == maxDistance) + (r == maxDistance);
@@ -110,7 +114,7 @@ void RunLengthsMatchSearch()
           }
         }
       }
-      // Columns: the whole extent, and a sub-extent (as the weights extent lies within the
+      // Columns (pixels with a left edgel): the whole extent, and a sub-extent (as the weights extent lies within the
       // edges extent) whose scan starts from rows far from the extent's border.
       for (int sub = 0; sub < 2; ++sub)
       {
@@ -128,6 +132,10 @@ void RunLengthsMatchSearch()
         {
           for (int x = part.X0; x <= part.X1; ++x)
           {
+            if (!edges.Left(x, y))
+            {
+              continue;
+            }
             const size_t i = static_cast<size_t>(y - part.Y0) * part.Width() + (x - part.X0);
             const int d = ReferenceLength(edges, x, y, 0, -1, maxDistance);
             const int v = ReferenceLength(edges, x, y, 0, +1, maxDistance);
