@@ -549,12 +549,85 @@ namespace
 class WeightsComputer
 {
 public:
-  WeightsComputer(const EdgesBuffer& edges, const Rect& whole, const WeightSettings& settings)
+  // The lengths of the staircases through the pixels of an extent, in each of their two
+  // directions, as SearchDiagonal counts them (ComputeDiagonalLengths); the entries of pixels
+  // that are not units of that kind of staircase are not written.
+  struct DiagonalLengths
+  {
+    Rect Extent;
+    LineLength* RisingDown = nullptr;  // rising units, towards (-1, -1)
+    LineLength* RisingUp = nullptr;    // rising units, towards (+1, +1)
+    LineLength* FallingUp = nullptr;   // falling units, towards (-1, +1)
+    LineLength* FallingDown = nullptr; // falling units, towards (+1, -1)
+    size_t Index(int x, int y) const
+    {
+      return static_cast<size_t>(y - this->Extent.Y0) * this->Extent.Width() + (x - this->Extent.X0);
+    }
+  };
+
+  WeightsComputer(const EdgesBuffer& edges, const Rect& whole, const WeightSettings& settings,
+    const DiagonalLengths* diagonalLengths = nullptr)
     : E(edges)
     , R(edges.Extent)
     , Whole(whole)
     , S(settings)
+    , D(diagonalLengths)
   {
+  }
+
+  // The diagonal lengths of the columns x0..x1 of lengths.Extent, by the run-length recursion
+  // of the orthogonal lines along each diagonal (ComputeRowLineLengths): a unit's count towards
+  // a direction is 0 if the next pixel that way is no unit, else 1 plus that unit's count,
+  // capped at the maximum distance. Rows are scanned upwards for the directions that go down and
+  // downwards for those that go up. Where the next pixel lies outside the extent or the strip of
+  // columns, the count is searched unit by unit instead (SearchDiagonal), so strips are
+  // independent and the reads beyond the extent are those of the search.
+  void ComputeDiagonalLengths(const DiagonalLengths& lengths, int x0, int x1) const
+  {
+    const Rect& ext = lengths.Extent;
+    const int cap = this->S.CellSize - 1;
+    auto rising = [this](int u, int v) { return this->IsRisingUnit(u, v); };
+    auto falling = [this](int u, int v) { return this->IsFallingUnit(u, v); };
+    // One direction (dx, dy) of one kind of unit, rows in the order that visits (x + dx, y + dy)
+    // before (x, y).
+    auto scan = [&](int dx, int dy, bool isRising, LineLength* out) {
+      const int first = dy < 0 ? ext.Y0 : ext.Y1;
+      for (int y = first; dy < 0 ? y <= ext.Y1 : y >= ext.Y0; y -= dy)
+      {
+        const unsigned char* e = this->E.At(x0, y);
+        for (int x = x0; x <= x1; ++x)
+        {
+          // Both kinds of unit have the pixel's top edgel: eight pixels without one are skipped.
+          if ((x - x0) % 8 == 0 && x + 7 <= x1 && !AnyEdgel<1>(e + 2 * (x - x0), 8))
+          {
+            x += 7;
+            continue;
+          }
+          if (!e[2 * (x - x0) + 1] || !(isRising ? rising(x, y) : falling(x, y)))
+          {
+            continue;
+          }
+          const int nx = x + dx, ny = y + dy;
+          int length;
+          if (nx < x0 || nx > x1 || ny < ext.Y0 || ny > ext.Y1)
+          {
+            bool reachedEnd;
+            length = isRising ? this->SearchDiagonal(x, y, dx, dy, rising, reachedEnd)
+                              : this->SearchDiagonal(x, y, dx, dy, falling, reachedEnd);
+          }
+          else
+          {
+            const bool next = isRising ? rising(nx, ny) : falling(nx, ny);
+            length = next ? std::min(cap, 1 + out[lengths.Index(nx, ny)]) : 0;
+          }
+          out[lengths.Index(x, y)] = static_cast<LineLength>(length);
+        }
+      }
+    };
+    scan(-1, -1, true, lengths.RisingDown);
+    scan(+1, -1, false, lengths.FallingDown);
+    scan(+1, +1, true, lengths.RisingUp);
+    scan(-1, +1, false, lengths.FallingUp);
   }
 
   // The four weights of a pixel with edgels (see WeightsBuffer), given the lengths of its lines
@@ -687,8 +760,8 @@ private:
     {
       auto isUnit = [this](int u, int v) { return this->IsRisingUnit(u, v); };
       bool end1, end2;
-      const int d1 = this->SearchDiagonal(x, y, -1, -1, isUnit, end1);
-      const int d2 = this->SearchDiagonal(x, y, +1, +1, isUnit, end2);
+      const int d1 = this->DiagonalLength(x, y, -1, -1, true, isUnit, end1);
+      const int d2 = this->DiagonalLength(x, y, +1, +1, true, isUnit, end2);
       if (d1 + d2 + 1 >= minLength)
       {
         const int x1 = x - d1, y1 = y - d1; // first unit
@@ -720,8 +793,8 @@ private:
         continue;
       }
       bool end1, end2;
-      const int d1 = this->SearchDiagonal(qx, y, -1, +1, isFalling, end1);
-      const int d2 = this->SearchDiagonal(qx, y, +1, -1, isFalling, end2);
+      const int d1 = this->DiagonalLength(qx, y, -1, +1, false, isFalling, end1);
+      const int d2 = this->DiagonalLength(qx, y, +1, -1, false, isFalling, end2);
       if (d1 + d2 + 1 < minLength)
       {
         continue;
@@ -764,10 +837,28 @@ private:
     w[1] = a[1];
   }
 
+  // SearchDiagonal from a unit, from the diagonal lengths where they were computed.
+  template <typename IsUnit>
+  int DiagonalLength(int x, int y, int dx, int dy, bool isRising, IsUnit isUnit,
+    bool& reachedEnd) const
+  {
+    if (this->D && this->D->Extent.Contains(x, y))
+    {
+      const LineLength* lengths = isRising
+        ? (dx < 0 ? this->D->RisingDown : this->D->RisingUp)
+        : (dx < 0 ? this->D->FallingUp : this->D->FallingDown);
+      const int d = lengths[this->D->Index(x, y)];
+      reachedEnd = d < this->S.CellSize - 1;
+      return d;
+    }
+    return this->SearchDiagonal(x, y, dx, dy, isUnit, reachedEnd);
+  }
+
   const EdgesBuffer& E;
   const Rect R;
   const Rect Whole;
   const WeightSettings& S;
+  const DiagonalLengths* D;
 };
 }
 
@@ -779,11 +870,34 @@ void ComputeBlendingWeights(const EdgesBuffer& edges, const Rect& whole,
   {
     return;
   }
-  const WeightsComputer computer(edges, whole, settings);
   const int maxDistance = settings.CellSize - 1;
+  const size_t pixels = static_cast<size_t>(r.Width()) * r.Height();
+  // The lengths of the staircases (DiagonalDetection) through the pixels of the extent, in
+  // strips of columns.
+  WeightsComputer::DiagonalLengths diagonal;
+  const bool diagonalRuns = settings.Diagonals && settings.DiagonalRunLengths;
+  if (diagonalRuns)
+  {
+    weights.DiagonalLengths.Reserve(4 * pixels * sizeof(LineLength));
+    LineLength* base = reinterpret_cast<LineLength*>(weights.DiagonalLengths.Get());
+    diagonal.Extent = r;
+    diagonal.RisingDown = base;
+    diagonal.RisingUp = base + pixels;
+    diagonal.FallingUp = base + 2 * pixels;
+    diagonal.FallingDown = base + 3 * pixels;
+    const WeightsComputer searcher(edges, whole, settings);
+    constexpr int strip = 256;
+    vtkSMPTools::For(0, (r.Width() + strip - 1) / strip, 1, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const int x0 = r.X0 + static_cast<int>(i) * strip;
+        searcher.ComputeDiagonalLengths(diagonal, x0, std::min(r.X1, x0 + strip - 1));
+      }
+    });
+  }
+  const WeightsComputer computer(edges, whole, settings, diagonalRuns ? &diagonal : nullptr);
   // The up and down lengths of every pixel of the extent (the columns are scanned in strips),
   // the left and right ones row by row in each task.
-  const size_t pixels = static_cast<size_t>(r.Width()) * r.Height();
   weights.ColumnLengths.Reserve(2 * pixels * sizeof(LineLength));
   LineLength* down = reinterpret_cast<LineLength*>(weights.ColumnLengths.Get());
   LineLength* up = down + pixels;

@@ -391,6 +391,8 @@ struct WeightsBuffer
   // LineLength per pixel), kept with the weights so that it is not allocated (and its pages not
   // faulted in afresh) on every run.
   ByteBuffer ColumnLengths;
+  // The same for the staircase lengths of DiagonalDetection: four LineLength per pixel.
+  ByteBuffer DiagonalLengths;
 
   void Allocate(const Rect& extent);
   const unsigned char* At(int x, int y) const
@@ -412,6 +414,10 @@ struct WeightSettings
 {
   int SearchSteps = 8;     // vtkMLAAOptions::MaxSearchSteps
   bool Diagonals = true;   // vtkMLAAOptions::DiagonalDetection
+  // How staircases are followed: true, by run lengths counted over the extent beforehand
+  // (four 16-bit values per pixel); false, unit by unit from every unit (as the GPU pass does).
+  // The same numbers either way; false is kept for tests and comparisons.
+  bool DiagonalRunLengths = true;
   int CellSize = 17;       // D = 2 * SearchSteps + 1
   int AreaSize = 85;       // 5 D
   int DiagonalAreaSize = 51; // 3 D
@@ -464,7 +470,9 @@ VTKFILTERSMLAA_EXPORT void ComputeColumnLineLengths(const EdgesBuffer& edges, co
  * that have an edgel, from the edges; the entries of the others are not written. `whole` is the image: edgels are read clamped to edges.Extent,
  * as a GPU clamps texture reads, and the image border is not a crossing edge. The distances to
  * the ends of orthogonal lines are line lengths (ComputeRowLineLengths, per row of each task,
- * and ComputeColumnLineLengths, held for the whole weights extent: two 16-bit values per pixel).
+ * and ComputeColumnLineLengths, held for the whole weights extent: two 16-bit values per pixel);
+ * with DiagonalDetection, the lengths of staircases are counted the same way beforehand (four
+ * 16-bit values per pixel; WeightSettings::DiagonalRunLengths).
  */
 VTKFILTERSMLAA_EXPORT void ComputeBlendingWeights(const EdgesBuffer& edges, const Rect& whole,
   const WeightSettings& settings, WeightsBuffer& weights, Progress& progress);

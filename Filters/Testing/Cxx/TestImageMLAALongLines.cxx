@@ -6,7 +6,9 @@
 // - a 1-degree slope across a 512-pixel-wide image (staircase steps of about 57 pixels) gets one
 //   smooth ramp along each whole step with 32 steps or more, and the weights of every step are
 //   the area texture's for the step's full length; with 8 steps (16 pixels each way) they are
-//   not, which shows what the check catches.
+//   not, which shows what the check catches;
+// - with DiagonalDetection, the staircase lengths counted beforehand give the weights of the
+//   unit-by-unit search on random 45-degree patterns.
 #include "vtkMLAATestUtilities.h"
 
 #include "vtkMLAAAreaTexture.h"
@@ -14,6 +16,7 @@
 #include "vtkMath.h"
 
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <vector>
 
@@ -156,6 +159,97 @@ void RunLengthsMatchSearch()
   MLAA_CHECK(atCap > compared / 50);
 }
 
+// Staircases (DiagonalDetection): the blending weights with staircase lengths counted
+// beforehand (the default) equal those of following every staircase unit by unit, on random
+// images of 45-degree stripes both ways with noise, for weights extents within the edges extent
+// (so that the counts meet the extent's and the strips' borders), for 1, 8, 37 and 128 steps.
+void DiagonalRunsMatchSearch()
+{
+  std::mt19937 random(99);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int units = 0;
+  for (int steps : { 1, 8, 37, 128 })
+  {
+    vtkNew<vtkMLAAOptions> options;
+    options->SetMaxSearchSteps(steps);
+    WeightSettings settings;
+    MakeWeightSettings(options, settings);
+    for (int trial = 0; trial < 4; ++trial)
+    {
+      const int w = std::uniform_int_distribution<int>(20, 600)(random);
+      const int h = std::uniform_int_distribution<int>(20, 300)(random);
+      const Rect whole{ 0, w - 1, 0, h - 1 };
+      // Pixels of two classes: stripes along one diagonal (period 2 to 40), some flipped.
+      const int period = std::uniform_int_distribution<int>(2, 40)(random);
+      const bool rising = trial % 2 == 0;
+      const double noise = trial < 2 ? 0.002 : 0.05;
+      std::vector<int> v(static_cast<size_t>(w) * h);
+      for (int y = 0; y < h; ++y)
+      {
+        for (int x = 0; x < w; ++x)
+        {
+          const int along = rising ? x - y + 10000 : x + y;
+          v[static_cast<size_t>(y) * w + x] = ((along / period) % 2) ^ (u(random) < noise ? 1 : 0);
+        }
+      }
+      // The edges extent: the image or a part of it, with edges where the classes change.
+      Rect extent = whole;
+      if (trial == 3)
+      {
+        extent = Rect{ w / 5, w - 1 - w / 7, h / 6, h - 1 - h / 9 };
+      }
+      EdgesBuffer edges;
+      edges.Allocate(extent);
+      for (int y = extent.Y0; y <= extent.Y1; ++y)
+      {
+        for (int x = extent.X0; x <= extent.X1; ++x)
+        {
+          const int c = v[static_cast<size_t>(y) * w + x];
+          unsigned char* e = edges.At(x, y);
+          e[0] = (x > extent.X0 && v[static_cast<size_t>(y) * w + x - 1] != c) ? 255 : 0;
+          e[1] = (y < extent.Y1 && v[static_cast<size_t>(y + 1) * w + x] != c) ? 255 : 0;
+          units += (e[0] && e[1]) ? 1 : 0;
+        }
+      }
+      // Weights extents: the edges extent, and one well inside it.
+      for (int inner = 0; inner < 2; ++inner)
+      {
+        const Rect weightsExtent = inner ? extent.Grown(-std::min(extent.Width(), extent.Height()) / 4)
+                                         : extent;
+        if (weightsExtent.Empty())
+        {
+          continue;
+        }
+        WeightsBuffer runs, search;
+        runs.Allocate(weightsExtent);
+        search.Allocate(weightsExtent);
+        Progress progress;
+        settings.DiagonalRunLengths = true;
+        ComputeBlendingWeights(edges, whole, settings, runs, progress);
+        settings.DiagonalRunLengths = false;
+        ComputeBlendingWeights(edges, whole, settings, search, progress);
+        int differ = 0;
+        for (int y = weightsExtent.Y0; y <= weightsExtent.Y1; ++y)
+        {
+          for (int x = weightsExtent.X0; x <= weightsExtent.X1; ++x)
+          {
+            if (edges.Any(x, y) && std::memcmp(runs.At(x, y), search.At(x, y), 4) != 0)
+            {
+              ++differ;
+            }
+          }
+        }
+        if (!MLAA_CHECK(differ == 0))
+        {
+          std::cerr << "steps " << steps << ", trial " << trial << ", inner " << inner << ": "
+                    << differ << " pixels with other weights" << std::endl;
+        }
+      }
+    }
+  }
+  MLAA_CHECK(units > 10000);
+}
+
 // A dark half-plane under a line rising by 1 degree, across a 512 x 64 grey image: staircase
 // steps of 1 / tan(1 degree), about 57 pixels.
 vtkSmartPointer<vtkImageData> OneDegreeSlope()
@@ -284,6 +378,7 @@ void OneDegreeRamps()
 int TestImageMLAALongLines(int, char*[])
 {
   RunLengthsMatchSearch();
+  DiagonalRunsMatchSearch();
   OneDegreeRamps();
   return Result();
 }
