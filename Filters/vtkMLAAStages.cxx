@@ -5,6 +5,8 @@
 #include "vtkSMPTools.h"
 
 #include <array>
+#include <map>
+#include <mutex>
 #include <cstdint>
 #include <cstring>
 #include <memory>
@@ -303,6 +305,23 @@ std::vector<unsigned char> Quantised(const std::vector<float>& table)
   }
   return quantised;
 }
+
+// The quantised table of one maximum distance, made once and shared, as vtkMLAAAreaTexture
+// shares its float tables.
+using QuantisedTable = std::shared_ptr<const std::vector<unsigned char>>;
+QuantisedTable SharedQuantised(
+  int maxDistance, bool diagonal, std::shared_ptr<const std::vector<float>> (*table)(int))
+{
+  static std::mutex mutex;
+  static std::map<std::pair<int, bool>, QuantisedTable> cache;
+  std::lock_guard<std::mutex> lock(mutex);
+  QuantisedTable& entry = cache[{ maxDistance, diagonal }];
+  if (!entry)
+  {
+    entry = std::make_shared<const std::vector<unsigned char>>(Quantised(*table(maxDistance)));
+  }
+  return entry;
+}
 }
 
 void MakeWeightSettings(vtkMLAAOptions* options, WeightSettings& settings)
@@ -313,10 +332,10 @@ void MakeWeightSettings(vtkMLAAOptions* options, WeightSettings& settings)
   settings.CellSize = maxDistance + 1;
   settings.AreaSize = vtkMLAAAreaTexture::NumberOfCodes * settings.CellSize;
   settings.DiagonalAreaSize = vtkMLAAAreaTexture::NumberOfDiagonalCodes * settings.CellSize;
-  settings.Area = Quantised(*vtkMLAAAreaTexture::GetSharedTable(maxDistance));
+  settings.Area = SharedQuantised(maxDistance, false, &vtkMLAAAreaTexture::GetSharedTable);
   settings.DiagonalArea = settings.Diagonals
-    ? Quantised(*vtkMLAAAreaTexture::GetSharedDiagonalTable(maxDistance))
-    : std::vector<unsigned char>();
+    ? SharedQuantised(maxDistance, true, &vtkMLAAAreaTexture::GetSharedDiagonalTable)
+    : nullptr;
 }
 
 const float* WeightValues()
@@ -333,24 +352,289 @@ const float* WeightValues()
 }
 
 //------------------------------------------------------------------------------
+// Line lengths (section 4.3.1 as run lengths; see the header). With C = maxDistance and "p
+// continues to q" meaning that q has the line's edgel and no crossing edgel lies between p and
+// q (edgels read clamped to the extent):
+//   length(p) = continues(p, next(p)) ? min(C, 1 + length(next(p))) : 0,
+// evaluated from the far end of each row or column towards its near end. Past the border of the
+// extent the clamped edgels repeat the border pixel's, so the border pixel continues to its
+// outer neighbour exactly when every further one does too: its length is C or 0.
+namespace
+{
+// Whether any of the n pixels of an edges row at e has a left edgel (Which = 0) or a top one
+// (Which = 1), eight bytes (four pixels) at a time. The masks select each pixel's first or
+// second byte on little-endian machines (as BlendRow's skip assumes); elsewhere every byte
+// counts, which only costs the skip.
+template <int Which>
+inline bool AnyEdgel(const unsigned char* e, int n)
+{
+  static const std::uint64_t mask = [] {
+    const std::uint16_t one = 1;
+    unsigned char first;
+    std::memcpy(&first, &one, 1);
+    return first != 1 ? ~0ull : Which == 0 ? 0x00FF00FF00FF00FFull : 0xFF00FF00FF00FF00ull;
+  }();
+  int k = 0;
+  std::uint64_t any = 0;
+  for (; k + 4 <= n; k += 4)
+  {
+    std::uint64_t four;
+    std::memcpy(&four, e + 2 * k, sizeof(four));
+    any |= four;
+  }
+  bool found = (any & mask) != 0;
+  for (; k < n && !found; ++k)
+  {
+    found = e[2 * k + Which] != 0;
+  }
+  return found;
+}
+}
+
+void ComputeRowLineLengths(
+  const EdgesBuffer& edges, int y, int maxDistance, LineLength* left, LineLength* right)
+{
+  const Rect& r = edges.Extent;
+  const int w = r.Width();
+  const int cap = maxDistance;
+  const unsigned char* e = edges.At(r.X0, y);
+  // The row above, clamped: its left edgels cross the line too.
+  const unsigned char* a = edges.At(r.X0, std::min(y + 1, r.Y1));
+  // Whether pixel i has a top edgel, and whether its left boundary is open (no left edgel on
+  // this row or the row above): then the line runs from i - 1 into i, or from i into i - 1.
+  auto top = [e](int i) { return e[2 * i + 1] != 0; };
+  auto open = [e, a](int i) { return (e[2 * i] | a[2 * i]) == 0; };
+  // Only the lengths of pixels with a top edgel are used, by the weights and by the recursion
+  // (a pixel's length is read by its neighbour only if it continues that neighbour's line, so
+  // only if it has a top edgel): groups of eight pixels without one are skipped, their entries
+  // left unwritten.
+  auto noTopEdgels = [e, w](int i) { return i + 8 <= w && !AnyEdgel<1>(e + 2 * i, 8); };
+  // Left: i - 1 continues i's line when it has a top edgel and i's left boundary is open. At the
+  // extent's left border the clamped edgels repeat pixel 0's: C or 0.
+  int length = (top(0) && open(0)) ? cap : 0;
+  left[0] = static_cast<LineLength>(length);
+  for (int i = 1; i < w; ++i)
+  {
+    if (noTopEdgels(i))
+    {
+      i += 7;
+      length = 0; // pixel i + 7 has no top edgel: the next one's line does not run into it
+      continue;
+    }
+    length = (top(i - 1) && open(i)) ? std::min(cap, length + 1) : 0;
+    left[i] = static_cast<LineLength>(length);
+  }
+  // Right: i + 1 continues i's line when it has a top edgel and its left boundary is open.
+  length = (top(w - 1) && open(w - 1)) ? cap : 0;
+  right[w - 1] = static_cast<LineLength>(length);
+  for (int i = w - 2; i >= 0; --i)
+  {
+    if (i >= 7 && noTopEdgels(i - 7))
+    {
+      i -= 7;
+      length = 0;
+      continue;
+    }
+    length = (top(i + 1) && open(i + 1)) ? std::min(cap, length + 1) : 0;
+    right[i] = static_cast<LineLength>(length);
+  }
+}
+
+void ComputeColumnLineLengths(const EdgesBuffer& edges, const Rect& extent, int maxDistance,
+  LineLength* down, LineLength* up)
+{
+  const Rect& r = edges.Extent;
+  if (extent.Empty())
+  {
+    return;
+  }
+  const int cap = maxDistance;
+  const int w = extent.Width();
+  // Strips of columns, each scanned row by row (contiguous reads and writes within a row); the
+  // running lengths of a strip's columns are carried from row to row. As for rows, only the
+  // lengths of pixels with a left edgel are used: a row of a strip without left edgels resets
+  // the carried lengths and is not stored.
+  constexpr int strip = 256;
+  vtkSMPTools::For(0, (w + strip - 1) / strip, 1, [&](vtkIdType begin, vtkIdType end) {
+    LineLength carry[strip];
+    for (vtkIdType s = begin; s < end; ++s)
+    {
+      const int i0 = static_cast<int>(s) * strip;
+      const int n = std::min(strip, w - i0);
+      const int x0 = extent.X0 + i0;
+      const int leftOfFirst = std::max(x0 - 1, r.X0);
+      auto hasLeftEdgels = [&](int y) { return AnyEdgel<0>(edges.At(x0, y), n); };
+      auto storeCarry = [&](LineLength* lengths, int y) {
+        if (y >= extent.Y0 && y <= extent.Y1)
+        {
+          std::copy(carry, carry + n, lengths + static_cast<size_t>(y - extent.Y0) * w + i0);
+        }
+      };
+      // The lengths of row lengthsRow from those carried: pixel k continues when edgelsRow's
+      // pixel has a left edgel and the boundary above boundaryRow's pixel is open (no top edgel
+      // on it in this column or the column to the left, clamped to the extent).
+      auto scanRow = [&](int edgelsRow, int boundaryRow) {
+        const unsigned char* e = edges.At(x0, edgelsRow);
+        const unsigned char* b = edges.At(x0, boundaryRow);
+        unsigned char previousTop = edges.At(leftOfFirst, boundaryRow)[1];
+        for (int k = 0; k < n; ++k)
+        {
+          const unsigned char ownTop = b[2 * k + 1];
+          const bool continues = e[2 * k] != 0 && (ownTop | previousTop) == 0;
+          previousTop = ownTop;
+          carry[k] = static_cast<LineLength>(continues ? std::min(cap, carry[k] + 1) : 0);
+        }
+      };
+      // One direction (step -1: up, scanned downwards from the top; +1: down, scanned upwards
+      // from the bottom). The scan starts at the extent's border, where the clamped edgels repeat
+      // the border row's so that its length is C or 0, or C rows beyond the pixels wanted, where
+      // it may start from 0: a line that reaches that row from a wanted pixel is C long already.
+      auto scan = [&](int step, LineLength* lengths) {
+        const int border = step < 0 ? r.Y1 : r.Y0;
+        const int wanted = step < 0 ? extent.Y1 : extent.Y0;
+        const int last = step < 0 ? extent.Y0 : extent.Y1;
+        const int start = step < 0 ? std::min(border, wanted + cap) : std::max(border, wanted - cap);
+        if (start == border)
+        {
+          // The border row's own edgels stand for every row beyond it (C - 1 + 1 = C).
+          std::fill(carry, carry + n, static_cast<LineLength>(cap - 1));
+          scanRow(border, border);
+        }
+        else
+        {
+          std::fill(carry, carry + n, static_cast<LineLength>(0));
+        }
+        bool zero = false;
+        bool ownEdgels = hasLeftEdgels(start);
+        if (ownEdgels)
+        {
+          storeCarry(lengths, start);
+        }
+        for (int y = start + step; step < 0 ? y >= last : y <= last; y += step)
+        {
+          // Up: y + 1 continues y's line when it has a left edgel and y's top boundary is open.
+          // Down: y - 1 continues it when it has a left edgel and its own top boundary (the one
+          // between the two) is open.
+          const int previous = y - step;
+          if (!ownEdgels)
+          {
+            if (!zero)
+            {
+              std::fill(carry, carry + n, static_cast<LineLength>(0));
+              zero = true;
+            }
+          }
+          else
+          {
+            scanRow(previous, step < 0 ? y : previous);
+            zero = false;
+          }
+          ownEdgels = hasLeftEdgels(y);
+          if (ownEdgels)
+          {
+            storeCarry(lengths, y);
+          }
+        }
+      };
+      scan(-1, up);
+      scan(+1, down);
+    }
+  });
+}
+
+//------------------------------------------------------------------------------
 namespace
 {
 // Section 4.3: the blending weights of one pixel from the edges around it.
 class WeightsComputer
 {
 public:
-  WeightsComputer(const EdgesBuffer& edges, const Rect& whole, const WeightSettings& settings)
+  // The lengths of the staircases through the pixels of an extent, in each of their two
+  // directions, as SearchDiagonal counts them (ComputeDiagonalLengths); the entries of pixels
+  // that are not units of that kind of staircase are not written.
+  struct DiagonalLengths
+  {
+    Rect Extent;
+    LineLength* RisingDown = nullptr;  // rising units, towards (-1, -1)
+    LineLength* RisingUp = nullptr;    // rising units, towards (+1, +1)
+    LineLength* FallingUp = nullptr;   // falling units, towards (-1, +1)
+    LineLength* FallingDown = nullptr; // falling units, towards (+1, -1)
+    size_t Index(int x, int y) const
+    {
+      return static_cast<size_t>(y - this->Extent.Y0) * this->Extent.Width() + (x - this->Extent.X0);
+    }
+  };
+
+  WeightsComputer(const EdgesBuffer& edges, const Rect& whole, const WeightSettings& settings,
+    const DiagonalLengths* diagonalLengths = nullptr)
     : E(edges)
     , R(edges.Extent)
     , Whole(whole)
     , S(settings)
+    , D(diagonalLengths)
   {
   }
 
-  // The four weights of a pixel with edgels (see WeightsBuffer). With DiagonalDetection, an
-  // edgel that is part of a 45-degree staircase takes its weights from the diagonal line instead
-  // (ComputeDiagonalWeights).
-  void Compute(int x, int y, unsigned char* w) const
+  // The diagonal lengths of the columns x0..x1 of lengths.Extent, by the run-length recursion
+  // of the orthogonal lines along each diagonal (ComputeRowLineLengths): a unit's count towards
+  // a direction is 0 if the next pixel that way is no unit, else 1 plus that unit's count,
+  // capped at the maximum distance. Rows are scanned upwards for the directions that go down and
+  // downwards for those that go up. Where the next pixel lies outside the extent or the strip of
+  // columns, the count is searched unit by unit instead (SearchDiagonal), so strips are
+  // independent and the reads beyond the extent are those of the search.
+  void ComputeDiagonalLengths(const DiagonalLengths& lengths, int x0, int x1) const
+  {
+    const Rect& ext = lengths.Extent;
+    const int cap = this->S.CellSize - 1;
+    auto rising = [this](int u, int v) { return this->IsRisingUnit(u, v); };
+    auto falling = [this](int u, int v) { return this->IsFallingUnit(u, v); };
+    // One direction (dx, dy) of one kind of unit, rows in the order that visits (x + dx, y + dy)
+    // before (x, y).
+    auto scan = [&](int dx, int dy, bool isRising, LineLength* out) {
+      const int first = dy < 0 ? ext.Y0 : ext.Y1;
+      for (int y = first; dy < 0 ? y <= ext.Y1 : y >= ext.Y0; y -= dy)
+      {
+        const unsigned char* e = this->E.At(x0, y);
+        for (int x = x0; x <= x1; ++x)
+        {
+          // Both kinds of unit have the pixel's top edgel: eight pixels without one are skipped.
+          if ((x - x0) % 8 == 0 && x + 7 <= x1 && !AnyEdgel<1>(e + 2 * (x - x0), 8))
+          {
+            x += 7;
+            continue;
+          }
+          if (!e[2 * (x - x0) + 1] || !(isRising ? rising(x, y) : falling(x, y)))
+          {
+            continue;
+          }
+          const int nx = x + dx, ny = y + dy;
+          int length;
+          if (nx < x0 || nx > x1 || ny < ext.Y0 || ny > ext.Y1)
+          {
+            bool reachedEnd;
+            length = isRising ? this->SearchDiagonal(x, y, dx, dy, rising, reachedEnd)
+                              : this->SearchDiagonal(x, y, dx, dy, falling, reachedEnd);
+          }
+          else
+          {
+            const bool next = isRising ? rising(nx, ny) : falling(nx, ny);
+            length = next ? std::min(cap, 1 + out[lengths.Index(nx, ny)]) : 0;
+          }
+          out[lengths.Index(x, y)] = static_cast<LineLength>(length);
+        }
+      }
+    };
+    scan(-1, -1, true, lengths.RisingDown);
+    scan(+1, -1, false, lengths.FallingDown);
+    scan(+1, +1, true, lengths.RisingUp);
+    scan(-1, +1, false, lengths.FallingUp);
+  }
+
+  // The four weights of a pixel with edgels (see WeightsBuffer), given the lengths of its lines
+  // (ComputeRowLineLengths, ComputeColumnLineLengths): leftEnd and rightEnd along its row,
+  // up and down along its column. With DiagonalDetection, an edgel that is part of a 45-degree
+  // staircase takes its weights from the diagonal line instead (ComputeDiagonalWeights).
+  void Compute(int x, int y, int leftEnd, int rightEnd, int up, int down, unsigned char* w) const
   {
     w[0] = w[1] = w[2] = w[3] = 0;
     bool top = this->E.Top(x, y);
@@ -362,8 +646,6 @@ public:
     if (top)
     {
       // A horizontal line: its ends lie to the left and to the right.
-      const int leftEnd = this->SearchTopEdges(x, y, -1);
-      const int rightEnd = this->SearchTopEdges(x, y, +1);
       const int e1 = this->CrossingLeftEdges(x - leftEnd, y, y + 1);
       const int e2 = this->CrossingLeftEdges(x + rightEnd + 1, y, y + 1);
       this->LookUpArea(e1, e2, leftEnd, rightEnd, w);
@@ -371,8 +653,6 @@ public:
     if (left)
     {
       // A vertical line: its first end is the upper one.
-      const int up = this->SearchLeftEdges(x, y, +1);
-      const int down = this->SearchLeftEdges(x, y, -1);
       const int e1 = this->CrossingTopEdges(x, x - 1, y + up);
       const int e2 = this->CrossingTopEdges(x, x - 1, y - down - 1);
       this->LookUpArea(e1, e2, up, down, w + 2);
@@ -389,56 +669,6 @@ private:
   }
   int TopAt(int x, int y) const { return this->Clamped(x, y)[1] ? 1 : 0; }
   int LeftAt(int x, int y) const { return this->Clamped(x, y)[0] ? 1 : 0; }
-
-  // Section 4.3.1: distance from (x, y) to the end of its line of top edgels in direction dx
-  // (-1 left, +1 right), or of left edgels in direction dy (-1 down, +1 up). Each step looks at
-  // the next two pixels along the line, as the GPU does with two bilinear fetches:
-  // - the two edgels along the line (weighted 3:1, so that each can be told apart);
-  // - the crossing edgels (perpendicular ones, on either side of the line) at the boundary
-  //   before the first pixel and at the boundary between the two.
-  // The line ends before the first pixel without an edgel, or at the first boundary with a
-  // crossing edgel. Stopping at crossing edges (which the chapter's search does not, section
-  // 4.3.1 and 4.6) keeps the top and bottom outlines of one-pixel-wide lines apart.
-  int SearchTopEdges(int x, int y, int dx) const
-  {
-    for (int i = 0; i < this->S.SearchSteps; ++i)
-    {
-      const int first = x + dx * (2 * i + 1);
-      const int second = first + dx;
-      // Left edgels of the pixels right of the two boundaries, on this row and the one above.
-      const int nearOwner = std::max(first, first - dx);
-      const int midOwner = std::max(first, second);
-      if (this->LeftAt(nearOwner, y) || this->LeftAt(nearOwner, y + 1) || !this->TopAt(first, y))
-      {
-        return 2 * i;
-      }
-      if (this->LeftAt(midOwner, y) || this->LeftAt(midOwner, y + 1) || !this->TopAt(second, y))
-      {
-        return 2 * i + 1;
-      }
-    }
-    return 2 * this->S.SearchSteps;
-  }
-  int SearchLeftEdges(int x, int y, int dy) const
-  {
-    for (int i = 0; i < this->S.SearchSteps; ++i)
-    {
-      const int first = y + dy * (2 * i + 1);
-      const int second = first + dy;
-      // Top edgels of the pixels below the two boundaries, in this column and the one left.
-      const int nearOwner = std::min(first, first - dy);
-      const int midOwner = std::min(first, second);
-      if (this->TopAt(x, nearOwner) || this->TopAt(x - 1, nearOwner) || !this->LeftAt(x, first))
-      {
-        return 2 * i;
-      }
-      if (this->TopAt(x, midOwner) || this->TopAt(x - 1, midOwner) || !this->LeftAt(x, second))
-      {
-        return 2 * i + 1;
-      }
-    }
-    return 2 * this->S.SearchSteps;
-  }
 
   // Section 4.3.2: the crossing-edge code at an end of a line, 3 * (edgel on the owning pixel's
   // side) + (edgel on the opposite side), as the bilinear fetch a quarter pixel off the edge
@@ -530,8 +760,8 @@ private:
     {
       auto isUnit = [this](int u, int v) { return this->IsRisingUnit(u, v); };
       bool end1, end2;
-      const int d1 = this->SearchDiagonal(x, y, -1, -1, isUnit, end1);
-      const int d2 = this->SearchDiagonal(x, y, +1, +1, isUnit, end2);
+      const int d1 = this->DiagonalLength(x, y, -1, -1, true, isUnit, end1);
+      const int d2 = this->DiagonalLength(x, y, +1, +1, true, isUnit, end2);
       if (d1 + d2 + 1 >= minLength)
       {
         const int x1 = x - d1, y1 = y - d1; // first unit
@@ -563,8 +793,8 @@ private:
         continue;
       }
       bool end1, end2;
-      const int d1 = this->SearchDiagonal(qx, y, -1, +1, isFalling, end1);
-      const int d2 = this->SearchDiagonal(qx, y, +1, -1, isFalling, end2);
+      const int d1 = this->DiagonalLength(qx, y, -1, +1, false, isFalling, end1);
+      const int d2 = this->DiagonalLength(qx, y, +1, -1, false, isFalling, end2);
       if (d1 + d2 + 1 < minLength)
       {
         continue;
@@ -595,21 +825,40 @@ private:
   {
     const int d = this->S.CellSize;
     const size_t texel = static_cast<size_t>(d * e2 + d2) * this->S.DiagonalAreaSize + (d * e1 + d1);
-    return this->S.DiagonalArea.data() + 3 * texel;
+    return this->S.DiagonalArea->data() + 3 * texel;
   }
 
   void LookUpArea(int e1, int e2, int d1, int d2, unsigned char* w) const
   {
     const int d = this->S.CellSize;
     const size_t texel = static_cast<size_t>(d * e2 + d2) * this->S.AreaSize + (d * e1 + d1);
-    w[0] = this->S.Area[2 * texel];
-    w[1] = this->S.Area[2 * texel + 1];
+    const unsigned char* a = this->S.Area->data() + 2 * texel;
+    w[0] = a[0];
+    w[1] = a[1];
+  }
+
+  // SearchDiagonal from a unit, from the diagonal lengths where they were computed.
+  template <typename IsUnit>
+  int DiagonalLength(int x, int y, int dx, int dy, bool isRising, IsUnit isUnit,
+    bool& reachedEnd) const
+  {
+    if (this->D && this->D->Extent.Contains(x, y))
+    {
+      const LineLength* lengths = isRising
+        ? (dx < 0 ? this->D->RisingDown : this->D->RisingUp)
+        : (dx < 0 ? this->D->FallingUp : this->D->FallingDown);
+      const int d = lengths[this->D->Index(x, y)];
+      reachedEnd = d < this->S.CellSize - 1;
+      return d;
+    }
+    return this->SearchDiagonal(x, y, dx, dy, isUnit, reachedEnd);
   }
 
   const EdgesBuffer& E;
   const Rect R;
   const Rect Whole;
   const WeightSettings& S;
+  const DiagonalLengths* D;
 };
 }
 
@@ -621,17 +870,59 @@ void ComputeBlendingWeights(const EdgesBuffer& edges, const Rect& whole,
   {
     return;
   }
-  const WeightsComputer computer(edges, whole, settings);
+  const int maxDistance = settings.CellSize - 1;
+  const size_t pixels = static_cast<size_t>(r.Width()) * r.Height();
+  // The lengths of the staircases (DiagonalDetection) through the pixels of the extent, in
+  // strips of columns.
+  WeightsComputer::DiagonalLengths diagonal;
+  const bool diagonalRuns = settings.Diagonals && settings.DiagonalRunLengths;
+  if (diagonalRuns)
+  {
+    weights.DiagonalLengths.Reserve(4 * pixels * sizeof(LineLength));
+    LineLength* base = reinterpret_cast<LineLength*>(weights.DiagonalLengths.Get());
+    diagonal.Extent = r;
+    diagonal.RisingDown = base;
+    diagonal.RisingUp = base + pixels;
+    diagonal.FallingUp = base + 2 * pixels;
+    diagonal.FallingDown = base + 3 * pixels;
+    const WeightsComputer searcher(edges, whole, settings);
+    constexpr int strip = 256;
+    vtkSMPTools::For(0, (r.Width() + strip - 1) / strip, 1, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const int x0 = r.X0 + static_cast<int>(i) * strip;
+        searcher.ComputeDiagonalLengths(diagonal, x0, std::min(r.X1, x0 + strip - 1));
+      }
+    });
+  }
+  const WeightsComputer computer(edges, whole, settings, diagonalRuns ? &diagonal : nullptr);
+  // The up and down lengths of every pixel of the extent (the columns are scanned in strips),
+  // the left and right ones row by row in each task.
+  weights.ColumnLengths.Reserve(2 * pixels * sizeof(LineLength));
+  LineLength* down = reinterpret_cast<LineLength*>(weights.ColumnLengths.Get());
+  LineLength* up = down + pixels;
+  ComputeColumnLineLengths(edges, r, maxDistance, down, up);
+  if (progress.CheckAbort())
+  {
+    return;
+  }
+  const int edgesWidth = edges.Extent.Width();
   vtkSMPTools::For(0, r.Height(), RowsPerTask, [&](vtkIdType begin, vtkIdType end) {
     if (progress.Aborted())
     {
       return;
     }
+    std::vector<LineLength> rowLengths(2 * static_cast<size_t>(edgesWidth));
+    LineLength* left = rowLengths.data();
+    LineLength* right = left + edgesWidth;
+    const int offset = r.X0 - edges.Extent.X0;
     for (vtkIdType i = begin; i < end; ++i)
     {
       const int y = r.Y0 + static_cast<int>(i);
       const unsigned char* e = edges.At(r.X0, y);
       unsigned char* w = weights.At(r.X0, y);
+      const size_t column = static_cast<size_t>(i) * r.Width();
+      ComputeRowLineLengths(edges, y, maxDistance, left, right);
       // Most pixels have no edgel: four at a time are skipped; their weights are not written.
       for (int x = r.X0; x <= r.X1;)
       {
@@ -648,7 +939,11 @@ void ComputeBlendingWeights(const EdgesBuffer& edges, const Rect& whole,
         const int i = x - r.X0;
         if (e[2 * i] | e[2 * i + 1])
         {
-          computer.Compute(x, y, w + 4 * i);
+          // Lengths are only computed for pixels with the edgel they belong to.
+          const bool hasTop = e[2 * i + 1] != 0;
+          const bool hasLeft = e[2 * i] != 0;
+          computer.Compute(x, y, hasTop ? left[offset + i] : 0, hasTop ? right[offset + i] : 0,
+            hasLeft ? up[column + i] : 0, hasLeft ? down[column + i] : 0, w + 4 * i);
         }
         ++x;
       }

@@ -15,8 +15,9 @@
  * Only the features and the blending depend on the scalar type; the edges and weights buffers
  * are laid out as the pass's RG8 edges and RGBA8 blending-weights textures, with the same 8-bit
  * quantisation, so the two back ends compute the same numbers. Features are read row by row into
- * per-task buffers (never a full-size copy of the image); the edges and weights buffers are the
- * only full-size buffers besides the output.
+ * per-task buffers (never a full-size copy of the image); the edges and weights buffers (with
+ * the weights' scratch of 16-bit column line lengths, 4 bytes per pixel) are the only full-size
+ * buffers besides the output.
  *
  * How far each stage reads beyond the pixels it produces (its halo) is derived from the options
  * in one place, Halo (below); vtkImageMLAA pads its input request by Halo::Total().
@@ -386,6 +387,12 @@ struct WeightsBuffer
 {
   Rect Extent;
   ByteBuffer Data;
+  // Scratch of ComputeBlendingWeights: the down and up line lengths of the extent's pixels (two
+  // LineLength per pixel), kept with the weights so that it is not allocated (and its pages not
+  // faulted in afresh) on every run.
+  ByteBuffer ColumnLengths;
+  // The same for the staircase lengths of DiagonalDetection: four LineLength per pixel.
+  ByteBuffer DiagonalLengths;
 
   void Allocate(const Rect& extent);
   const unsigned char* At(int x, int y) const
@@ -407,18 +414,65 @@ struct WeightSettings
 {
   int SearchSteps = 8;     // vtkMLAAOptions::MaxSearchSteps
   bool Diagonals = true;   // vtkMLAAOptions::DiagonalDetection
+  // How staircases are followed: true, by run lengths counted over the extent beforehand
+  // (four 16-bit values per pixel); false, unit by unit from every unit (as the GPU pass does).
+  // The same numbers either way; false is kept for tests and comparisons.
+  bool DiagonalRunLengths = true;
   int CellSize = 17;       // D = 2 * SearchSteps + 1
   int AreaSize = 85;       // 5 D
   int DiagonalAreaSize = 51; // 3 D
-  std::vector<unsigned char> Area;         // 2 per texel
-  std::vector<unsigned char> DiagonalArea; // 3 per texel; empty without diagonals
+  // Quantised once per maximum distance and shared (quantising the tables of 128 steps, 5 million
+  // texels, costs more than the rest of the weights stage).
+  std::shared_ptr<const std::vector<unsigned char>> Area;         // 2 per texel
+  std::shared_ptr<const std::vector<unsigned char>> DiagonalArea; // 3 per texel; null without diagonals
 };
 VTKFILTERSMLAA_EXPORT void MakeWeightSettings(vtkMLAAOptions* options, WeightSettings& settings);
 
 /**
+ * Line lengths (section 4.3.1's distance search, done as run lengths): for a pixel p, the number
+ * of further pixels along its row (left or right) or its column (down or up) that continue its
+ * line, at most maxDistance (vtkMLAAOptions::GetMaxDistance()). Pixel q continues the line from
+ * its neighbour p towards q when q has the line's edgel (a top edgel for a row, a left edgel for
+ * a column) and no crossing edgel lies at the boundary between p and q: no left edgel there on
+ * p's row or the row above (rows), no top edgel there in p's column or the column to the left
+ * (columns). Edgels are read clamped to edges.Extent, as a GPU reads with clamp-to-edge, so a
+ * line that reaches the border of the extent and continues across it (by that rule applied to
+ * the clamped edgels) runs on to maxDistance.
+ *
+ * These equal, for every pixel, the distances of a search that steps pixel by pixel up to
+ * maxDistance (the chapter's loop, vtkOpenGLMLAAPass's SEARCH_LOOP), but cost one linear scan
+ * per row and per column instead of up to maxDistance reads per pixel and direction: each length
+ * is 0 where the next pixel does not continue the line, else 1 plus the next pixel's length,
+ * capped (the recursion that the GPU's recursive doubling, Rendering/glsl/
+ * vtkMLAALineLengthsFS.glsl, evaluates in log4(maxDistance) passes instead; Biri et al., section
+ * 3.3). 16-bit lengths hold maxDistance up to 256.
+ */
+using LineLength = std::uint16_t;
+
+/**
+ * The left and right lengths of the pixels of row y of edges.Extent that have a top edgel (one
+ * entry per column of the extent, from edges.Extent.X0; the entries of pixels without a top
+ * edgel are not all written: they are never needed).
+ */
+VTKFILTERSMLAA_EXPORT void ComputeRowLineLengths(
+  const EdgesBuffer& edges, int y, int maxDistance, LineLength* left, LineLength* right);
+
+/**
+ * The down and up lengths of the pixels of `extent` (within edges.Extent) that have a left
+ * edgel, row by row, one entry per pixel of `extent` in each array (those of pixels without a
+ * left edgel are not all written). Threaded over strips of columns.
+ */
+VTKFILTERSMLAA_EXPORT void ComputeColumnLineLengths(const EdgesBuffer& edges, const Rect& extent,
+  int maxDistance, LineLength* down, LineLength* up);
+
+/**
  * The blending weights of the pixels of weights.Extent (already allocated, within edges.Extent)
  * that have an edgel, from the edges; the entries of the others are not written. `whole` is the image: edgels are read clamped to edges.Extent,
- * as a GPU clamps texture reads, and the image border is not a crossing edge.
+ * as a GPU clamps texture reads, and the image border is not a crossing edge. The distances to
+ * the ends of orthogonal lines are line lengths (ComputeRowLineLengths, per row of each task,
+ * and ComputeColumnLineLengths, held for the whole weights extent: two 16-bit values per pixel);
+ * with DiagonalDetection, the lengths of staircases are counted the same way beforehand (four
+ * 16-bit values per pixel; WeightSettings::DiagonalRunLengths).
  */
 VTKFILTERSMLAA_EXPORT void ComputeBlendingWeights(const EdgesBuffer& edges, const Rect& whole,
   const WeightSettings& settings, WeightsBuffer& weights, Progress& progress);

@@ -18,6 +18,8 @@
 
 #include "vtkMLAABlendingWeightsFS.h"
 #include "vtkMLAAEdgeDetectionFS.h"
+#include "vtkMLAALineLengthsFS.h"
+#include "vtkMLAALineLengthsInitFS.h"
 #include "vtkMLAANeighborhoodBlendingFS.h"
 
 #include <string>
@@ -71,6 +73,27 @@ bool AllocateDepthTarget(vtkTextureObject* texture, int width, int height, int f
   texture->SetMinificationFilter(vtkTextureObject::Nearest);
   texture->SetMagnificationFilter(vtkTextureObject::Nearest);
   texture->AllocateDepth(width, height, format);
+  return true;
+}
+
+// The same for a line-lengths texture: RGBA16F (integers up to 2048 exactly), nearest.
+bool AllocateLengthsTarget(vtkTextureObject* texture, int width, int height)
+{
+  if (texture->GetHandle())
+  {
+    if (texture->GetWidth() != static_cast<unsigned int>(width) ||
+      texture->GetHeight() != static_cast<unsigned int>(height))
+    {
+      texture->Resize(width, height);
+    }
+    return false;
+  }
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  texture->SetMinificationFilter(vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  texture->SetInternalFormat(GL_RGBA16F);
+  texture->Allocate2D(width, height, 4, VTK_FLOAT);
   return true;
 }
 
@@ -167,6 +190,25 @@ void vtkOpenGLMLAAPass::PrepareTargets(
   reallocated |=
     AllocateColorTarget(this->WeightsTexture, width, height, 4, VTK_UNSIGNED_CHAR, false);
   reallocated |= AllocateDepthTarget(this->MaskTexture, width, height, vtkTextureObject::Fixed16);
+  if (this->GetUsesRecursiveDoubling())
+  {
+    for (vtkTextureObject*& lengths : this->LengthsTextures)
+    {
+      if (!lengths)
+      {
+        lengths = NewTexture(renWin);
+      }
+      reallocated |= AllocateLengthsTarget(lengths, width, height);
+    }
+  }
+  else
+  {
+    // Not needed by the search loop: not kept.
+    for (vtkTextureObject*& lengths : this->LengthsTextures)
+    {
+      DeleteObject(lengths, renWin);
+    }
+  }
   if (reallocated)
   {
     // Framebuffer objects remember their attachments: start afresh with the new textures.
@@ -371,6 +413,17 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   this->DepthTexture->Deactivate();
   this->ColorTexture->Deactivate();
 
+  // Line lengths by recursive doubling (LineLengths), on the same pixels.
+  vtkTextureObject* lengths = nullptr;
+  if (this->GetUsesRecursiveDoubling())
+  {
+    lengths = this->ComputeLineLengths(renWin);
+    if (!lengths)
+    {
+      return false;
+    }
+  }
+
   // Pass 2: blending weights, on the pixels whose mask depth was written only.
   fbo->AddColorAttachment(0, this->WeightsTexture);
   fbo->ActivateDrawBuffer(0);
@@ -380,7 +433,8 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   const std::string weightsDefines =
     Define("MLAA_MAX_SEARCH_STEPS", this->Options->GetMaxSearchSteps()) +
     Define("MLAA_DIAGONAL_DETECTION", this->Options->GetDiagonalDetection()) +
-    Define("MLAA_MINIMUM_DIAGONAL_LENGTH", vtkMLAAOptions::MinimumDiagonalLength);
+    Define("MLAA_MINIMUM_DIAGONAL_LENGTH", vtkMLAAOptions::MinimumDiagonalLength) +
+    Define("MLAA_RECURSIVE_DOUBLING", lengths != nullptr);
   if (!this->ReadyQuad(renWin, this->WeightsQuad, vtkMLAABlendingWeightsFS, weightsDefines))
   {
     return false;
@@ -392,12 +446,72 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   program->SetUniformi("edgesTexture", this->EdgesTexture->GetTextureUnit());
   program->SetUniformi("areaTexture", this->AreaTexture->GetTextureUnit());
   program->SetUniformi("diagonalAreaTexture", this->DiagonalAreaTexture->GetTextureUnit());
+  if (lengths)
+  {
+    lengths->Activate();
+    program->SetUniformi("lengthsTexture", lengths->GetTextureUnit());
+  }
   this->WeightsQuad.Quad->Render();
+  if (lengths)
+  {
+    lengths->Deactivate();
+  }
   this->DiagonalAreaTexture->Deactivate();
   this->AreaTexture->Deactivate();
   this->EdgesTexture->Deactivate();
   ostate->vtkglDepthMask(GL_TRUE);
   return true;
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkOpenGLMLAAPass::ComputeLineLengths(vtkOpenGLRenderWindow* renWin)
+{
+  vtkOpenGLState* ostate = renWin->GetState();
+  vtkOpenGLFramebufferObject* fbo = this->MLAAFramebuffer;
+  // Both textures start at 0: the passes write the edge pixels only, and the jumps of the
+  // doubling land on pixels without an edge too, which must read 0.
+  ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+  for (vtkTextureObject* lengths : this->LengthsTextures)
+  {
+    fbo->AddColorAttachment(0, lengths);
+    fbo->ActivateDrawBuffer(0);
+    ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+  }
+
+  // Initialisation: the 0/1 flags of every direction into LengthsTextures[1] (still attached).
+  if (!this->ReadyQuad(renWin, this->LengthsInitQuad, vtkMLAALineLengthsInitFS, std::string()))
+  {
+    return nullptr;
+  }
+  this->EdgesTexture->Activate();
+  this->LengthsInitQuad.Quad->Program->SetUniformi(
+    "edgesTexture", this->EdgesTexture->GetTextureUnit());
+  this->LengthsInitQuad.Quad->Render();
+  this->EdgesTexture->Deactivate();
+
+  // Doubling passes for levels 1, 4, 16, ... until the counts are exact up to the maximum
+  // distance (4 level >= maximum distance), reading one texture and writing the other.
+  if (!this->ReadyQuad(renWin, this->LengthsQuad, vtkMLAALineLengthsFS, std::string()))
+  {
+    return nullptr;
+  }
+  vtkShaderProgram* program = this->LengthsQuad.Quad->Program;
+  const int maxDistance = this->Options->GetMaxDistance();
+  int source = 1;
+  for (int level = 1; level < maxDistance; level *= 4)
+  {
+    vtkTextureObject* from = this->LengthsTextures[source];
+    vtkTextureObject* to = this->LengthsTextures[1 - source];
+    fbo->AddColorAttachment(0, to);
+    fbo->ActivateDrawBuffer(0);
+    from->Activate();
+    program->SetUniformi("lengthsTexture", from->GetTextureUnit());
+    program->SetUniformf("level", static_cast<float>(level));
+    this->LengthsQuad.Quad->Render();
+    from->Deactivate();
+    source = 1 - source;
+  }
+  return this->LengthsTextures[source];
 }
 
 //------------------------------------------------------------------------------
@@ -611,7 +725,8 @@ void vtkOpenGLMLAAPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
   for (ShaderVariant* variant :
-    { &this->EdgesQuad, &this->LocalContrastQuad, &this->WeightsQuad, &this->BlendQuad })
+    { &this->EdgesQuad, &this->LocalContrastQuad, &this->WeightsQuad, &this->BlendQuad,
+      &this->LengthsInitQuad, &this->LengthsQuad })
   {
     variant->Release(w);
   }
@@ -619,7 +734,7 @@ void vtkOpenGLMLAAPass::ReleaseGraphicsResources(vtkWindow* w)
   DeleteObject(this->MLAAFramebuffer, w);
   for (vtkTextureObject** texture : { &this->ColorTexture, &this->DepthTexture,
          &this->EdgesTexture, &this->WeightsTexture, &this->MaskTexture, &this->AreaTexture,
-         &this->DiagonalAreaTexture })
+         &this->DiagonalAreaTexture, &this->LengthsTextures[0], &this->LengthsTextures[1] })
   {
     DeleteObject(*texture, w);
   }
@@ -640,7 +755,38 @@ vtkIdType vtkOpenGLMLAAPass::GetTargetMemorySize()
     : 4;
   return TextureBytes(this->ColorTexture, colorBytes) + TextureBytes(this->DepthTexture, 4) +
     this->GetMLAATargetMemorySize() + TextureBytes(this->MaskTexture, 2) +
-    TextureBytes(this->AreaTexture, 8) + TextureBytes(this->DiagonalAreaTexture, 12);
+    TextureBytes(this->AreaTexture, 8) + TextureBytes(this->DiagonalAreaTexture, 12) +
+    TextureBytes(this->LengthsTextures[0], 8) + TextureBytes(this->LengthsTextures[1], 8);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLMLAAPass::GetUsesRecursiveDoubling()
+{
+  switch (this->LineLengths)
+  {
+    case SEARCH_LOOP:
+      return false;
+    case RECURSIVE_DOUBLING:
+      return true;
+    default:
+      return this->Options->GetMaxSearchSteps() >= AutomaticDoublingSteps;
+  }
+}
+
+//------------------------------------------------------------------------------
+const char* vtkOpenGLMLAAPass::GetLineLengthsAsString(int method)
+{
+  switch (method)
+  {
+    case AUTOMATIC:
+      return "AUTOMATIC";
+    case SEARCH_LOOP:
+      return "SEARCH_LOOP";
+    case RECURSIVE_DOUBLING:
+      return "RECURSIVE_DOUBLING";
+    default:
+      return "unknown";
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -649,6 +795,7 @@ void vtkOpenGLMLAAPass::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "AntialiasOverlays: " << (this->AntialiasOverlays ? "On" : "Off") << "\n";
   os << indent << "KeepAlpha: " << (this->KeepAlpha ? "On" : "Off") << "\n";
+  os << indent << "LineLengths: " << GetLineLengthsAsString(this->LineLengths) << "\n";
   os << indent << "Options:\n";
   this->Options->PrintSelf(os, indent.GetNextIndent());
 }

@@ -14,7 +14,8 @@
  *    chapter's stencil trick); with a LocalContrastFactor, a second run of the edge shader on
  *    the edge pixels only drops edges much fainter than a neighbouring one;
  * 2. blending weights into an RGBA8 texture: distance search reading two edgels per bilinear
- *    fetch and stopping at crossing edges, crossing edges read with a quarter-pixel offset, and
+ *    fetch and stopping at crossing edges (or, with LineLengths, line lengths counted beforehand
+ *    by recursive doubling), crossing edges read with a quarter-pixel offset, and
  *    the area texture of vtkMLAAAreaTexture, uploaded once per maximum distance; with
  *    DiagonalDetection, staircases of one-pixel steps are followed texel by texel and take their
  *    weights from vtkMLAAAreaTexture's diagonal table;
@@ -165,10 +166,51 @@ public:
   vtkBooleanMacro(KeepAlpha, bool);
   ///@}
 
+  ///@{
+  /**
+   * How the blending-weights pass finds the distances from a pixel to the two ends of its
+   * horizontal and vertical lines (section 4.3.1; up to vtkMLAAOptions::GetMaxDistance() pixels
+   * each way). Both give the same integers, hence the same image, and both equal vtkImageMLAA's:
+   * - SEARCH_LOOP: each pixel with an edge searches along its lines, two edgels per bilinear
+   *   fetch (Jimenez et al., Listing 4.3), stopping at the line's end; its cost grows with the
+   *   length of the lines, up to MaxSearchSteps fetches per direction.
+   * - RECURSIVE_DOUBLING: the lengths of every line are counted beforehand by recursive doubling
+   *   (Biri et al., "Practical morphological antialiasing on the GPU", section 3.3): an
+   *   initialisation pass and ceil(log4(GetMaxDistance())) passes (levels 1, 4, 16, 64) of
+   *   three fetches per direction over the edge pixels, into two RGBA16F textures (16 bytes per
+   *   pixel together), which the weights pass reads once. Its cost grows with the logarithm of
+   *   the maximum distance, not with the lines.
+   * - AUTOMATIC (default): RECURSIVE_DOUBLING when MaxSearchSteps is at least
+   *   AutomaticDoublingSteps (32), SEARCH_LOOP below, by the measured cost on the shared scenes
+   *   (Examples/Benchmarks/BenchmarkMLAAPass.cxx): the loop stops at each line's end, so at short
+   *   search lengths it does less work than the extra passes.
+   */
+  enum LineLengthMethods
+  {
+    AUTOMATIC = 0,
+    SEARCH_LOOP = 1,
+    RECURSIVE_DOUBLING = 2
+  };
+  static constexpr int AutomaticDoublingSteps = 32;
+  vtkSetClampMacro(LineLengths, int, AUTOMATIC, RECURSIVE_DOUBLING);
+  vtkGetMacro(LineLengths, int);
+  void SetLineLengthsToAutomatic() { this->SetLineLengths(AUTOMATIC); }
+  void SetLineLengthsToSearchLoop() { this->SetLineLengths(SEARCH_LOOP); }
+  void SetLineLengthsToRecursiveDoubling() { this->SetLineLengths(RECURSIVE_DOUBLING); }
+  static const char* GetLineLengthsAsString(int method);
+  ///@}
+
+  /**
+   * Whether the next render counts line lengths by recursive doubling: LineLengths, with
+   * AUTOMATIC resolved for the current options.
+   */
+  bool GetUsesRecursiveDoubling();
+
   /**
    * Bytes of GPU memory held by the pass's render targets at the last render (the copy of the
    * delegate's colour, and of its depth when the pass renders it into its own textures, edges,
-   * blending weights, the pixel mask and the area textures).
+   * blending weights, the pixel mask, the area textures and, with recursive doubling, the two
+   * line-lengths textures).
    */
   vtkIdType GetTargetMemorySize();
 
@@ -185,6 +227,7 @@ protected:
   vtkMLAAOptions* Options = nullptr;
   bool AntialiasOverlays = false;
   bool KeepAlpha = false;
+  int LineLengths = AUTOMATIC;
 
 private:
   vtkOpenGLMLAAPass(const vtkOpenGLMLAAPass&) = delete;
@@ -203,6 +246,9 @@ private:
   void RenderDelegateToTextures(const vtkRenderState* s, int width, int height, bool composite);
   // Passes 1 and 2 into EdgesTexture and WeightsTexture.
   bool ComputeEdgesAndWeights(vtkOpenGLRenderWindow* renWin, int width, int height, bool useAlpha);
+  // The line lengths by recursive doubling into one of LengthsTextures (returned), on the pixels
+  // of the mask (the MLAA framebuffer is bound with the mask and depth test EQUAL).
+  vtkTextureObject* ComputeLineLengths(vtkOpenGLRenderWindow* renWin);
   // Pass 3 (or a debug output) into the target viewport, composited over it with premultiplied
   // alpha when `composite`.
   // With `straightAlpha`, colours are premultiplied before blending and divided by alpha after.
@@ -235,10 +281,13 @@ private:
   vtkTextureObject* MaskTexture = nullptr;
   vtkTextureObject* AreaTexture = nullptr;
   vtkTextureObject* DiagonalAreaTexture = nullptr;
+  vtkTextureObject* LengthsTextures[2] = { nullptr, nullptr }; // RGBA16F, ping-pong
   int AreaTextureMaxDistance = 0;
   ShaderVariant EdgesQuad;
   ShaderVariant LocalContrastQuad;
   ShaderVariant WeightsQuad;
+  ShaderVariant LengthsInitQuad;
+  ShaderVariant LengthsQuad;
   ShaderVariant BlendQuad;
 };
 

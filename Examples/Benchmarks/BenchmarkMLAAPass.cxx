@@ -14,6 +14,10 @@
 // It reports the median frame time per configuration and
 //   overhead(X) = median(X) - median(steps),   ratio = overhead(MLAA-pass) / overhead(FXAA-pass),
 // and the MLAA pass's render-target memory relative to an RGBA8 back buffer (W * H * 4 bytes).
+// Long lines (unless --no-long-lines): the MLAA pass again with MaxSearchSteps 8, 32 and 128
+// (the other options as given), each with the search loop and with line lengths by recursive
+// doubling (vtkOpenGLMLAAPass::LineLengths), as configurations MLAA-<steps>-loop and
+// MLAA-<steps>-doubling of the same rounds, reported as overhead / overhead(FXAA-pass).
 #include "BenchmarkUtilities.h"
 #include "vtkMLAAScenes.h"
 
@@ -45,6 +49,8 @@ void Usage(const char* program)
             << "  --warmup N       untimed frames per configuration first (default 10)\n"
             << "  --rounds N       split the timed frames into N interleaved rounds (default 5)\n"
             << "  --azimuth DEG    camera azimuth step per frame (default 0.2; 0 = still)\n"
+            << "  --no-long-lines  leave out the MLAA pass at 8, 32 and 128 steps with the search\n"
+            << "                   loop and with recursive doubling\n"
             << "For the MLAA pass, " << mlaaBenchmark::MLAAOptionsUsage();
 }
 
@@ -61,6 +67,7 @@ int main(int argc, char* argv[])
 {
   int width = 1920, height = 1080, frames = 100, warmup = 10, rounds = 5;
   double azimuth = 0.2;
+  bool longLines = true;
   std::string scene = "mixed";
   vtkNew<vtkMLAAOptions> options;
   for (int i = 1; i < argc; ++i)
@@ -91,6 +98,10 @@ int main(int argc, char* argv[])
     else if (arg == "--rounds" && hasValue && mlaaBenchmark::ParsePositive(argv[i + 1], rounds))
     {
       ++i;
+    }
+    else if (arg == "--no-long-lines")
+    {
+      longLines = false;
     }
     else if (arg == "--azimuth" && hasValue)
     {
@@ -154,6 +165,27 @@ int main(int argc, char* argv[])
     { "MLAA-pass", mlaa, false, {} },
     { "FXAA-builtin", nullptr, true, {} },
   };
+  // Long lines: one pass per search length and line-length method.
+  std::vector<vtkSmartPointer<vtkOpenGLMLAAPass>> longLinePasses;
+  if (longLines)
+  {
+    for (int searchSteps : { 8, 32, 128 })
+    {
+      for (int method : { vtkOpenGLMLAAPass::SEARCH_LOOP, vtkOpenGLMLAAPass::RECURSIVE_DOUBLING })
+      {
+        auto pass = vtkSmartPointer<vtkOpenGLMLAAPass>::New();
+        vtkNew<vtkRenderStepsPass> delegate;
+        pass->SetDelegatePass(delegate);
+        pass->GetOptions()->DeepCopy(options);
+        pass->GetOptions()->SetMaxSearchSteps(searchSteps);
+        pass->SetLineLengths(method);
+        longLinePasses.push_back(pass);
+        configurations.push_back({ "MLAA-" + std::to_string(searchSteps) +
+            (method == vtkOpenGLMLAAPass::SEARCH_LOOP ? "-loop" : "-doubling"),
+          pass, false, {} });
+      }
+    }
+  }
 
   vtkCamera* camera = renderer->GetActiveCamera();
   vtkNew<vtkCamera> start;
@@ -202,7 +234,7 @@ int main(int argc, char* argv[])
   const double mlaaTargets = static_cast<double>(mlaa->GetMLAATargetMemorySize());
 
   std::cout << "\n"
-            << std::left << std::setw(14) << "configuration" << std::right << std::setw(10)
+            << std::left << std::setw(18) << "configuration" << std::right << std::setw(10)
             << "median" << std::setw(10) << "min" << std::setw(10) << "p90" << std::setw(12)
             << "-steps" << "  ms/frame\n";
   double stepsMedian = 0.0;
@@ -225,7 +257,7 @@ int main(int argc, char* argv[])
     {
       mlaaOverhead = median - stepsMedian;
     }
-    std::cout << std::left << std::setw(14) << c.Name << std::right << std::fixed
+    std::cout << std::left << std::setw(18) << c.Name << std::right << std::fixed
               << std::setprecision(2) << std::setw(10) << median << std::setw(10)
               << mlaaBenchmark::Quantile(c.Times, 0.0) << std::setw(10)
               << mlaaBenchmark::Quantile(c.Times, 0.9) << std::setw(12) << median - stepsMedian
@@ -242,6 +274,37 @@ int main(int argc, char* argv[])
   {
     std::cout << "n/a (FXAA overhead not positive: within noise)\n";
   }
+  if (longLines)
+  {
+    std::cout << "long lines: overhead / overhead(FXAA-pass), search loop and recursive doubling\n"
+              << std::left << std::setw(8) << "steps" << std::right << std::setw(12) << "loop"
+              << std::setw(12) << "doubling" << "\n";
+    for (int searchSteps : { 8, 32, 128 })
+    {
+      std::cout << std::left << std::setw(8) << searchSteps << std::right;
+      for (const char* method : { "-loop", "-doubling" })
+      {
+        const std::string name = "MLAA-" + std::to_string(searchSteps) + method;
+        for (const auto& c : configurations)
+        {
+          if (c.Name == name)
+          {
+            const double overhead = mlaaBenchmark::Median(c.Times) - stepsMedian;
+            std::cout << std::setw(12);
+            if (fxaaOverhead > 0.0)
+            {
+              std::cout << overhead / fxaaOverhead;
+            }
+            else
+            {
+              std::cout << "n/a";
+            }
+          }
+        }
+      }
+      std::cout << "\n";
+    }
+  }
   std::cout << "MLAA pass render targets: " << targets / (1024.0 * 1024.0) << " MiB = "
             << targets / backBuffer << " x the RGBA8 back buffer (" << backBuffer / (1024.0 * 1024.0)
             << " MiB); MLAA-specific targets (edges + blending weights): "
@@ -251,6 +314,10 @@ int main(int argc, char* argv[])
   renderer->SetPass(nullptr);
   renderer->UseFXAAOff();
   mlaa->ReleaseGraphicsResources(window);
+  for (auto& pass : longLinePasses)
+  {
+    pass->ReleaseGraphicsResources(window);
+  }
   fxaa->ReleaseGraphicsResources(window);
   steps->ReleaseGraphicsResources(window);
   return EXIT_SUCCESS;

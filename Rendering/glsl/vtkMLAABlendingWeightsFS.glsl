@@ -22,19 +22,29 @@
 //   MLAA_MAX_SEARCH_STEPS         vtkMLAAOptions::MaxSearchSteps (a constant loop bound)
 //   MLAA_DIAGONAL_DETECTION       defined: vtkMLAAOptions::DiagonalDetection
 //   MLAA_MINIMUM_DIAGONAL_LENGTH  vtkMLAAOptions::MinimumDiagonalLength
+//   MLAA_RECURSIVE_DOUBLING       defined: the distances to the ends of orthogonal lines are read
+//                                 from the line lengths of vtkMLAALineLengthsFS.glsl (Biri et
+//                                 al., section 3.3) instead of being searched here; they are the
+//                                 same integers (vtkOpenGLMLAAPass::LineLengths)
 //
 // With MLAA_DIAGONAL_DETECTION, edgels that belong to a staircase of one-pixel steps (at least
 // minimumDiagonalLength units) take their weights from the 45-degree line through it instead,
 // from the diagonal area table (vtkMLAAAreaTexture::ComputeDiagonalAreas). Exact texel reads are
 // used there; the staircase is followed one unit per step.
 //
-// Must match vtkImageMLAA's blending weights (ComputeBlendingWeights in Filters/vtkMLAAStages.cxx).
+// Must match vtkImageMLAA's blending weights (ComputeBlendingWeights in Filters/vtkMLAAStages.cxx);
+// the distances of searchTopEdges/searchLeftEdges must equal the line lengths of
+// ComputeRowLineLengths/ComputeColumnLineLengths there and of vtkMLAALineLengthsFS.glsl.
 
 in vec2 texCoord;
 
 uniform sampler2D edgesTexture; // RG8, red = left edgel, green = top edgel; LINEAR, clamp to edge
 uniform sampler2D areaTexture;  // vtkMLAAAreaTexture's table, RG32F (texelFetch only)
 uniform sampler2D diagonalAreaTexture; // vtkMLAAAreaTexture's diagonal table, RGB32F
+#ifdef MLAA_RECURSIVE_DOUBLING
+// Line lengths (left, right, down, up), RGBA16F integers, exact up to 4^passes >= maxDistance.
+uniform sampler2D lengthsTexture;
+#endif
 
 const int maxSearchSteps = MLAA_MAX_SEARCH_STEPS;
 const int cellSize = 2 * MLAA_MAX_SEARCH_STEPS + 1; // D, the area texture's cell size
@@ -243,10 +253,22 @@ void main()
   }
 #endif
 
+#ifdef MLAA_RECURSIVE_DOUBLING
+  // The same distances as the searches below, counted for every pixel at once.
+  ivec4 lengths = (top || left)
+    ? min(ivec4(round(texelFetch(lengthsTexture, p, 0))), ivec4(2 * maxSearchSteps))
+    : ivec4(0);
+#endif
+
   if (top) // edge at the top: a horizontal line, ends to the left and to the right
   {
+#ifdef MLAA_RECURSIVE_DOUBLING
+    int left = lengths.x;
+    int right = lengths.y;
+#else
     int left = int(round(searchTopEdges(center, -1.0)));
     int right = int(round(searchTopEdges(center, 1.0)));
+#endif
     float fetchY = center.y + 0.25; // 3:1 between this row and the row above
     int e1 = crossingCode(edgesAt(vec2(center.x - float(left), fetchY)).r, p.x - left, size.x);
     int e2 = crossingCode(
@@ -256,8 +278,13 @@ void main()
 
   if (left) // edge at the left: a vertical line, its first end is the upper one
   {
+#ifdef MLAA_RECURSIVE_DOUBLING
+    int up = lengths.w;
+    int down = lengths.z;
+#else
     int up = int(round(searchLeftEdges(center, 1.0)));
     int down = int(round(searchLeftEdges(center, -1.0)));
+#endif
     float fetchX = center.x - 0.25; // 3:1 between this column and the column to the left
     int e1 = crossingCode(edgesAt(vec2(fetchX, center.y + float(up))).g, p.y + up, size.y);
     int e2 = crossingCode(

@@ -1,11 +1,12 @@
 // Streaming and threading invariance: vtkImageMLAA pads its input request by the search
 // distance, so processing an image in pieces (vtkImageDataStreamer, or explicit update extents)
 // gives exactly the pixels of processing it whole; and the result does not depend on the number
-// of threads.
+// of threads. Also at 128 steps, on lines longer than a piece and its padding.
 #include "vtkMLAATestUtilities.h"
 
 #include "vtkExtentTranslator.h"
 #include "vtkImageDataStreamer.h"
+#include "vtkMath.h"
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTrivialProducer.h"
@@ -116,6 +117,62 @@ int TestImageMLAAStreaming(int, char*[])
                     << ": " << d.Pixels << " pixels differ" << std::endl;
         }
       }
+    }
+  }
+
+  // Long lines at 128 steps (256 pixels each way): an image wider and taller than a piece's
+  // padded request, crossed by lines of 1, 0.2 and 0.13 degrees and a nearly vertical one (steps of
+  // 57 to 440 pixels), so that lines leave pieces and pieces see only part of the image.
+  {
+    auto image = MakeImage(700, 600, 3);
+    const double s1 = std::tan(vtkMath::RadiansFromDegrees(1.0));
+    const double s2 = std::tan(vtkMath::RadiansFromDegrees(0.2));
+    const double s3 = std::tan(vtkMath::RadiansFromDegrees(0.13));
+    FillImage(image, [s1, s2, s3](int x, int y, int, int k) {
+      double v = 30.0 + 20.0 * k;
+      if (y + 0.5 > 100.0 + s1 * (x + 0.5))
+      {
+        v = 200.0 - 50.0 * k;
+      }
+      if (y + 0.5 > 420.0 + s2 * (x + 0.5))
+      {
+        v = 90.0 + 60.0 * k;
+      }
+      if (y + 0.5 > 250.0 + s3 * (x + 0.5))
+      {
+        v = 140.0 + 40.0 * k;
+      }
+      if (x + 0.5 > 350.0 + 0.0035 * (y + 0.5))
+      {
+        v = std::min(255.0, v + 50.0);
+      }
+      return v;
+    });
+    vtkNew<vtkMLAAOptions> options;
+    options->SetMaxSearchSteps(128);
+    auto whole = RunMLAA(image, options);
+    MLAA_CHECK(Compare(image, whole).Count > 1000);
+    const int pieces[][6] = { { 0, 40, 0, 599, 0, 0 }, { 300, 360, 90, 110, 0, 0 },
+      { 650, 699, 0, 599, 0, 0 }, { 0, 699, 590, 599, 0, 0 }, { 340, 345, 0, 599, 0, 0 } };
+    for (const auto& ext : pieces)
+    {
+      vtkNew<vtkImageMLAA> filter;
+      filter->SetOptions(options);
+      filter->SetInputData(image);
+      filter->UpdateExtent(ext);
+      MLAA_CHECK(SameOnExtent(whole, filter->GetOutput(), ext));
+    }
+    for (int mode = 0; mode < 3; ++mode)
+    {
+      vtkNew<vtkImageMLAA> streamed;
+      streamed->SetOptions(options);
+      streamed->SetInputData(image);
+      vtkNew<vtkImageDataStreamer> streamer;
+      streamer->SetInputConnection(streamed->GetOutputPort());
+      streamer->SetNumberOfStreamDivisions(13);
+      SetSplitMode(streamer->GetExtentTranslator(), mode);
+      streamer->Update();
+      MLAA_CHECK(Compare(whole, streamer->GetOutput()).Count == 0);
     }
   }
 

@@ -1,6 +1,7 @@
 // Resource handling and window changes: the pass keeps matching the CPU filter after a window
 // resize, after ReleaseGraphicsResources, after its renderer is removed from the window and added
-// again, and when an option changes the area texture; ReleaseGraphicsResources frees every target;
+// again, when an option changes the area texture, and with line lengths by recursive doubling;
+// ReleaseGraphicsResources frees every target (the doubling textures included);
 // its MLAA targets take 1.5 times an RGBA8 back buffer (the chapter's figure); tiled rendering
 // (vtkRenderLargeImage) works; a multisampled window works; a pass without a delegate warns and
 // draws nothing. No errors are reported on the way.
@@ -63,6 +64,23 @@ int TestMLAAPassResources(int, char*[])
   CheckParity(window, renderer, pass, "with 32 search steps");
   pass->GetOptions()->SetMaxSearchSteps(2);
   CheckParity(window, renderer, pass, "with 2 search steps");
+
+  // Line lengths by recursive doubling: its two RGBA16F textures (8 bytes per pixel each) follow
+  // a resize, and ReleaseGraphicsResources frees them.
+  pass->SetLineLengthsToRecursiveDoubling();
+  CheckParity(window, renderer, pass, "with recursive doubling");
+  window->SetSize(300, 200);
+  CheckParity(window, renderer, pass, "with recursive doubling after a resize to 300 x 200");
+  const vtkIdType withDoubling = pass->GetTargetMemorySize();
+  pass->SetLineLengthsToSearchLoop();
+  window->Render();
+  MLAA_CHECK(withDoubling - pass->GetTargetMemorySize() == 300 * 200 * 16);
+  pass->SetLineLengthsToRecursiveDoubling();
+  window->Render();
+  pass->ReleaseGraphicsResources(window);
+  MLAA_CHECK(pass->GetTargetMemorySize() == 0);
+  pass->SetLineLengthsToAutomatic();
+  window->SetSize(421, 263);
 
   // Tiled rendering at twice the window size.
   renderer->SetPass(nullptr);

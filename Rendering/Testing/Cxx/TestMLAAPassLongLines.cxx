@@ -1,0 +1,250 @@
+// Long lines (up to 256 pixels each way, MaxSearchSteps up to 128) in vtkOpenGLMLAAPass, with the
+// search loop and with line lengths by recursive doubling (LineLengths):
+// - a 1-degree slope (a black polygon under a white background) across a 512-pixel-wide window
+//   gets one smooth ramp along each whole step of its staircase (about 57 pixels) with 32 and
+//   128 steps, in both methods, while with 8 steps (16 pixels each way) the middle of each step
+//   is left flat; the pass equals vtkImageMLAA on the screenshot within 2/255 on every pixel, and
+//   both methods give the same image;
+// - the blending-weights debug output (vtkMLAAOptions::BLENDING_WEIGHTS) is identical with and
+//   without recursive doubling on every shared scene at 8, 32 and 128 steps (the lengths are the
+//   same integers);
+// - AUTOMATIC resolves by MaxSearchSteps, and the doubling textures only exist while used.
+#include "vtkMLAARenderTestUtilities.h"
+#include "vtkMLAAScenes.h"
+#include "vtkMLAATestUtilities.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkMath.h"
+#include "vtkPointData.h"
+#include "vtkDataArray.h"
+#include "vtkOpenGLMLAAPass.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+
+#include <cmath>
+#include <vector>
+
+using namespace vtkMLAATest;
+
+namespace
+{
+constexpr int Width = 512;
+constexpr int Height = 64;
+
+// A black polygon below a line rising by 1 degree, on white, one world unit per pixel.
+void BuildSlope(vtkRenderer* renderer)
+{
+  const double slope = std::tan(vtkMath::RadiansFromDegrees(1.0));
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(-10.0, -10.0, 0.0);
+  points->InsertNextPoint(Width + 10.0, -10.0, 0.0);
+  points->InsertNextPoint(Width + 10.0, 20.0 + slope * (Width + 10.0), 0.0);
+  points->InsertNextPoint(-10.0, 20.0 - slope * 10.0, 0.0);
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType quad[4] = { 0, 1, 2, 3 };
+  polys->InsertNextCell(4, quad);
+  vtkNew<vtkPolyData> polyData;
+  polyData->SetPoints(points);
+  polyData->SetPolys(polys);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(polyData);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(0.0, 0.0, 0.0);
+  actor->GetProperty()->LightingOff();
+  renderer->AddActor(actor);
+  renderer->SetBackground(1.0, 1.0, 1.0);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->ParallelProjectionOn();
+  camera->SetFocalPoint(Width / 2.0, Height / 2.0, 0.0);
+  camera->SetPosition(Width / 2.0, Height / 2.0, 100.0);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->SetParallelScale(Height / 2.0);
+  renderer->ResetCameraClippingRange();
+}
+
+// The staircase steps of the plain render: for each, the row of the topmost dark pixels and its
+// columns.
+struct Step
+{
+  int Row, X0, X1;
+};
+std::vector<Step> Steps(vtkImageData* image)
+{
+  std::vector<Step> steps;
+  int current = -1;
+  for (int x = 0; x < Width; ++x)
+  {
+    int row = -1;
+    while (row + 1 < Height && GetValue(image, x, row + 1) < 128.0)
+    {
+      ++row;
+    }
+    if (row != current)
+    {
+      steps.push_back(Step{ row, x, x });
+      current = row;
+    }
+    steps.back().X1 = x;
+  }
+  return steps;
+}
+
+// Whether every inner step of the staircase is one monotonic ramp in `image`: the sum of the two
+// rows of the step (the dark one and the bright one above it) never grows from one pixel to the
+// next, goes from well above 255 to well below it, and is not flat over more than a quarter of
+// the step.
+bool AllRamps(vtkImageData* image, const std::vector<Step>& steps)
+{
+  for (size_t s = 1; s + 1 < steps.size(); ++s)
+  {
+    const Step& step = steps[s];
+    std::vector<double> ramp;
+    for (int x = step.X0; x <= step.X1; ++x)
+    {
+      ramp.push_back(GetValue(image, x, step.Row) + GetValue(image, x, step.Row + 1));
+    }
+    int flat = 0, longestFlat = 0;
+    for (size_t i = 1; i < ramp.size(); ++i)
+    {
+      if (ramp[i] > ramp[i - 1])
+      {
+        return false;
+      }
+      flat = ramp[i] == ramp[i - 1] ? flat + 1 : 0;
+      longestFlat = std::max(longestFlat, flat);
+    }
+    if (longestFlat > static_cast<int>(ramp.size()) / 4 || ramp.front() < 255.0 * 1.4 ||
+      ramp.back() > 255.0 * 0.6)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+void OneDegreeSlope()
+{
+  auto window = vtkMLAAScenes::NewOffscreenWindow(Width, Height);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  BuildSlope(renderer);
+  auto plain = vtkMLAAScenes::Capture(window);
+  const std::vector<Step> steps = Steps(plain);
+  MLAA_CHECK(steps.size() >= 8);
+  for (size_t s = 1; s + 1 < steps.size(); ++s)
+  {
+    MLAA_CHECK(steps[s].X1 - steps[s].X0 + 1 >= 55 && steps[s].X1 - steps[s].X0 + 1 <= 60);
+  }
+  for (int searchSteps : { 8, 32, 128 })
+  {
+    vtkNew<vtkMLAAOptions> options;
+    options->SetMaxSearchSteps(searchSteps);
+    auto cpu = RunMLAA(plain, options);
+    vtkSmartPointer<vtkImageData> images[2];
+    for (int doubling = 0; doubling < 2; ++doubling)
+    {
+      auto pass = UseMLAA(renderer, options);
+      pass->SetLineLengths(
+        doubling ? vtkOpenGLMLAAPass::RECURSIVE_DOUBLING : vtkOpenGLMLAAPass::SEARCH_LOOP);
+      images[doubling] = vtkMLAAScenes::Capture(window);
+      StopMLAA(renderer, window);
+      const Difference parity = Compare(cpu, images[doubling], 2.0);
+      const bool ramps = AllRamps(images[doubling], steps);
+      std::cout << searchSteps << " steps, " << (doubling ? "recursive doubling" : "search loop")
+                << ": " << parity.Pixels << " pixels differ from the filter by more than 2/255"
+                << " (largest " << parity.Max << "), ramps " << (ramps ? "smooth" : "broken")
+                << std::endl;
+      MLAA_CHECK(parity.Count == 0);
+      MLAA_CHECK(ramps == (searchSteps >= 32));
+    }
+    MLAA_CHECK(AllRamps(cpu, steps) == (searchSteps >= 32));
+    MLAA_CHECK(Compare(images[0], images[1], 0.0).Count == 0);
+  }
+}
+
+void SameWeightsOnSharedScenes()
+{
+  for (const std::string& name : vtkMLAAScenes::Names())
+  {
+    auto window = vtkMLAAScenes::NewOffscreenWindow(400, 300);
+    vtkNew<vtkRenderer> renderer;
+    window->AddRenderer(renderer);
+    vtkMLAAScenes::Build(name, renderer);
+    // A first render without the pass: the scenes' first frame (camera clipping range, text
+    // layout) can differ from the later ones, which this test must not mistake for the method.
+    window->Render();
+    for (int searchSteps : { 8, 32, 128 })
+    {
+      vtkNew<vtkMLAAOptions> options;
+      options->SetMaxSearchSteps(searchSteps);
+      options->SetDebugOutput(vtkMLAAOptions::BLENDING_WEIGHTS);
+      vtkSmartPointer<vtkImageData> weights[2];
+      for (int doubling = 0; doubling < 2; ++doubling)
+      {
+        auto pass = UseMLAA(renderer, options);
+        pass->SetLineLengths(
+          doubling ? vtkOpenGLMLAAPass::RECURSIVE_DOUBLING : vtkOpenGLMLAAPass::SEARCH_LOOP);
+        weights[doubling] = vtkMLAAScenes::Capture(window, true);
+        StopMLAA(renderer, window);
+      }
+      const Difference d = Compare(weights[0], weights[1], 0.0);
+      // (and there are weights to compare)
+      const double largest = weights[0]->GetPointData()->GetScalars()->GetRange(0)[1];
+      if (!MLAA_CHECK(d.Count == 0 && largest > 0.0))
+      {
+        std::cerr << "scene " << name << ", " << searchSteps << " steps: " << d.Pixels
+                  << " pixels of the weights differ" << std::endl;
+      }
+    }
+  }
+}
+
+void AutomaticAndResources()
+{
+  vtkNew<vtkOpenGLMLAAPass> pass;
+  MLAA_CHECK(pass->GetLineLengths() == vtkOpenGLMLAAPass::AUTOMATIC);
+  pass->GetOptions()->SetMaxSearchSteps(vtkOpenGLMLAAPass::AutomaticDoublingSteps - 1);
+  MLAA_CHECK(!pass->GetUsesRecursiveDoubling());
+  pass->GetOptions()->SetMaxSearchSteps(vtkOpenGLMLAAPass::AutomaticDoublingSteps);
+  MLAA_CHECK(pass->GetUsesRecursiveDoubling());
+  pass->SetLineLengthsToSearchLoop();
+  MLAA_CHECK(!pass->GetUsesRecursiveDoubling());
+  pass->SetLineLengthsToRecursiveDoubling();
+  pass->GetOptions()->SetMaxSearchSteps(1);
+  MLAA_CHECK(pass->GetUsesRecursiveDoubling());
+
+  // The two RGBA16F textures (8 bytes per pixel each) are held while doubling is used only.
+  auto window = vtkMLAAScenes::NewOffscreenWindow(64, 48);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  vtkMLAAScenes::Build(vtkMLAAScenes::Names().front(), renderer);
+  vtkNew<vtkRenderStepsPass> steps;
+  pass->SetDelegatePass(steps);
+  renderer->SetPass(pass);
+  window->Render();
+  const vtkIdType withDoubling = pass->GetTargetMemorySize();
+  pass->SetLineLengthsToSearchLoop();
+  window->Render();
+  const vtkIdType withLoop = pass->GetTargetMemorySize();
+  MLAA_CHECK(withDoubling - withLoop == 2 * 8 * 64 * 48);
+  pass->ReleaseGraphicsResources(window);
+  MLAA_CHECK(pass->GetTargetMemorySize() == 0);
+  renderer->SetPass(nullptr);
+}
+}
+
+int TestMLAAPassLongLines(int, char*[])
+{
+  OneDegreeSlope();
+  SameWeightsOnSharedScenes();
+  AutomaticAndResources();
+  return Result();
+}

@@ -1,0 +1,64 @@
+//VTK::System::Dec
+//VTK::Output::Dec
+//VTK::MLAA::Dec
+
+// MLAA line lengths by recursive doubling, initialisation (Biri et al., "Practical morphological
+// antialiasing on the GPU", section 3.3: "we simply write 1 to the left and right distance of
+// any pixel belonging to horizontal lines and 1 to up and down distance to the ones belonging to
+// vertical lines"), with the crossing-edge rule of this project's search.
+//
+// Output (RGBA16F, one flag 0 or 1 per direction, red = left, green = right, blue = down,
+// alpha = up): whether the neighbour in that direction continues this pixel's line:
+// - left/right, for a pixel with a top edgel (a horizontal line): the neighbour has a top edgel
+//   too and no left edgel (a crossing edge) lies at the boundary between them, on this row or
+//   the row above;
+// - down/up, for a pixel with a left edgel (a vertical line): the neighbour has a left edgel too
+//   and no top edgel lies at the boundary between them, in this column or the column to the
+//   left.
+// Edgels are read clamped to the texture (as the bilinear search reads with clamp-to-edge), so a
+// pixel at the border whose line continues across it gets the flag towards the outside, and the
+// doubling passes (vtkMLAALineLengthsFS.glsl) then count the line on to the maximum distance.
+// vtkOpenGLMLAAPass runs this on the pixels with an edge only (the depth mask); the others stay
+// cleared to 0.
+//
+// Must match the line lengths of vtkImageMLAA (ComputeRowLineLengths and
+// ComputeColumnLineLengths in Filters/vtkMLAAStages.cxx) and searchTopEdges/searchLeftEdges in
+// vtkMLAABlendingWeightsFS.glsl.
+
+in vec2 texCoord;
+
+uniform sampler2D edgesTexture; // RG8, red = left edgel, green = top edgel (texelFetch only)
+
+ivec2 size;
+
+vec2 edgelsAt(ivec2 p)
+{
+  return texelFetch(edgesTexture, clamp(p, ivec2(0), size - 1), 0).rg;
+}
+bool topAt(ivec2 p) { return edgelsAt(p).g > 0.5; }
+bool leftAt(ivec2 p) { return edgelsAt(p).r > 0.5; }
+
+void main()
+{
+  size = textureSize(edgesTexture, 0);
+  ivec2 p = ivec2(texCoord * vec2(size)); // this fragment's pixel (texCoord is at its centre)
+  bool top = topAt(p);
+  bool left = leftAt(p);
+  vec4 flags = vec4(0.0);
+  if (top)
+  {
+    // The left boundary of a pixel is its own left edgel; that of the row above crosses too.
+    flags.r = (topAt(p - ivec2(1, 0)) && !leftAt(p) && !leftAt(p + ivec2(0, 1))) ? 1.0 : 0.0;
+    flags.g = (topAt(p + ivec2(1, 0)) && !leftAt(p + ivec2(1, 0)) && !leftAt(p + ivec2(1, 1)))
+      ? 1.0 : 0.0;
+  }
+  if (left)
+  {
+    // The boundary between two rows is the lower pixel's top edgel; that of the column to the
+    // left crosses too.
+    flags.b = (leftAt(p - ivec2(0, 1)) && !topAt(p - ivec2(0, 1)) && !topAt(p - ivec2(1, 1)))
+      ? 1.0 : 0.0;
+    flags.a = (leftAt(p + ivec2(0, 1)) && !topAt(p) && !topAt(p - ivec2(1, 0))) ? 1.0 : 0.0;
+  }
+  gl_FragData[0] = flags;
+}
