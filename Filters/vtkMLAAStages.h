@@ -32,6 +32,7 @@
 
 #include "vtkFiltersMLAAModule.h" // For export macro
 #include "vtkMLAAOptions.h"
+#include "vtkMLAATopology.h"
 #include "vtkSMPTools.h"
 #include "vtkType.h"
 
@@ -90,13 +91,19 @@ struct Rect
  * - Edges: an edgel compares its two pixels, which the search reach above already counts; local
  *   contrast adaptation also looks at the other boundaries of those pixels, one pixel further,
  *   which is padded by 2.
+ * - Reconstruction: 1 with vtkMLAAOptions::Reconstruction (a reconstructed pixel depends on its
+ *   eight neighbours, Biri et al. section 4.3), else 0.
  */
 struct Halo
 {
   int Blending = 1;
   int Search = 17;
   int Edges = 2;
-  int Total() const { return this->Blending + this->Search + this->Edges; }
+  int Reconstruction = 0;
+  int Total() const
+  {
+    return this->Blending + this->Search + this->Edges + this->Reconstruction;
+  }
 };
 VTKFILTERSMLAA_EXPORT Halo ComputeHalo(vtkMLAAOptions* options);
 
@@ -131,6 +138,73 @@ private:
 };
 
 //------------------------------------------------------------------------------
+// CIELAB (Biri et al., "Morphological antialiasing and topological reconstruction", section
+// 3.2), for vtkMLAAOptions::LAB edges and for reconstruction. A normalised colour is taken as
+// sRGB, linearised, converted to CIE XYZ (D65) and to L*a*b*; the features are L/100, a/100
+// and b/100, so that their Euclidean distance is Delta E (CIE 1976) / 100.
+// Must match labFeatures() in Rendering/glsl/vtkMLAAEdgeDetectionFS.glsl and
+// Rendering/glsl/vtkMLAAReconstructionFS.glsl.
+namespace Lab
+{
+/** sRGB transfer function inverted: a normalised channel (clamped at 0) to linear light. */
+template <typename Acc>
+Acc Linearise(Acc c)
+{
+  c = c > Acc(0) ? c : Acc(0);
+  return c <= Acc(0.04045) ? c / Acc(12.92) : std::pow((c + Acc(0.055)) / Acc(1.055), Acc(2.4));
+}
+
+/**
+ * Cube root of a positive finite x: a first guess from the bits of the float (dividing the
+ * exponent by 3, about 3% off) and two Halley steps, each of which triples the number of
+ * correct digits (better than 1e-7 relative in float, 1e-12 in double). Branch-free, so loops
+ * over rows vectorise; several times faster than std::cbrt.
+ */
+template <typename Acc>
+Acc FastCbrt(Acc x)
+{
+  const float xf = static_cast<float>(x);
+  std::uint32_t bits;
+  std::memcpy(&bits, &xf, sizeof(bits));
+  bits = bits / 3u + 709921077u;
+  float guess;
+  std::memcpy(&guess, &bits, sizeof(guess));
+  Acc y = static_cast<Acc>(guess);
+  for (int i = 0; i < 2; ++i)
+  {
+    const Acc y3 = y * y * y;
+    y = y * (y3 + Acc(2) * x) / (Acc(2) * y3 + x);
+  }
+  return y;
+}
+
+/** The f of the L*a*b* definition. */
+template <typename Acc>
+Acc F(Acc t)
+{
+  constexpr double delta = 6.0 / 29.0;
+  return t > Acc(delta * delta * delta) ? FastCbrt(t)
+                                        : t / Acc(3.0 * delta * delta) + Acc(4.0 / 29.0);
+}
+
+/** Linear sRGB (D65) to the features L/100, a/100, b/100. */
+template <typename Acc>
+void FromLinear(Acc r, Acc g, Acc b, Acc& l, Acc& a, Acc& bb)
+{
+  // XYZ divided by the white point (0.95047, 1, 1.08883).
+  const Acc x = (Acc(0.4124564) * r + Acc(0.3575761) * g + Acc(0.1804375) * b) / Acc(0.95047);
+  const Acc y = Acc(0.2126729) * r + Acc(0.7151522) * g + Acc(0.0721750) * b;
+  const Acc z = (Acc(0.0193339) * r + Acc(0.1191920) * g + Acc(0.9503041) * b) / Acc(1.08883);
+  const Acc fx = F(x);
+  const Acc fy = F(y);
+  const Acc fz = F(z);
+  l = Acc(1.16) * fy - Acc(0.16);
+  a = Acc(5) * (fx - fy);
+  bb = Acc(2) * (fy - fz);
+}
+}
+
+//------------------------------------------------------------------------------
 // Stage 1: features (typed). The values compared across each pixel boundary, normalised so that
 // the value range of the image is [0, 1].
 
@@ -156,7 +230,8 @@ using AccumulatorType = typename std::conditional<(sizeof(T) <= 2 ||
 /**
  * Reads the features of rows of pixels of type T: normalised as (value - lo) * inverseRange,
  * luma (Rec. 709, section 4.2.1; the first component of grey images), every channel (COLOR,
- * alpha included) or the depth (given per row, already normalised), then alpha. A pixel holding
+ * alpha included), the depth (given per row, already normalised) or CIELAB (LAB: L/100, a/100,
+ * b/100, namespace Lab), then alpha. A pixel holding
  * NaN or infinity gets NaN features, which are never an edge. For one-byte types the normalised
  * values (and their products with the luma weights) come from tables built once, which give the
  * same floats as the arithmetic.
@@ -180,6 +255,7 @@ public:
         this->Luma[0][index] = Acc(0.2126) * v;
         this->Luma[1][index] = Acc(0.7152) * v;
         this->Luma[2][index] = Acc(0.0722) * v;
+        this->Linear[index] = Lab::Linearise(v);
       }
     }
   }
@@ -191,6 +267,11 @@ public:
   void Row(const T* p, int width, const double* depth, Acc* features) const
   {
     const int c = this->Layout.Components;
+    if (this->Layout.Mode == vtkMLAAOptions::LAB)
+    {
+      this->LabRow(p, width, features);
+      return;
+    }
     if (std::is_floating_point<T>::value)
     {
       // Non-finite pixels: NaN features.
@@ -245,6 +326,69 @@ public:
 private:
   static constexpr bool UseTables = sizeof(T) == 1;
 
+  // A channel in linear light (Lab::Linearise of its normalised value).
+  Acc LinearOf(T v) const
+  {
+    if (UseTables)
+    {
+      return this->Linear[static_cast<unsigned char>(v)];
+    }
+    return Lab::Linearise(this->Normalise(v));
+  }
+  // LAB features (section 3.2 of Biri et al.): L/100, a/100, b/100 planes, then alpha. Grey
+  // images are grey sRGB (R = G = B). Plane by plane, without per-pixel branches.
+  void LabRow(const T* p, int width, Acc* features) const
+  {
+    const int c = this->Layout.Components;
+    Acc* l = features;
+    Acc* a = features + width;
+    Acc* b = features + 2 * static_cast<size_t>(width);
+    if (c >= 3)
+    {
+      for (int x = 0; x < width; ++x)
+      {
+        const T* q = p + x * c;
+        Lab::FromLinear(
+          this->LinearOf(q[0]), this->LinearOf(q[1]), this->LinearOf(q[2]), l[x], a[x], b[x]);
+      }
+    }
+    else
+    {
+      for (int x = 0; x < width; ++x)
+      {
+        const Acc v = this->LinearOf(p[x * c]);
+        Lab::FromLinear(v, v, v, l[x], a[x], b[x]);
+      }
+    }
+    if (this->Layout.HasAlpha)
+    {
+      Acc* alpha = features + 3 * static_cast<size_t>(width);
+      for (int x = 0; x < width; ++x)
+      {
+        alpha[x] = this->Normalise(p[x * c + c - 1]);
+      }
+    }
+    if (std::is_floating_point<T>::value)
+    {
+      // Non-finite pixels: NaN features, which are never an edge and never unlike anything.
+      for (int x = 0; x < width; ++x)
+      {
+        bool finite = true;
+        for (int k = 0; k < c; ++k)
+        {
+          finite = finite && std::isfinite(static_cast<double>(p[x * c + k]));
+        }
+        if (!finite)
+        {
+          for (int k = 0; k < this->Layout.Count; ++k)
+          {
+            features[k * static_cast<size_t>(width) + x] = std::numeric_limits<Acc>::quiet_NaN();
+          }
+        }
+      }
+    }
+  }
+
   Acc Normalise(T v) const
   {
     if (UseTables)
@@ -295,6 +439,7 @@ private:
   Acc InverseRange;
   Acc Normalised[UseTables ? 256 : 1];
   Acc Luma[3][UseTables ? 256 : 1];
+  Acc Linear[UseTables ? 256 : 1];
 };
 
 //------------------------------------------------------------------------------
@@ -357,13 +502,18 @@ struct EdgeSettings
 {
   double Threshold = 0.1;
   double LocalContrastFactor = 2.0; // 0: off
+  // How many leading features are compared together, by their Euclidean distance: 3 in LAB
+  // mode (Delta E / 100 from L, a, b, Biri et al. section 3.2), 1 otherwise (a plain difference).
+  int EuclideanFeatures = 1;
 };
 
 /**
  * The edgels of every pixel of edges.Extent (already allocated), from the features that
  * `readRow(y, features)` gives for each row y of it (layout.Count planes of
- * edges.Extent.Width() values, FeatureReader::Row). A boundary is an edge where the largest feature difference across it
- * is at least the threshold (and more than 0); with local contrast adaptation, only if factor
+ * edges.Extent.Width() values, FeatureReader::Row). The contrast across a boundary is the
+ * largest of the Euclidean distance of the first settings.EuclideanFeatures features and the
+ * differences of the others; the boundary is an edge where it is at least the threshold (and
+ * more than 0); with local contrast adaptation, only if factor
  * times that contrast is at least the contrast of every other boundary of its two pixels.
  * Boundaries outside the extent are not edges. Acc is float or double (AccumulatorType).
  */
@@ -672,6 +822,7 @@ struct SliceSetup
   WeightSettings Weights;
   bool Dominant = true;
   bool PremultipliedAlpha = false;
+  bool Reconstruction = false; // vtkMLAAOptions::Reconstruction (stage 0)
   double Lo = 0.0; // normalisation: value -> (value - Lo) / (Hi - Lo)
   double Hi = 1.0;
 
@@ -684,17 +835,178 @@ struct SliceSetup
     return Rect{ this->Output.X0, this->Output.X1 + 1, this->Output.Y0 - 1, this->Output.Y1 }
       .Intersect(this->Input);
   }
-  /** The rows the stages go through on one slice (edges, weights, blending), for progress. */
+  /**
+   * The rows the stages go through on one slice (reconstruction, edges, weights, blending), for
+   * progress.
+   */
   vtkIdType RowsOfWork() const
   {
-    return static_cast<vtkIdType>(this->Input.Height()) + this->WeightsExtent().Height() +
-      this->Output.Height();
+    return static_cast<vtkIdType>(this->Input.Height()) * (this->Reconstruction ? 2 : 1) +
+      this->WeightsExtent().Height() + this->Output.Height();
   }
 };
 
+//------------------------------------------------------------------------------
+// Stage 0 (optional): topological reconstruction (Biri et al., section 4), typed; runs before
+// the features when vtkMLAAOptions::Reconstruction is on, and its output replaces the input of
+// every later stage.
+
+/**
+ * Whether two pixels with LAB features (FeatureReader in LAB mode, `count` planes `plane`
+ * values apart) are unlike for reconstruction: Delta E / 100 at least the threshold (and more
+ * than 0), or, with alpha (count 4), the alpha difference likewise: the boundary between them
+ * would be a LAB edge before local contrast adaptation. NaN features (non-finite pixels) are
+ * never unlike anything. Distances are compared squared, which is the same test.
+ * Must match unlike() in Rendering/glsl/vtkMLAAReconstructionFS.glsl.
+ */
+template <typename Acc>
+bool Unlike(const Acc* p, const Acc* q, size_t plane, int count, Acc threshold2)
+{
+  const Acc d0 = p[0] - q[0];
+  const Acc d1 = p[plane] - q[plane];
+  const Acc d2 = p[2 * plane] - q[2 * plane];
+  const Acc e2 = d0 * d0 + d1 * d1 + d2 * d2;
+  if (e2 >= threshold2 && e2 > Acc(0))
+  {
+    return true;
+  }
+  if (count > 3)
+  {
+    const Acc da = p[3 * plane] - q[3 * plane];
+    const Acc a2 = da * da;
+    return a2 >= threshold2 && a2 > Acc(0);
+  }
+  return false;
+}
+
+/**
+ * Section 4.3: the reconstructed pixels of setup.Input into `output` (rows of
+ * setup.Input.Width() pixels, packed). `input` points at the first pixel of setup.Input (rows
+ * `inputRowStride` values apart); reads beyond setup.Input are clamped to it (the halo keeps
+ * those reads away from the output, and at the image border they are clamped as a GPU clamps
+ * texture reads). For each pixel A, X is the mask of its neighbours unlike A (Unlike, threshold
+ * setup.Edges.Threshold; bits as vtkMLAATopology). A is selected when
+ * vtkMLAATopology::GetSelectionTable() says so and the X pixels are pairwise not unlike (one
+ * colour: the shape); it then becomes the mean of its X pixels, every component, rounded to
+ * nearest for integer types. Every other pixel is copied. All decisions read the original
+ * pixels.
+ * Must match Rendering/glsl/vtkMLAAReconstructionFS.glsl.
+ */
+template <typename T>
+void Reconstruct(const SliceSetup& setup, const T* input, vtkIdType inputRowStride, T* output,
+  Progress& progress)
+{
+  using Acc = AccumulatorType<T>;
+  const Rect& in = setup.Input;
+  if (in.Empty())
+  {
+    return;
+  }
+  const int w = in.Width();
+  const int h = in.Height();
+  const int c = setup.Layout.Components;
+  const FeatureLayout layout = MakeFeatureLayout(vtkMLAAOptions::LAB, c);
+  const int count = layout.Count;
+  const size_t plane = static_cast<size_t>(w);
+  const FeatureReader<T, Acc> reader(
+    layout, static_cast<Acc>(setup.Lo), static_cast<Acc>(1.0 / (setup.Hi - setup.Lo)));
+  const Acc threshold = static_cast<Acc>(setup.Edges.Threshold);
+  const Acc threshold2 = threshold * threshold;
+  const unsigned char* selected = vtkMLAATopology::GetSelectionTable();
+  int offsets[8][2];
+  for (int bit = 0; bit < 8; ++bit)
+  {
+    vtkMLAATopology::GetNeighborOffset(bit, offsets[bit][0], offsets[bit][1]);
+  }
+  auto pixel = [&](int x, int y) { return input + y * inputRowStride + static_cast<vtkIdType>(x) * c; };
+
+  vtkSMPTools::For(0, h, RowsPerTask, [&](vtkIdType begin, vtkIdType end) {
+    if (progress.Aborted())
+    {
+      return;
+    }
+    // The LAB features of rows begin - 1 .. end (clamped), row i at index i + 1 - begin.
+    const int first = static_cast<int>(begin) - 1;
+    const int rows = static_cast<int>(end - begin) + 2;
+    const size_t rowSize = plane * count;
+    std::unique_ptr<Acc[]> band(new Acc[rowSize * rows]);
+    for (int i = 0; i < rows; ++i)
+    {
+      const int y = std::min(std::max(first + i, 0), h - 1);
+      reader.Row(pixel(0, y), w, nullptr, band.get() + rowSize * i);
+    }
+    for (vtkIdType row = begin; row < end; ++row)
+    {
+      const int y = static_cast<int>(row);
+      T* out = output + static_cast<size_t>(y) * w * c;
+      std::copy(pixel(0, y), pixel(0, y) + static_cast<size_t>(w) * c, out);
+      // The features of the rows below, at and above y.
+      const Acc* around[3] = { band.get() + rowSize * (y - first - 1),
+        band.get() + rowSize * (y - first), band.get() + rowSize * (y - first + 1) };
+      for (int x = 0; x < w; ++x)
+      {
+        const Acc* a = around[1] + x;
+        int neighbourX[8];
+        const Acc* features[8];
+        int mask = 0;
+        for (int bit = 0; bit < 8; ++bit)
+        {
+          neighbourX[bit] = std::min(std::max(x + offsets[bit][0], 0), w - 1);
+          features[bit] = around[1 + offsets[bit][1]] + neighbourX[bit];
+          mask |= Unlike(a, features[bit], plane, count, threshold2) ? (1 << bit) : 0;
+        }
+        if (!selected[mask])
+        {
+          continue;
+        }
+        // The shape is one colour: its pixels are pairwise alike.
+        bool oneColour = true;
+        for (int i = 0; i < 8 && oneColour; ++i)
+        {
+          for (int j = i + 1; j < 8 && oneColour; ++j)
+          {
+            if (((mask >> i) & (mask >> j) & 1) &&
+              Unlike(features[i], features[j], plane, count, threshold2))
+            {
+              oneColour = false;
+            }
+          }
+        }
+        if (!oneColour)
+        {
+          continue;
+        }
+        // The mean of the shape's pixels, every component.
+        double sum[4] = { 0, 0, 0, 0 };
+        int n = 0;
+        for (int bit = 0; bit < 8; ++bit)
+        {
+          if ((mask >> bit) & 1)
+          {
+            const int ny = std::min(std::max(y + offsets[bit][1], 0), h - 1);
+            const T* q = pixel(neighbourX[bit], ny);
+            for (int k = 0; k < c; ++k)
+            {
+              sum[k] += static_cast<double>(q[k]);
+            }
+            ++n;
+          }
+        }
+        for (int k = 0; k < c; ++k)
+        {
+          out[static_cast<size_t>(x) * c + k] = ConvertBlended<T>(sum[k] / n);
+        }
+      }
+    }
+    progress.RowsDone(end - begin);
+  });
+}
+
+//------------------------------------------------------------------------------
 /** The full-size buffers of the stages, reused from slice to slice. */
 struct SliceBuffers
 {
+  ByteBuffer Reconstructed; // the reconstructed pixels of the slice, with Reconstruction only
   EdgesBuffer Edges;
   WeightsBuffer Weights;
 };
@@ -702,13 +1014,15 @@ struct SliceBuffers
 /** Wall-clock seconds spent in each stage, summed over the slices run with it. */
 struct StageTimes
 {
+  double Reconstruction = 0.0;   // with vtkMLAAOptions::Reconstruction only
   double FeaturesAndEdges = 0.0; // features are read row by row inside edge detection
   double BlendingWeights = 0.0;
   double Blending = 0.0; // neighbourhood blending or the debug image
 };
 
 /**
- * The four stages on one slice of an image of type T: `input` points at the first pixel of
+ * The stages on one slice of an image of type T (reconstruction first, when
+ * setup.Reconstruction): `input` points at the first pixel of
  * setup.Input (rows `inputRowStride` values apart), `output` (or `debug`, for a debug image) at
  * the first pixel of setup.Output (rows packed). `times`, if given, collects the stages' times.
  */
@@ -730,6 +1044,22 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
   using Acc = AccumulatorType<T>;
   const Rect& in = setup.Input;
   const int c = setup.Layout.Components;
+
+  // Stage 0: reconstruction, into a copy of the available pixels that then replaces the input.
+  if (setup.Reconstruction)
+  {
+    buffers.Reconstructed.Reserve(
+      sizeof(T) * static_cast<size_t>(c) * in.Width() * std::max(in.Height(), 0));
+    T* reconstructed = reinterpret_cast<T*>(buffers.Reconstructed.Get());
+    Reconstruct<T>(setup, input, inputRowStride, reconstructed, progress);
+    lap(&StageTimes::Reconstruction);
+    if (progress.Aborted())
+    {
+      return;
+    }
+    input = reconstructed;
+    inputRowStride = static_cast<vtkIdType>(in.Width()) * c;
+  }
   auto pixel = [&](int x, int y) {
     return input + static_cast<vtkIdType>(y - in.Y0) * inputRowStride +
       static_cast<vtkIdType>(x - in.X0) * c;
