@@ -1,6 +1,7 @@
 // Resource handling and window changes: the pass keeps matching the CPU filter after a window
 // resize, after ReleaseGraphicsResources, after its renderer is removed from the window and added
-// again, and when an option changes the area texture; ReleaseGraphicsResources frees every target;
+// again, and when an option changes the area texture or turns reconstruction on and off;
+// ReleaseGraphicsResources frees every target (the reconstructed colour's included);
 // its MLAA targets take 1.5 times an RGBA8 back buffer (the chapter's figure); tiled rendering
 // (vtkRenderLargeImage) works; a multisampled window works; a pass without a delegate warns and
 // draws nothing. No errors are reported on the way.
@@ -63,6 +64,19 @@ int TestMLAAPassResources(int, char*[])
   CheckParity(window, renderer, pass, "with 32 search steps");
   pass->GetOptions()->SetMaxSearchSteps(2);
   CheckParity(window, renderer, pass, "with 2 search steps");
+
+  // Reconstruction adds one RGBA8 copy of the colour, which ReleaseGraphicsResources frees and
+  // turning it off deletes.
+  const vtkIdType withoutReconstruction = pass->GetTargetMemorySize();
+  pass->GetOptions()->ReconstructionOn();
+  CheckParity(window, renderer, pass, "with reconstruction");
+  MLAA_CHECK(pass->GetTargetMemorySize() == withoutReconstruction + 421 * 263 * 4);
+  pass->ReleaseGraphicsResources(window);
+  MLAA_CHECK(pass->GetTargetMemorySize() == 0);
+  CheckParity(window, renderer, pass, "with reconstruction, after ReleaseGraphicsResources");
+  pass->GetOptions()->ReconstructionOff();
+  CheckParity(window, renderer, pass, "with reconstruction turned off again");
+  MLAA_CHECK(pass->GetTargetMemorySize() == withoutReconstruction);
 
   // Tiled rendering at twice the window size.
   renderer->SetPass(nullptr);
