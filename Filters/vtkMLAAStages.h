@@ -7,6 +7,7 @@
  *
  * | stage                  | reads                  | writes                              | GPU pass |
  * |------------------------|------------------------|-------------------------------------|----------|
+ * | reconstruction (typed, optional) | the slice's pixels | a reconstructed copy of them, read by every later stage | vtkMLAAReconstructionFS |
  * | features (typed)       | the slice's pixels     | a few rows of normalised features   | (fetches in the edge shader) |
  * | edges                  | features               | EdgesBuffer, 2 x 8 bit per pixel    | vtkMLAAEdgeDetectionFS |
  * | blending weights       | edges, area tables     | WeightsBuffer, 4 x 8 bit per pixel  | vtkMLAABlendingWeightsFS |
@@ -155,52 +156,102 @@ Acc Linearise(Acc c)
 }
 
 /**
- * Cube root of a positive finite x: a first guess from the bits of the float (dividing the
- * exponent by 3, about 3% off) and two Halley steps, each of which triples the number of
- * correct digits (better than 1e-7 relative in float, 1e-12 in double). Branch-free, so loops
- * over rows vectorise; several times faster than std::cbrt.
+ * Cube root of a positive finite x, without division or branches, so that loops over rows
+ * vectorise (several times faster than std::cbrt): a first guess of x^(-1/3) from the bits of
+ * the float (a magic constant minus a third of the bits, which divides the exponent by -3;
+ * under 7% off), Newton steps for the inverse cube root, y <- y (4 - x y^3) / 3, each of which
+ * doubles the correct digits (three in float, four in double: within 4e-7 and 1e-15 relative),
+ * then cbrt(x) = x y^2.
  */
 template <typename Acc>
 Acc FastCbrt(Acc x)
 {
   const float xf = static_cast<float>(x);
-  std::uint32_t bits;
+  std::int32_t bits;
   std::memcpy(&bits, &xf, sizeof(bits));
-  bits = bits / 3u + 709921077u;
+  bits = 0x54a21d2a - static_cast<std::int32_t>(static_cast<float>(bits) * (1.0f / 3.0f));
   float guess;
   std::memcpy(&guess, &bits, sizeof(guess));
   Acc y = static_cast<Acc>(guess);
-  for (int i = 0; i < 2; ++i)
+  constexpr int steps = sizeof(Acc) <= 4 ? 3 : 4;
+  for (int i = 0; i < steps; ++i)
   {
-    const Acc y3 = y * y * y;
-    y = y * (y3 + Acc(2) * x) / (Acc(2) * y3 + x);
+    y = y * (Acc(4) - x * y * y * y) * Acc(1.0 / 3.0);
   }
-  return y;
+  return x * y * y;
 }
 
-/** The f of the L*a*b* definition. */
+/**
+ * a where c holds, else b, by the bits of the values: a select that compilers keep as one (a
+ * conditional expression around a float-to-integer conversion becomes a branch under the
+ * default floating-point trapping rules, which stops a loop from vectorising).
+ */
+template <typename Acc>
+Acc Select(bool c, Acc a, Acc b)
+{
+  using Bits = typename std::conditional<sizeof(Acc) == 4, std::uint32_t, std::uint64_t>::type;
+  Bits ba, bb;
+  std::memcpy(&ba, &a, sizeof(a));
+  std::memcpy(&bb, &b, sizeof(b));
+  const Bits mask = Bits(0) - static_cast<Bits>(c);
+  const Bits r = (ba & mask) | (bb & ~mask);
+  Acc out;
+  std::memcpy(&out, &r, sizeof(out));
+  return out;
+}
+
+/**
+ * The f of the L*a*b* definition. Both sides are computed and one is selected, so that a loop
+ * vectorises (the cube root of a value under the knee, never negative here, is finite and
+ * unused).
+ */
 template <typename Acc>
 Acc F(Acc t)
 {
   constexpr double delta = 6.0 / 29.0;
-  return t > Acc(delta * delta * delta) ? FastCbrt(t)
-                                        : t / Acc(3.0 * delta * delta) + Acc(4.0 / 29.0);
+  const Acc root = FastCbrt(t);
+  const Acc linear = t * Acc(1.0 / (3.0 * delta * delta)) + Acc(4.0 / 29.0);
+  return Select(t > Acc(delta * delta * delta), root, linear);
+}
+
+/**
+ * Row k of the matrix from linear sRGB (D65) to CIE XYZ, divided by the white point's
+ * component k (0.95047, 1, 1.08883): XYZ relative to white.
+ */
+inline double RelativeXYZ(int k, int channel)
+{
+  static const double m[3][3] = { { 0.4124564, 0.3575761, 0.1804375 },
+    { 0.2126729, 0.7151522, 0.0721750 }, { 0.0193339, 0.1191920, 0.9503041 } };
+  static const double white[3] = { 0.95047, 1.0, 1.08883 };
+  return m[k][channel] / white[k];
+}
+
+/** From f(X), f(Y), f(Z) to the features L/100, a/100, b/100 (in place). */
+template <typename Acc>
+void FinishLab(Acc& fx, Acc& fy, Acc& fz)
+{
+  const Acc l = Acc(1.16) * fy - Acc(0.16);
+  const Acc a = Acc(5) * (fx - fy);
+  const Acc b = Acc(2) * (fy - fz);
+  fx = l;
+  fy = a;
+  fz = b;
 }
 
 /** Linear sRGB (D65) to the features L/100, a/100, b/100. */
 template <typename Acc>
 void FromLinear(Acc r, Acc g, Acc b, Acc& l, Acc& a, Acc& bb)
 {
-  // XYZ divided by the white point (0.95047, 1, 1.08883).
-  const Acc x = (Acc(0.4124564) * r + Acc(0.3575761) * g + Acc(0.1804375) * b) / Acc(0.95047);
-  const Acc y = Acc(0.2126729) * r + Acc(0.7151522) * g + Acc(0.0721750) * b;
-  const Acc z = (Acc(0.0193339) * r + Acc(0.1191920) * g + Acc(0.9503041) * b) / Acc(1.08883);
-  const Acc fx = F(x);
-  const Acc fy = F(y);
-  const Acc fz = F(z);
-  l = Acc(1.16) * fy - Acc(0.16);
-  a = Acc(5) * (fx - fy);
-  bb = Acc(2) * (fy - fz);
+  Acc xyz[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    xyz[k] = F(static_cast<Acc>(RelativeXYZ(k, 0)) * r + static_cast<Acc>(RelativeXYZ(k, 1)) * g +
+      static_cast<Acc>(RelativeXYZ(k, 2)) * b);
+  }
+  FinishLab(xyz[0], xyz[1], xyz[2]);
+  l = xyz[0];
+  a = xyz[1];
+  bb = xyz[2];
 }
 }
 
@@ -255,7 +306,15 @@ public:
         this->Luma[0][index] = Acc(0.2126) * v;
         this->Luma[1][index] = Acc(0.7152) * v;
         this->Luma[2][index] = Acc(0.0722) * v;
-        this->Linear[index] = Lab::Linearise(v);
+        const Acc linear = Lab::Linearise(v);
+        for (int k = 0; k < 3; ++k)
+        {
+          for (int channel = 0; channel < 3; ++channel)
+          {
+            this->XYZ[k][channel][index] =
+              static_cast<Acc>(Lab::RelativeXYZ(k, channel)) * linear;
+          }
+        }
       }
     }
   }
@@ -326,38 +385,80 @@ public:
 private:
   static constexpr bool UseTables = sizeof(T) == 1;
 
-  // A channel in linear light (Lab::Linearise of its normalised value).
-  Acc LinearOf(T v) const
-  {
-    if (UseTables)
-    {
-      return this->Linear[static_cast<unsigned char>(v)];
-    }
-    return Lab::Linearise(this->Normalise(v));
-  }
   // LAB features (section 3.2 of Biri et al.): L/100, a/100, b/100 planes, then alpha. Grey
-  // images are grey sRGB (R = G = B). Plane by plane, without per-pixel branches.
+  // images are grey sRGB (R = G = B). Plane by plane: XYZ relative to white (from tables for
+  // one-byte types), then f in branch-free loops, which vectorise, then L, a and b.
   void LabRow(const T* p, int width, Acc* features) const
   {
     const int c = this->Layout.Components;
-    Acc* l = features;
-    Acc* a = features + width;
-    Acc* b = features + 2 * static_cast<size_t>(width);
-    if (c >= 3)
+    Acc* planes[3] = { features, features + width, features + 2 * static_cast<size_t>(width) };
+    const int second = c >= 3 ? 1 : 0; // grey: the one channel is R, G and B
+    const int third = c >= 3 ? 2 : 0;
+    // A pixel equal to the one before it takes its features: only the first pixel of each run
+    // of one colour (most of a rendered image is such runs) is converted, into the first
+    // `runs` entries of the planes, and the rows are expanded at the end. runOf[x] is the run
+    // of pixel x.
+    static thread_local std::vector<int> runOfStorage;
+    runOfStorage.resize(static_cast<size_t>(width));
+    int* runOf = runOfStorage.data();
+    int runs = 0;
+    for (int x = 0; x < width; ++x)
     {
-      for (int x = 0; x < width; ++x)
+      const T* q = p + x * c;
+      bool same = x > 0;
+      for (int k = 0; k < c; ++k)
       {
-        const T* q = p + x * c;
-        Lab::FromLinear(
-          this->LinearOf(q[0]), this->LinearOf(q[1]), this->LinearOf(q[2]), l[x], a[x], b[x]);
+        same = same && q[k] == q[k - c];
+      }
+      if (!same)
+      {
+        if (UseTables)
+        {
+          for (int k = 0; k < 3; ++k)
+          {
+            planes[k][runs] = this->XYZ[k][0][static_cast<unsigned char>(q[0])] +
+              this->XYZ[k][1][static_cast<unsigned char>(q[second])] +
+              this->XYZ[k][2][static_cast<unsigned char>(q[third])];
+          }
+        }
+        else
+        {
+          const Acc r = Lab::Linearise(this->Normalise(q[0]));
+          const Acc g = c >= 3 ? Lab::Linearise(this->Normalise(q[second])) : r;
+          const Acc b = c >= 3 ? Lab::Linearise(this->Normalise(q[third])) : r;
+          for (int k = 0; k < 3; ++k)
+          {
+            planes[k][runs] = static_cast<Acc>(Lab::RelativeXYZ(k, 0)) * r +
+              static_cast<Acc>(Lab::RelativeXYZ(k, 1)) * g +
+              static_cast<Acc>(Lab::RelativeXYZ(k, 2)) * b;
+          }
+        }
+        ++runs;
+      }
+      runOf[x] = runs - 1;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      Acc* plane = planes[k];
+      for (int i = 0; i < runs; ++i)
+      {
+        plane[i] = Lab::F(plane[i]);
       }
     }
-    else
+    for (int i = 0; i < runs; ++i)
     {
-      for (int x = 0; x < width; ++x)
+      Lab::FinishLab(planes[0][i], planes[1][i], planes[2][i]);
+    }
+    if (runs < width)
+    {
+      // Backwards, so that no run is overwritten before it is read (runOf[x] <= x).
+      for (int k = 0; k < 3; ++k)
       {
-        const Acc v = this->LinearOf(p[x * c]);
-        Lab::FromLinear(v, v, v, l[x], a[x], b[x]);
+        Acc* plane = planes[k];
+        for (int x = width - 1; x >= 0; --x)
+        {
+          plane[x] = plane[runOf[x]];
+        }
       }
     }
     if (this->Layout.HasAlpha)
@@ -439,7 +540,7 @@ private:
   Acc InverseRange;
   Acc Normalised[UseTables ? 256 : 1];
   Acc Luma[3][UseTables ? 256 : 1];
-  Acc Linear[UseTables ? 256 : 1];
+  Acc XYZ[3][3][UseTables ? 256 : 1]; // [XYZ component][channel][value]: contributions
 };
 
 //------------------------------------------------------------------------------
@@ -880,6 +981,38 @@ bool Unlike(const Acc* p, const Acc* q, size_t plane, int count, Acc threshold2)
 }
 
 /**
+ * Unlike for pixels first..last - 1 of a row of features `a` against `b` (the same row, or the
+ * one below or above, offset to the neighbour): `value` is or-ed into mask[x] where they are
+ * unlike. One branch-free loop per direction.
+ */
+template <typename Acc, bool Alpha>
+void UnlikeMasks(const Acc* a, const Acc* b, size_t plane, Acc threshold2, unsigned char value,
+  int first, int last, unsigned char* mask)
+{
+  const Acc* a1 = a + plane;
+  const Acc* a2 = a + 2 * plane;
+  const Acc* a3 = a + 3 * plane;
+  const Acc* b1 = b + plane;
+  const Acc* b2 = b + 2 * plane;
+  const Acc* b3 = b + 3 * plane;
+  for (int x = first; x < last; ++x)
+  {
+    const Acc d0 = a[x] - b[x];
+    const Acc d1 = a1[x] - b1[x];
+    const Acc d2 = a2[x] - b2[x];
+    const Acc e2 = d0 * d0 + d1 * d1 + d2 * d2;
+    bool unlike = (e2 >= threshold2) & (e2 > Acc(0));
+    if (Alpha)
+    {
+      const Acc da = a3[x] - b3[x];
+      const Acc a2d = da * da;
+      unlike = unlike | ((a2d >= threshold2) & (a2d > Acc(0)));
+    }
+    mask[x] |= unlike ? value : static_cast<unsigned char>(0);
+  }
+}
+
+/**
  * Section 4.3: the reconstructed pixels of setup.Input into `output` (rows of
  * setup.Input.Width() pixels, packed). `input` points at the first pixel of setup.Input (rows
  * `inputRowStride` values apart); reads beyond setup.Input are clamped to it (the halo keeps
@@ -935,6 +1068,7 @@ void Reconstruct(const SliceSetup& setup, const T* input, vtkIdType inputRowStri
       const int y = std::min(std::max(first + i, 0), h - 1);
       reader.Row(pixel(0, y), w, nullptr, band.get() + rowSize * i);
     }
+    std::vector<unsigned char> masks(static_cast<size_t>(w));
     for (vtkIdType row = begin; row < end; ++row)
     {
       const int y = static_cast<int>(row);
@@ -943,29 +1077,57 @@ void Reconstruct(const SliceSetup& setup, const T* input, vtkIdType inputRowStri
       // The features of the rows below, at and above y.
       const Acc* around[3] = { band.get() + rowSize * (y - first - 1),
         band.get() + rowSize * (y - first), band.get() + rowSize * (y - first + 1) };
+      // The masks of the unlike neighbours: direction by direction over the inner columns
+      // (branch-free loops that vectorise), then the first and last columns, whose reads are
+      // clamped.
+      unsigned char* mask = masks.data();
+      std::fill(mask, mask + w, 0);
+      for (int bit = 0; bit < 8 && w > 2; ++bit)
+      {
+        const Acc* a = around[1];
+        const Acc* b = around[1 + offsets[bit][1]] + offsets[bit][0];
+        const unsigned char value = static_cast<unsigned char>(1 << bit);
+        if (count > 3)
+        {
+          UnlikeMasks<Acc, true>(a, b, plane, threshold2, value, 1, w - 1, mask);
+        }
+        else
+        {
+          UnlikeMasks<Acc, false>(a, b, plane, threshold2, value, 1, w - 1, mask);
+        }
+      }
+      for (int x : { 0, w - 1 })
+      {
+        mask[x] = 0; // (a single column is done twice, to the same result)
+        for (int bit = 0; bit < 8; ++bit)
+        {
+          const int nx = std::min(std::max(x + offsets[bit][0], 0), w - 1);
+          mask[x] |= Unlike(around[1] + x, around[1 + offsets[bit][1]] + nx, plane, count, threshold2)
+            ? static_cast<unsigned char>(1 << bit)
+            : 0;
+        }
+      }
       for (int x = 0; x < w; ++x)
       {
-        const Acc* a = around[1] + x;
+        if (!selected[mask[x]])
+        {
+          continue;
+        }
         int neighbourX[8];
         const Acc* features[8];
-        int mask = 0;
         for (int bit = 0; bit < 8; ++bit)
         {
           neighbourX[bit] = std::min(std::max(x + offsets[bit][0], 0), w - 1);
           features[bit] = around[1 + offsets[bit][1]] + neighbourX[bit];
-          mask |= Unlike(a, features[bit], plane, count, threshold2) ? (1 << bit) : 0;
         }
-        if (!selected[mask])
-        {
-          continue;
-        }
+        const int unlike = mask[x];
         // The shape is one colour: its pixels are pairwise alike.
         bool oneColour = true;
         for (int i = 0; i < 8 && oneColour; ++i)
         {
           for (int j = i + 1; j < 8 && oneColour; ++j)
           {
-            if (((mask >> i) & (mask >> j) & 1) &&
+            if (((unlike >> i) & (unlike >> j) & 1) &&
               Unlike(features[i], features[j], plane, count, threshold2))
             {
               oneColour = false;
@@ -981,7 +1143,7 @@ void Reconstruct(const SliceSetup& setup, const T* input, vtkIdType inputRowStri
         int n = 0;
         for (int bit = 0; bit < 8; ++bit)
         {
-          if ((mask >> bit) & 1)
+          if ((unlike >> bit) & 1)
           {
             const int ny = std::min(std::max(y + offsets[bit][1], 0), h - 1);
             const T* q = pixel(neighbourX[bit], ny);
