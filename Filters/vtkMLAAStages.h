@@ -385,6 +385,26 @@ public:
 private:
   static constexpr bool UseTables = sizeof(T) == 1;
 
+  // The first pixel of each run of equal pixels (all C components) of a row, in runStart;
+  // returns the number of runs.
+  template <int C>
+  static int FindRuns(const T* p, int width, int* runStart)
+  {
+    int runs = 0;
+    for (int x = 0; x < width; ++x)
+    {
+      const T* q = p + x * C;
+      bool same = x > 0;
+      for (int k = 0; k < C; ++k)
+      {
+        same = same && q[k] == q[k - C];
+      }
+      runStart[runs] = x;
+      runs += same ? 0 : 1;
+    }
+    return runs;
+  }
+
   // LAB features (section 3.2 of Biri et al.): L/100, a/100, b/100 planes, then alpha. Grey
   // images are grey sRGB (R = G = B). Plane by plane: XYZ relative to white (from tables for
   // one-byte types), then f in branch-free loops, which vectorise, then L, a and b.
@@ -396,46 +416,52 @@ private:
     const int third = c >= 3 ? 2 : 0;
     // A pixel equal to the one before it takes its features: only the first pixel of each run
     // of one colour (most of a rendered image is such runs) is converted, into the first
-    // `runs` entries of the planes, and the rows are expanded at the end. runOf[x] is the run
-    // of pixel x.
-    static thread_local std::vector<int> runOfStorage;
-    runOfStorage.resize(static_cast<size_t>(width));
-    int* runOf = runOfStorage.data();
+    // `runs` entries of the planes, and the rows are expanded at the end. Run i starts at
+    // pixel runStart[i].
+    static thread_local std::vector<int> runStartStorage;
+    runStartStorage.resize(static_cast<size_t>(width) + 1);
+    int* runStart = runStartStorage.data();
     int runs = 0;
-    for (int x = 0; x < width; ++x)
+    switch (c)
     {
-      const T* q = p + x * c;
-      bool same = x > 0;
-      for (int k = 0; k < c; ++k)
+      case 1:
+        runs = this->FindRuns<1>(p, width, runStart);
+        break;
+      case 2:
+        runs = this->FindRuns<2>(p, width, runStart);
+        break;
+      case 3:
+        runs = this->FindRuns<3>(p, width, runStart);
+        break;
+      default:
+        runs = this->FindRuns<4>(p, width, runStart);
+        break;
+    }
+    runStart[runs] = width;
+    for (int i = 0; i < runs; ++i)
+    {
+      const T* q = p + static_cast<size_t>(runStart[i]) * c;
+      if (UseTables)
       {
-        same = same && q[k] == q[k - c];
+        for (int k = 0; k < 3; ++k)
+        {
+          planes[k][i] = this->XYZ[k][0][static_cast<unsigned char>(q[0])] +
+            this->XYZ[k][1][static_cast<unsigned char>(q[second])] +
+            this->XYZ[k][2][static_cast<unsigned char>(q[third])];
+        }
       }
-      if (!same)
+      else
       {
-        if (UseTables)
+        const Acc r = Lab::Linearise(this->Normalise(q[0]));
+        const Acc g = c >= 3 ? Lab::Linearise(this->Normalise(q[second])) : r;
+        const Acc b = c >= 3 ? Lab::Linearise(this->Normalise(q[third])) : r;
+        for (int k = 0; k < 3; ++k)
         {
-          for (int k = 0; k < 3; ++k)
-          {
-            planes[k][runs] = this->XYZ[k][0][static_cast<unsigned char>(q[0])] +
-              this->XYZ[k][1][static_cast<unsigned char>(q[second])] +
-              this->XYZ[k][2][static_cast<unsigned char>(q[third])];
-          }
+          planes[k][i] = static_cast<Acc>(Lab::RelativeXYZ(k, 0)) * r +
+            static_cast<Acc>(Lab::RelativeXYZ(k, 1)) * g +
+            static_cast<Acc>(Lab::RelativeXYZ(k, 2)) * b;
         }
-        else
-        {
-          const Acc r = Lab::Linearise(this->Normalise(q[0]));
-          const Acc g = c >= 3 ? Lab::Linearise(this->Normalise(q[second])) : r;
-          const Acc b = c >= 3 ? Lab::Linearise(this->Normalise(q[third])) : r;
-          for (int k = 0; k < 3; ++k)
-          {
-            planes[k][runs] = static_cast<Acc>(Lab::RelativeXYZ(k, 0)) * r +
-              static_cast<Acc>(Lab::RelativeXYZ(k, 1)) * g +
-              static_cast<Acc>(Lab::RelativeXYZ(k, 2)) * b;
-          }
-        }
-        ++runs;
       }
-      runOf[x] = runs - 1;
     }
     for (int k = 0; k < 3; ++k)
     {
@@ -451,13 +477,14 @@ private:
     }
     if (runs < width)
     {
-      // Backwards, so that no run is overwritten before it is read (runOf[x] <= x).
+      // Backwards, so that no run is overwritten before it is read (run i starts at or after
+      // pixel i).
       for (int k = 0; k < 3; ++k)
       {
         Acc* plane = planes[k];
-        for (int x = width - 1; x >= 0; --x)
+        for (int i = runs - 1; i >= 0; --i)
         {
-          plane[x] = plane[runOf[x]];
+          std::fill(plane + runStart[i], plane + runStart[i + 1], plane[i]);
         }
       }
     }
