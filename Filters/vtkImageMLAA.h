@@ -6,7 +6,13 @@
  * L, U and Z patterns that the edges form, and blending each pixel next to an edge with the pixel
  * across it by the area that the revectorised (smooth) line would cover. It implements the three
  * passes of Jimenez et al., "Practical Morphological Antialiasing" (GPU Pro 2, chapter 4):
- * 1. edge detection (section 4.2): each pixel boundary whose difference exceeds the threshold,
+ * 0. with Reconstruction only: topological reconstruction (Biri et al., "Morphological
+ *    antialiasing and topological reconstruction", section 4): a pixel whose unlike neighbours
+ *    (CIELAB difference at least the threshold) form two 8-connected pieces of one colour, and
+ *    whose like neighbours one piece (vtkMLAATopology), takes the mean colour of the unlike ones;
+ *    the result replaces the input of the stages below, and is in the output;
+ * 1. edge detection (section 4.2): each pixel boundary whose difference (luma, colour, depth or
+ *    the CIELAB Delta E of Biri et al., section 3.2) reaches the threshold,
  *    unless local contrast adaptation (LocalContrastFactor, an addition after SMAA) finds it
  *    much fainter than another boundary of its two pixels;
  * 2. blending weights (section 4.3): for every edgel, the distance to both ends of its line
@@ -24,7 +30,7 @@
  *
  * Settings are those of a vtkMLAAOptions object (GetOptions; SetOptions to share one with a
  * vtkOpenGLMLAAPass): Threshold, LocalContrastFactor, EdgeDetection, MaxSearchSteps,
- * DiagonalDetection, DominantDirectionBlending, DebugOutput.
+ * DiagonalDetection, DominantDirectionBlending, Reconstruction, PremultipliedAlpha, DebugOutput.
  *
  * Input: vtkImageData of any numeric scalar type with 1 to 4 components (grey, grey + alpha,
  * RGB, RGBA). 2D images and 3D volumes; each z slice is antialiased on its own. Values are
@@ -45,9 +51,10 @@
  * search distance, so processing an image in pieces gives the same pixels as processing it whole.
  * It is multithreaded with vtkSMPTools and deterministic.
  *
- * Stages (vtkMLAAStages.h): the work mirrors the GPU pass's shaders: features (the only typed
- * step on the way in: each row read into a few rows of normalised luma, colour, depth and
- * alpha), edges (a buffer laid out as the pass's RG8 edges texture), blending weights (as its
+ * Stages (vtkMLAAStages.h): the work mirrors the GPU pass's shaders: with Reconstruction, a
+ * typed reconstruction of the slice's pixels into a copy (one more full-size buffer, in the
+ * input's type; none without it), features (the only other typed step on the way in: each row
+ * read into a few rows of normalised luma, colour, CIELAB, depth and alpha), edges (a buffer laid out as the pass's RG8 edges texture), blending weights (as its
  * RGBA8 weights texture, with the same 8-bit quantisation) and neighbourhood blending (the only
  * typed step on the way out). Besides the output, the edges and weights buffers (6 bytes per
  * pixel of a slice and its halo) are the only full-size buffers; they are kept between updates
@@ -130,7 +137,8 @@ public:
 
   /**
    * How far, in pixels, an output pixel's value reaches into the input in x and y: the search
-   * distance plus the pixels the edges and the blending look at. RequestUpdateExtent pads the
+   * distance plus the pixels the edges and the blending look at (and one more with
+   * Reconstruction). RequestUpdateExtent pads the
    * requested extent by this much.
    */
   int GetInputPadding();

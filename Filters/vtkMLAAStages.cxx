@@ -21,6 +21,7 @@ Halo ComputeHalo(vtkMLAAOptions* options)
   halo.Blending = 1;
   halo.Search = 2 * steps + (options->GetDiagonalDetection() ? 3 : 1);
   halo.Edges = options->GetLocalContrastFactor() > 0.0 ? 2 : 0;
+  halo.Reconstruction = options->GetReconstruction() ? 1 : 0;
   return halo;
 }
 
@@ -71,7 +72,9 @@ FeatureLayout MakeFeatureLayout(int mode, int components)
   layout.Mode = mode;
   layout.Components = components;
   layout.HasAlpha = components == 2 || components == 4;
-  layout.Count = mode == vtkMLAAOptions::COLOR ? components : 1 + (layout.HasAlpha ? 1 : 0);
+  layout.Count = mode == vtkMLAAOptions::COLOR
+    ? components
+    : (mode == vtkMLAAOptions::LAB ? 3 : 1) + (layout.HasAlpha ? 1 : 0);
   return layout;
 }
 
@@ -109,6 +112,7 @@ class EdgeDetector
 public:
   EdgeDetector(int features, const EdgeSettings& settings)
     : F(features)
+    , E(std::min(std::max(settings.EuclideanFeatures, 1), features))
     , Threshold(static_cast<Acc>(settings.Threshold))
     , Factor(static_cast<Acc>(settings.LocalContrastFactor))
   {
@@ -117,11 +121,8 @@ public:
   // The contrast across a boundary: the largest difference of a feature that is at least the
   // threshold (and more than nothing, so that a zero threshold means "any difference"), else 0.
   // NaN differences are never edges.
-  Acc Contrast(Acc a, Acc b) const
-  {
-    const Acc d = std::abs(a - b);
-    return (d >= this->Threshold && d > Acc(0)) ? d : Acc(0);
-  }
+  Acc Contrast(Acc a, Acc b) const { return this->Kept(std::abs(a - b)); }
+  Acc Kept(Acc d) const { return (d >= this->Threshold && d > Acc(0)) ? d : Acc(0); }
 
   // The contrasts of one row of w pixels with features f, and the row above with features g
   // (null where there is no row above: no top edges); features in planes of w values. The
@@ -130,11 +131,27 @@ public:
   {
     b.Left[-1] = b.Left[w] = b.Top[-1] = b.Top[w] = Acc(0);
     b.Left[0] = Acc(0);
-    for (int x = 1; x < w; ++x)
+    if (this->E == 3)
     {
-      b.Left[x] = this->Contrast(f[x], f[x - 1]);
+      // LAB: Delta E / 100, the Euclidean distance of (L, a, b) / 100 (Biri et al., 3.2).
+      const Acc* f1 = f + w;
+      const Acc* f2 = f + 2 * w;
+      for (int x = 1; x < w; ++x)
+      {
+        const Acc d0 = f[x] - f[x - 1];
+        const Acc d1 = f1[x] - f1[x - 1];
+        const Acc d2 = f2[x] - f2[x - 1];
+        b.Left[x] = this->Kept(std::sqrt(d0 * d0 + d1 * d1 + d2 * d2));
+      }
     }
-    for (int k = 1; k < this->F; ++k)
+    else
+    {
+      for (int x = 1; x < w; ++x)
+      {
+        b.Left[x] = this->Contrast(f[x], f[x - 1]);
+      }
+    }
+    for (int k = this->E; k < this->F; ++k)
     {
       const Acc* plane = f + k * w;
       for (int x = 1; x < w; ++x)
@@ -148,11 +165,28 @@ public:
       std::fill(b.Top, b.Top + w, Acc(0));
       return;
     }
-    for (int x = 0; x < w; ++x)
+    if (this->E == 3)
     {
-      b.Top[x] = this->Contrast(f[x], g[x]);
+      const Acc* f1 = f + w;
+      const Acc* f2 = f + 2 * w;
+      const Acc* g1 = g + w;
+      const Acc* g2 = g + 2 * w;
+      for (int x = 0; x < w; ++x)
+      {
+        const Acc d0 = f[x] - g[x];
+        const Acc d1 = f1[x] - g1[x];
+        const Acc d2 = f2[x] - g2[x];
+        b.Top[x] = this->Kept(std::sqrt(d0 * d0 + d1 * d1 + d2 * d2));
+      }
     }
-    for (int k = 1; k < this->F; ++k)
+    else
+    {
+      for (int x = 0; x < w; ++x)
+      {
+        b.Top[x] = this->Contrast(f[x], g[x]);
+      }
+    }
+    for (int k = this->E; k < this->F; ++k)
     {
       const Acc* plane = f + k * w;
       const Acc* planeAbove = g + k * w;
@@ -213,6 +247,7 @@ public:
 
 private:
   int F;
+  int E; // leading features compared by Euclidean distance (1 or 3)
   Acc Threshold;
   Acc Factor;
 };
@@ -989,6 +1024,8 @@ void ConfigureSlice(vtkMLAAOptions* options, int components, double lo, double h
   setup.Layout = MakeFeatureLayout(options->GetEdgeDetection(), components);
   setup.Edges.Threshold = options->GetThreshold();
   setup.Edges.LocalContrastFactor = options->GetLocalContrastFactor();
+  setup.Edges.EuclideanFeatures = setup.Layout.Mode == vtkMLAAOptions::LAB ? 3 : 1;
+  setup.Reconstruction = options->GetReconstruction();
   MakeWeightSettings(options, setup.Weights);
   setup.Dominant = options->GetDominantDirectionBlending();
   setup.PremultipliedAlpha = options->GetPremultipliedAlpha();

@@ -7,6 +7,7 @@
  *
  * | stage                  | reads                  | writes                              | GPU pass |
  * |------------------------|------------------------|-------------------------------------|----------|
+ * | reconstruction (typed, optional) | the slice's pixels | a reconstructed copy of them, read by every later stage | vtkMLAAReconstructionFS |
  * | features (typed)       | the slice's pixels     | a few rows of normalised features   | (fetches in the edge shader) |
  * | edges                  | features               | EdgesBuffer, 2 x 8 bit per pixel    | vtkMLAAEdgeDetectionFS |
  * | blending weights       | edges, area tables     | WeightsBuffer, 4 x 8 bit per pixel  | vtkMLAABlendingWeightsFS |
@@ -33,6 +34,7 @@
 
 #include "vtkFiltersMLAAModule.h" // For export macro
 #include "vtkMLAAOptions.h"
+#include "vtkMLAATopology.h"
 #include "vtkSMPTools.h"
 #include "vtkType.h"
 
@@ -91,13 +93,19 @@ struct Rect
  * - Edges: an edgel compares its two pixels, which the search reach above already counts; local
  *   contrast adaptation also looks at the other boundaries of those pixels, one pixel further,
  *   which is padded by 2.
+ * - Reconstruction: 1 with vtkMLAAOptions::Reconstruction (a reconstructed pixel depends on its
+ *   eight neighbours, Biri et al. section 4.3), else 0.
  */
 struct Halo
 {
   int Blending = 1;
   int Search = 17;
   int Edges = 2;
-  int Total() const { return this->Blending + this->Search + this->Edges; }
+  int Reconstruction = 0;
+  int Total() const
+  {
+    return this->Blending + this->Search + this->Edges + this->Reconstruction;
+  }
 };
 VTKFILTERSMLAA_EXPORT Halo ComputeHalo(vtkMLAAOptions* options);
 
@@ -132,6 +140,123 @@ private:
 };
 
 //------------------------------------------------------------------------------
+// CIELAB (Biri et al., "Morphological antialiasing and topological reconstruction", section
+// 3.2), for vtkMLAAOptions::LAB edges and for reconstruction. A normalised colour is taken as
+// sRGB, linearised, converted to CIE XYZ (D65) and to L*a*b*; the features are L/100, a/100
+// and b/100, so that their Euclidean distance is Delta E (CIE 1976) / 100.
+// Must match labFeatures() in Rendering/glsl/vtkMLAAEdgeDetectionFS.glsl and
+// Rendering/glsl/vtkMLAAReconstructionFS.glsl.
+namespace Lab
+{
+/** sRGB transfer function inverted: a normalised channel (clamped at 0) to linear light. */
+template <typename Acc>
+Acc Linearise(Acc c)
+{
+  c = c > Acc(0) ? c : Acc(0);
+  return c <= Acc(0.04045) ? c / Acc(12.92) : std::pow((c + Acc(0.055)) / Acc(1.055), Acc(2.4));
+}
+
+/**
+ * Cube root of a positive finite x, without division or branches, so that loops over rows
+ * vectorise (several times faster than std::cbrt): a first guess of x^(-1/3) from the bits of
+ * the float (a magic constant minus a third of the bits, which divides the exponent by -3;
+ * under 7% off), Newton steps for the inverse cube root, y <- y (4 - x y^3) / 3, each of which
+ * doubles the correct digits (three in float, four in double: within 4e-7 and 1e-15 relative),
+ * then cbrt(x) = x y^2.
+ */
+template <typename Acc>
+Acc FastCbrt(Acc x)
+{
+  const float xf = static_cast<float>(x);
+  std::int32_t bits;
+  std::memcpy(&bits, &xf, sizeof(bits));
+  bits = 0x54a21d2a - static_cast<std::int32_t>(static_cast<float>(bits) * (1.0f / 3.0f));
+  float guess;
+  std::memcpy(&guess, &bits, sizeof(guess));
+  Acc y = static_cast<Acc>(guess);
+  constexpr int steps = sizeof(Acc) <= 4 ? 3 : 4;
+  for (int i = 0; i < steps; ++i)
+  {
+    y = y * (Acc(4) - x * y * y * y) * Acc(1.0 / 3.0);
+  }
+  return x * y * y;
+}
+
+/**
+ * a where c holds, else b, by the bits of the values: a select that compilers keep as one (a
+ * conditional expression around a float-to-integer conversion becomes a branch under the
+ * default floating-point trapping rules, which stops a loop from vectorising).
+ */
+template <typename Acc>
+Acc Select(bool c, Acc a, Acc b)
+{
+  using Bits = typename std::conditional<sizeof(Acc) == 4, std::uint32_t, std::uint64_t>::type;
+  Bits ba, bb;
+  std::memcpy(&ba, &a, sizeof(a));
+  std::memcpy(&bb, &b, sizeof(b));
+  const Bits mask = Bits(0) - static_cast<Bits>(c);
+  const Bits r = (ba & mask) | (bb & ~mask);
+  Acc out;
+  std::memcpy(&out, &r, sizeof(out));
+  return out;
+}
+
+/**
+ * The f of the L*a*b* definition. Both sides are computed and one is selected, so that a loop
+ * vectorises (the cube root of a value under the knee, never negative here, is finite and
+ * unused).
+ */
+template <typename Acc>
+Acc F(Acc t)
+{
+  constexpr double delta = 6.0 / 29.0;
+  const Acc root = FastCbrt(t);
+  const Acc linear = t * Acc(1.0 / (3.0 * delta * delta)) + Acc(4.0 / 29.0);
+  return Select(t > Acc(delta * delta * delta), root, linear);
+}
+
+/**
+ * Row k of the matrix from linear sRGB (D65) to CIE XYZ, divided by the white point's
+ * component k (0.95047, 1, 1.08883): XYZ relative to white.
+ */
+inline double RelativeXYZ(int k, int channel)
+{
+  static const double m[3][3] = { { 0.4124564, 0.3575761, 0.1804375 },
+    { 0.2126729, 0.7151522, 0.0721750 }, { 0.0193339, 0.1191920, 0.9503041 } };
+  static const double white[3] = { 0.95047, 1.0, 1.08883 };
+  return m[k][channel] / white[k];
+}
+
+/** From f(X), f(Y), f(Z) to the features L/100, a/100, b/100 (in place). */
+template <typename Acc>
+void FinishLab(Acc& fx, Acc& fy, Acc& fz)
+{
+  const Acc l = Acc(1.16) * fy - Acc(0.16);
+  const Acc a = Acc(5) * (fx - fy);
+  const Acc b = Acc(2) * (fy - fz);
+  fx = l;
+  fy = a;
+  fz = b;
+}
+
+/** Linear sRGB (D65) to the features L/100, a/100, b/100. */
+template <typename Acc>
+void FromLinear(Acc r, Acc g, Acc b, Acc& l, Acc& a, Acc& bb)
+{
+  Acc xyz[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    xyz[k] = F(static_cast<Acc>(RelativeXYZ(k, 0)) * r + static_cast<Acc>(RelativeXYZ(k, 1)) * g +
+      static_cast<Acc>(RelativeXYZ(k, 2)) * b);
+  }
+  FinishLab(xyz[0], xyz[1], xyz[2]);
+  l = xyz[0];
+  a = xyz[1];
+  bb = xyz[2];
+}
+}
+
+//------------------------------------------------------------------------------
 // Stage 1: features (typed). The values compared across each pixel boundary, normalised so that
 // the value range of the image is [0, 1].
 
@@ -157,7 +282,8 @@ using AccumulatorType = typename std::conditional<(sizeof(T) <= 2 ||
 /**
  * Reads the features of rows of pixels of type T: normalised as (value - lo) * inverseRange,
  * luma (Rec. 709, section 4.2.1; the first component of grey images), every channel (COLOR,
- * alpha included) or the depth (given per row, already normalised), then alpha. A pixel holding
+ * alpha included), the depth (given per row, already normalised) or CIELAB (LAB: L/100, a/100,
+ * b/100, namespace Lab), then alpha. A pixel holding
  * NaN or infinity gets NaN features, which are never an edge. For one-byte types the normalised
  * values (and their products with the luma weights) come from tables built once, which give the
  * same floats as the arithmetic.
@@ -181,6 +307,15 @@ public:
         this->Luma[0][index] = Acc(0.2126) * v;
         this->Luma[1][index] = Acc(0.7152) * v;
         this->Luma[2][index] = Acc(0.0722) * v;
+        const Acc linear = Lab::Linearise(v);
+        for (int k = 0; k < 3; ++k)
+        {
+          for (int channel = 0; channel < 3; ++channel)
+          {
+            this->XYZ[k][channel][index] =
+              static_cast<Acc>(Lab::RelativeXYZ(k, channel)) * linear;
+          }
+        }
       }
     }
   }
@@ -192,6 +327,11 @@ public:
   void Row(const T* p, int width, const double* depth, Acc* features) const
   {
     const int c = this->Layout.Components;
+    if (this->Layout.Mode == vtkMLAAOptions::LAB)
+    {
+      this->LabRow(p, width, features);
+      return;
+    }
     if (std::is_floating_point<T>::value)
     {
       // Non-finite pixels: NaN features.
@@ -246,6 +386,138 @@ public:
 private:
   static constexpr bool UseTables = sizeof(T) == 1;
 
+  // The first pixel of each run of equal pixels (all C components) of a row, in runStart;
+  // returns the number of runs.
+  template <int C>
+  static int FindRuns(const T* p, int width, int* runStart)
+  {
+    int runs = 0;
+    for (int x = 0; x < width; ++x)
+    {
+      const T* q = p + x * C;
+      bool same = x > 0;
+      for (int k = 0; k < C; ++k)
+      {
+        same = same && q[k] == q[k - C];
+      }
+      runStart[runs] = x;
+      runs += same ? 0 : 1;
+    }
+    return runs;
+  }
+
+  // LAB features (section 3.2 of Biri et al.): L/100, a/100, b/100 planes, then alpha. Grey
+  // images are grey sRGB (R = G = B). Plane by plane: XYZ relative to white (from tables for
+  // one-byte types), then f in branch-free loops, which vectorise, then L, a and b.
+  void LabRow(const T* p, int width, Acc* features) const
+  {
+    const int c = this->Layout.Components;
+    Acc* planes[3] = { features, features + width, features + 2 * static_cast<size_t>(width) };
+    const int second = c >= 3 ? 1 : 0; // grey: the one channel is R, G and B
+    const int third = c >= 3 ? 2 : 0;
+    // A pixel equal to the one before it takes its features: only the first pixel of each run
+    // of one colour (most of a rendered image is such runs) is converted, into the first
+    // `runs` entries of the planes, and the rows are expanded at the end. Run i starts at
+    // pixel runStart[i].
+    static thread_local std::vector<int> runStartStorage;
+    runStartStorage.resize(static_cast<size_t>(width) + 1);
+    int* runStart = runStartStorage.data();
+    int runs = 0;
+    switch (c)
+    {
+      case 1:
+        runs = this->FindRuns<1>(p, width, runStart);
+        break;
+      case 2:
+        runs = this->FindRuns<2>(p, width, runStart);
+        break;
+      case 3:
+        runs = this->FindRuns<3>(p, width, runStart);
+        break;
+      default:
+        runs = this->FindRuns<4>(p, width, runStart);
+        break;
+    }
+    runStart[runs] = width;
+    for (int i = 0; i < runs; ++i)
+    {
+      const T* q = p + static_cast<size_t>(runStart[i]) * c;
+      if (UseTables)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          planes[k][i] = this->XYZ[k][0][static_cast<unsigned char>(q[0])] +
+            this->XYZ[k][1][static_cast<unsigned char>(q[second])] +
+            this->XYZ[k][2][static_cast<unsigned char>(q[third])];
+        }
+      }
+      else
+      {
+        const Acc r = Lab::Linearise(this->Normalise(q[0]));
+        const Acc g = c >= 3 ? Lab::Linearise(this->Normalise(q[second])) : r;
+        const Acc b = c >= 3 ? Lab::Linearise(this->Normalise(q[third])) : r;
+        for (int k = 0; k < 3; ++k)
+        {
+          planes[k][i] = static_cast<Acc>(Lab::RelativeXYZ(k, 0)) * r +
+            static_cast<Acc>(Lab::RelativeXYZ(k, 1)) * g +
+            static_cast<Acc>(Lab::RelativeXYZ(k, 2)) * b;
+        }
+      }
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      Acc* plane = planes[k];
+      for (int i = 0; i < runs; ++i)
+      {
+        plane[i] = Lab::F(plane[i]);
+      }
+    }
+    for (int i = 0; i < runs; ++i)
+    {
+      Lab::FinishLab(planes[0][i], planes[1][i], planes[2][i]);
+    }
+    if (runs < width)
+    {
+      // Backwards, so that no run is overwritten before it is read (run i starts at or after
+      // pixel i).
+      for (int k = 0; k < 3; ++k)
+      {
+        Acc* plane = planes[k];
+        for (int i = runs - 1; i >= 0; --i)
+        {
+          std::fill(plane + runStart[i], plane + runStart[i + 1], plane[i]);
+        }
+      }
+    }
+    if (this->Layout.HasAlpha)
+    {
+      Acc* alpha = features + 3 * static_cast<size_t>(width);
+      for (int x = 0; x < width; ++x)
+      {
+        alpha[x] = this->Normalise(p[x * c + c - 1]);
+      }
+    }
+    if (std::is_floating_point<T>::value)
+    {
+      // Non-finite pixels: NaN features, which are never an edge and never unlike anything.
+      for (int x = 0; x < width; ++x)
+      {
+        bool finite = true;
+        for (int k = 0; k < c; ++k)
+        {
+          finite = finite && std::isfinite(static_cast<double>(p[x * c + k]));
+        }
+        if (!finite)
+        {
+          for (int k = 0; k < this->Layout.Count; ++k)
+          {
+            features[k * static_cast<size_t>(width) + x] = std::numeric_limits<Acc>::quiet_NaN();
+          }
+        }
+      }
+    }
+  }
+
   Acc Normalise(T v) const
   {
     if (UseTables)
@@ -296,6 +568,7 @@ private:
   Acc InverseRange;
   Acc Normalised[UseTables ? 256 : 1];
   Acc Luma[3][UseTables ? 256 : 1];
+  Acc XYZ[3][3][UseTables ? 256 : 1]; // [XYZ component][channel][value]: contributions
 };
 
 //------------------------------------------------------------------------------
@@ -358,13 +631,18 @@ struct EdgeSettings
 {
   double Threshold = 0.1;
   double LocalContrastFactor = 2.0; // 0: off
+  // How many leading features are compared together, by their Euclidean distance: 3 in LAB
+  // mode (Delta E / 100 from L, a, b, Biri et al. section 3.2), 1 otherwise (a plain difference).
+  int EuclideanFeatures = 1;
 };
 
 /**
  * The edgels of every pixel of edges.Extent (already allocated), from the features that
  * `readRow(y, features)` gives for each row y of it (layout.Count planes of
- * edges.Extent.Width() values, FeatureReader::Row). A boundary is an edge where the largest feature difference across it
- * is at least the threshold (and more than 0); with local contrast adaptation, only if factor
+ * edges.Extent.Width() values, FeatureReader::Row). The contrast across a boundary is the
+ * largest of the Euclidean distance of the first settings.EuclideanFeatures features and the
+ * differences of the others; the boundary is an edge where it is at least the threshold (and
+ * more than 0); with local contrast adaptation, only if factor
  * times that contrast is at least the contrast of every other boundary of its two pixels.
  * Boundaries outside the extent are not edges. Acc is float or double (AccumulatorType).
  */
@@ -726,6 +1004,7 @@ struct SliceSetup
   WeightSettings Weights;
   bool Dominant = true;
   bool PremultipliedAlpha = false;
+  bool Reconstruction = false; // vtkMLAAOptions::Reconstruction (stage 0)
   double Lo = 0.0; // normalisation: value -> (value - Lo) / (Hi - Lo)
   double Hi = 1.0;
 
@@ -738,17 +1017,239 @@ struct SliceSetup
     return Rect{ this->Output.X0, this->Output.X1 + 1, this->Output.Y0 - 1, this->Output.Y1 }
       .Intersect(this->Input);
   }
-  /** The rows the stages go through on one slice (edges, weights, blending), for progress. */
+  /**
+   * The rows the stages go through on one slice (reconstruction, edges, weights, blending), for
+   * progress.
+   */
   vtkIdType RowsOfWork() const
   {
-    return static_cast<vtkIdType>(this->Input.Height()) + this->WeightsExtent().Height() +
-      this->Output.Height();
+    return static_cast<vtkIdType>(this->Input.Height()) * (this->Reconstruction ? 2 : 1) +
+      this->WeightsExtent().Height() + this->Output.Height();
   }
 };
 
+//------------------------------------------------------------------------------
+// Stage 0 (optional): topological reconstruction (Biri et al., section 4), typed; runs before
+// the features when vtkMLAAOptions::Reconstruction is on, and its output replaces the input of
+// every later stage.
+
+/**
+ * Whether two pixels with LAB features (FeatureReader in LAB mode, `count` planes `plane`
+ * values apart) are unlike for reconstruction: Delta E / 100 at least the threshold (and more
+ * than 0), or, with alpha (count 4), the alpha difference likewise: the boundary between them
+ * would be a LAB edge before local contrast adaptation. NaN features (non-finite pixels) are
+ * never unlike anything. Distances are compared squared, which is the same test.
+ * Must match unlike() in Rendering/glsl/vtkMLAAReconstructionFS.glsl.
+ */
+template <typename Acc>
+bool Unlike(const Acc* p, const Acc* q, size_t plane, int count, Acc threshold2)
+{
+  const Acc d0 = p[0] - q[0];
+  const Acc d1 = p[plane] - q[plane];
+  const Acc d2 = p[2 * plane] - q[2 * plane];
+  const Acc e2 = d0 * d0 + d1 * d1 + d2 * d2;
+  if (e2 >= threshold2 && e2 > Acc(0))
+  {
+    return true;
+  }
+  if (count > 3)
+  {
+    const Acc da = p[3 * plane] - q[3 * plane];
+    const Acc a2 = da * da;
+    return a2 >= threshold2 && a2 > Acc(0);
+  }
+  return false;
+}
+
+/**
+ * Unlike for pixels first..last - 1 of a row of features `a` against `b` (the same row, or the
+ * one below or above, offset to the neighbour): `value` is or-ed into mask[x] where they are
+ * unlike. One branch-free loop per direction.
+ */
+template <typename Acc, bool Alpha>
+void UnlikeMasks(const Acc* a, const Acc* b, size_t plane, Acc threshold2, unsigned char value,
+  int first, int last, unsigned char* mask)
+{
+  const Acc* a1 = a + plane;
+  const Acc* a2 = a + 2 * plane;
+  const Acc* a3 = a + 3 * plane;
+  const Acc* b1 = b + plane;
+  const Acc* b2 = b + 2 * plane;
+  const Acc* b3 = b + 3 * plane;
+  for (int x = first; x < last; ++x)
+  {
+    const Acc d0 = a[x] - b[x];
+    const Acc d1 = a1[x] - b1[x];
+    const Acc d2 = a2[x] - b2[x];
+    const Acc e2 = d0 * d0 + d1 * d1 + d2 * d2;
+    bool unlike = (e2 >= threshold2) & (e2 > Acc(0));
+    if (Alpha)
+    {
+      const Acc da = a3[x] - b3[x];
+      const Acc a2d = da * da;
+      unlike = unlike | ((a2d >= threshold2) & (a2d > Acc(0)));
+    }
+    mask[x] |= unlike ? value : static_cast<unsigned char>(0);
+  }
+}
+
+/**
+ * Section 4.3: the reconstructed pixels of setup.Input into `output` (rows of
+ * setup.Input.Width() pixels, packed). `input` points at the first pixel of setup.Input (rows
+ * `inputRowStride` values apart); reads beyond setup.Input are clamped to it (the halo keeps
+ * those reads away from the output, and at the image border they are clamped as a GPU clamps
+ * texture reads). For each pixel A, X is the mask of its neighbours unlike A (Unlike, threshold
+ * setup.Edges.Threshold; bits as vtkMLAATopology). A is selected when
+ * vtkMLAATopology::GetSelectionTable() says so and the X pixels are pairwise not unlike (one
+ * colour: the shape); it then becomes the mean of its X pixels, every component, rounded to
+ * nearest for integer types. Every other pixel is copied. All decisions read the original
+ * pixels.
+ * Must match Rendering/glsl/vtkMLAAReconstructionFS.glsl.
+ */
+template <typename T>
+void Reconstruct(const SliceSetup& setup, const T* input, vtkIdType inputRowStride, T* output,
+  Progress& progress)
+{
+  using Acc = AccumulatorType<T>;
+  const Rect& in = setup.Input;
+  if (in.Empty())
+  {
+    return;
+  }
+  const int w = in.Width();
+  const int h = in.Height();
+  const int c = setup.Layout.Components;
+  const FeatureLayout layout = MakeFeatureLayout(vtkMLAAOptions::LAB, c);
+  const int count = layout.Count;
+  const size_t plane = static_cast<size_t>(w);
+  const FeatureReader<T, Acc> reader(
+    layout, static_cast<Acc>(setup.Lo), static_cast<Acc>(1.0 / (setup.Hi - setup.Lo)));
+  const Acc threshold = static_cast<Acc>(setup.Edges.Threshold);
+  const Acc threshold2 = threshold * threshold;
+  const unsigned char* selected = vtkMLAATopology::GetSelectionTable();
+  int offsets[8][2];
+  for (int bit = 0; bit < 8; ++bit)
+  {
+    vtkMLAATopology::GetNeighborOffset(bit, offsets[bit][0], offsets[bit][1]);
+  }
+  auto pixel = [&](int x, int y) { return input + y * inputRowStride + static_cast<vtkIdType>(x) * c; };
+
+  vtkSMPTools::For(0, h, RowsPerTask, [&](vtkIdType begin, vtkIdType end) {
+    if (progress.Aborted())
+    {
+      return;
+    }
+    // The LAB features of rows begin - 1 .. end (clamped), row i at index i + 1 - begin.
+    const int first = static_cast<int>(begin) - 1;
+    const int rows = static_cast<int>(end - begin) + 2;
+    const size_t rowSize = plane * count;
+    std::unique_ptr<Acc[]> band(new Acc[rowSize * rows]);
+    for (int i = 0; i < rows; ++i)
+    {
+      const int y = std::min(std::max(first + i, 0), h - 1);
+      reader.Row(pixel(0, y), w, nullptr, band.get() + rowSize * i);
+    }
+    std::vector<unsigned char> masks(static_cast<size_t>(w));
+    for (vtkIdType row = begin; row < end; ++row)
+    {
+      const int y = static_cast<int>(row);
+      T* out = output + static_cast<size_t>(y) * w * c;
+      std::copy(pixel(0, y), pixel(0, y) + static_cast<size_t>(w) * c, out);
+      // The features of the rows below, at and above y.
+      const Acc* around[3] = { band.get() + rowSize * (y - first - 1),
+        band.get() + rowSize * (y - first), band.get() + rowSize * (y - first + 1) };
+      // The masks of the unlike neighbours: direction by direction over the inner columns
+      // (branch-free loops that vectorise), then the first and last columns, whose reads are
+      // clamped.
+      unsigned char* mask = masks.data();
+      std::fill(mask, mask + w, 0);
+      for (int bit = 0; bit < 8 && w > 2; ++bit)
+      {
+        const Acc* a = around[1];
+        const Acc* b = around[1 + offsets[bit][1]] + offsets[bit][0];
+        const unsigned char value = static_cast<unsigned char>(1 << bit);
+        if (count > 3)
+        {
+          UnlikeMasks<Acc, true>(a, b, plane, threshold2, value, 1, w - 1, mask);
+        }
+        else
+        {
+          UnlikeMasks<Acc, false>(a, b, plane, threshold2, value, 1, w - 1, mask);
+        }
+      }
+      for (int x : { 0, w - 1 })
+      {
+        mask[x] = 0; // (a single column is done twice, to the same result)
+        for (int bit = 0; bit < 8; ++bit)
+        {
+          const int nx = std::min(std::max(x + offsets[bit][0], 0), w - 1);
+          mask[x] |= Unlike(around[1] + x, around[1 + offsets[bit][1]] + nx, plane, count, threshold2)
+            ? static_cast<unsigned char>(1 << bit)
+            : 0;
+        }
+      }
+      for (int x = 0; x < w; ++x)
+      {
+        if (!selected[mask[x]])
+        {
+          continue;
+        }
+        int neighbourX[8];
+        const Acc* features[8];
+        for (int bit = 0; bit < 8; ++bit)
+        {
+          neighbourX[bit] = std::min(std::max(x + offsets[bit][0], 0), w - 1);
+          features[bit] = around[1 + offsets[bit][1]] + neighbourX[bit];
+        }
+        const int unlike = mask[x];
+        // The shape is one colour: its pixels are pairwise alike.
+        bool oneColour = true;
+        for (int i = 0; i < 8 && oneColour; ++i)
+        {
+          for (int j = i + 1; j < 8 && oneColour; ++j)
+          {
+            if (((unlike >> i) & (unlike >> j) & 1) &&
+              Unlike(features[i], features[j], plane, count, threshold2))
+            {
+              oneColour = false;
+            }
+          }
+        }
+        if (!oneColour)
+        {
+          continue;
+        }
+        // The mean of the shape's pixels, every component.
+        double sum[4] = { 0, 0, 0, 0 };
+        int n = 0;
+        for (int bit = 0; bit < 8; ++bit)
+        {
+          if ((unlike >> bit) & 1)
+          {
+            const int ny = std::min(std::max(y + offsets[bit][1], 0), h - 1);
+            const T* q = pixel(neighbourX[bit], ny);
+            for (int k = 0; k < c; ++k)
+            {
+              sum[k] += static_cast<double>(q[k]);
+            }
+            ++n;
+          }
+        }
+        for (int k = 0; k < c; ++k)
+        {
+          out[static_cast<size_t>(x) * c + k] = ConvertBlended<T>(sum[k] / n);
+        }
+      }
+    }
+    progress.RowsDone(end - begin);
+  });
+}
+
+//------------------------------------------------------------------------------
 /** The full-size buffers of the stages, reused from slice to slice. */
 struct SliceBuffers
 {
+  ByteBuffer Reconstructed; // the reconstructed pixels of the slice, with Reconstruction only
   EdgesBuffer Edges;
   WeightsBuffer Weights;
 };
@@ -756,13 +1257,15 @@ struct SliceBuffers
 /** Wall-clock seconds spent in each stage, summed over the slices run with it. */
 struct StageTimes
 {
+  double Reconstruction = 0.0;   // with vtkMLAAOptions::Reconstruction only
   double FeaturesAndEdges = 0.0; // features are read row by row inside edge detection
   double BlendingWeights = 0.0;
   double Blending = 0.0; // neighbourhood blending or the debug image
 };
 
 /**
- * The four stages on one slice of an image of type T: `input` points at the first pixel of
+ * The stages on one slice of an image of type T (reconstruction first, when
+ * setup.Reconstruction): `input` points at the first pixel of
  * setup.Input (rows `inputRowStride` values apart), `output` (or `debug`, for a debug image) at
  * the first pixel of setup.Output (rows packed). `times`, if given, collects the stages' times.
  */
@@ -784,6 +1287,22 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
   using Acc = AccumulatorType<T>;
   const Rect& in = setup.Input;
   const int c = setup.Layout.Components;
+
+  // Stage 0: reconstruction, into a copy of the available pixels that then replaces the input.
+  if (setup.Reconstruction)
+  {
+    buffers.Reconstructed.Reserve(
+      sizeof(T) * static_cast<size_t>(c) * in.Width() * std::max(in.Height(), 0));
+    T* reconstructed = reinterpret_cast<T*>(buffers.Reconstructed.Get());
+    Reconstruct<T>(setup, input, inputRowStride, reconstructed, progress);
+    lap(&StageTimes::Reconstruction);
+    if (progress.Aborted())
+    {
+      return;
+    }
+    input = reconstructed;
+    inputRowStride = static_cast<vtkIdType>(in.Width()) * c;
+  }
   auto pixel = [&](int x, int y) {
     return input + static_cast<vtkIdType>(y - in.Y0) * inputRowStride +
       static_cast<vtkIdType>(x - in.X0) * c;

@@ -2,6 +2,7 @@
 
 #include "vtkMLAAAreaTexture.h"
 #include "vtkMLAAOptions.h"
+#include "vtkMLAATopology.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -20,7 +21,9 @@
 #include "vtkMLAAEdgeDetectionFS.h"
 #include "vtkMLAALineLengthsFS.h"
 #include "vtkMLAALineLengthsInitFS.h"
+#include "vtkMLAALab.h"
 #include "vtkMLAANeighborhoodBlendingFS.h"
+#include "vtkMLAAReconstructionFS.h"
 
 #include <string>
 
@@ -209,6 +212,21 @@ void vtkOpenGLMLAAPass::PrepareTargets(
       DeleteObject(lengths, renWin);
     }
   }
+  // The reconstructed image (vtkMLAAOptions::Reconstruction), in the colour texture's format.
+  if (this->Options->GetReconstruction())
+  {
+    if (!this->ReconstructedTexture)
+    {
+      this->ReconstructedTexture = NewTexture(renWin);
+    }
+    reallocated |= AllocateColorTarget(this->ReconstructedTexture, width, height, 4,
+      floatColor ? VTK_FLOAT : VTK_UNSIGNED_CHAR, false);
+  }
+  else if (this->ReconstructedTexture)
+  {
+    DeleteObject(this->ReconstructedTexture, renWin);
+    reallocated = true;
+  }
   if (reallocated)
   {
     // Framebuffer objects remember their attachments: start afresh with the new textures.
@@ -333,6 +351,8 @@ bool vtkOpenGLMLAAPass::ReadyQuad(vtkOpenGLRenderWindow* renWin, ShaderVariant& 
   {
     std::string source = fs;
     vtkShaderProgram::Substitute(source, "//VTK::MLAA::Dec", defines, false);
+    // The CIELAB conversion shared by the shaders that compare colours in Lab.
+    vtkShaderProgram::Substitute(source, "//VTK::MLAA::Lab", vtkMLAALab, false);
     quad = new vtkOpenGLQuadHelper(renWin, nullptr, source.c_str(), "");
     variant.Defines = defines;
   }
@@ -351,7 +371,7 @@ bool vtkOpenGLMLAAPass::ReadyQuad(vtkOpenGLRenderWindow* renWin, ShaderVariant& 
 //------------------------------------------------------------------------------
 void vtkOpenGLMLAAPass::SetEdgeUniforms(vtkShaderProgram* program)
 {
-  program->SetUniformi("colorTexture", this->ColorTexture->GetTextureUnit());
+  program->SetUniformi("colorTexture", this->GetSourceTexture()->GetTextureUnit());
   program->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
   program->SetUniformf("threshold", static_cast<float>(this->Options->GetThreshold()));
   program->SetUniformf(
@@ -390,7 +410,8 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
     return false;
   }
   vtkShaderProgram* program = this->EdgesQuad.Quad->Program;
-  this->ColorTexture->Activate();
+  vtkTextureObject* source = this->GetSourceTexture();
+  source->Activate();
   this->DepthTexture->Activate();
   this->SetEdgeUniforms(program);
   this->EdgesQuad.Quad->Render();
@@ -411,7 +432,7 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
     this->LocalContrastQuad.Quad->Render();
   }
   this->DepthTexture->Deactivate();
-  this->ColorTexture->Deactivate();
+  source->Deactivate();
 
   // Line lengths by recursive doubling (LineLengths), on the same pixels.
   vtkTextureObject* lengths = nullptr;
@@ -556,7 +577,8 @@ bool vtkOpenGLMLAAPass::Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int w
     return false;
   }
   vtkShaderProgram* program = this->BlendQuad.Quad->Program;
-  this->ColorTexture->Activate();
+  vtkTextureObject* source = this->GetSourceTexture();
+  source->Activate();
   if (!inPlace)
   {
     this->DepthTexture->Activate();
@@ -564,7 +586,7 @@ bool vtkOpenGLMLAAPass::Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int w
   }
   this->EdgesTexture->Activate();
   this->WeightsTexture->Activate();
-  program->SetUniformi("colorTexture", this->ColorTexture->GetTextureUnit());
+  program->SetUniformi("colorTexture", source->GetTextureUnit());
   program->SetUniformi("edgesTexture", this->EdgesTexture->GetTextureUnit());
   program->SetUniformi("weightsTexture", this->WeightsTexture->GetTextureUnit());
   this->BlendQuad.Quad->Render();
@@ -574,6 +596,81 @@ bool vtkOpenGLMLAAPass::Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int w
   {
     this->DepthTexture->Deactivate();
   }
+  source->Deactivate();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkOpenGLMLAAPass::GetSourceTexture()
+{
+  return this->Options->GetReconstruction() && this->ReconstructedTexture
+    ? this->ReconstructedTexture
+    : this->ColorTexture;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLMLAAPass::SetReconstructionUniforms(vtkShaderProgram* program)
+{
+  program->SetUniformi("colorTexture", this->ColorTexture->GetTextureUnit());
+  program->SetUniformf("threshold", static_cast<float>(this->Options->GetThreshold()));
+  // The selection rule of section 4.2 from its one generator, as 256 bits.
+  unsigned int bits[8];
+  vtkMLAATopology::GetSelectionBits(bits);
+  int words[8];
+  for (int i = 0; i < 8; ++i)
+  {
+    words[i] = static_cast<int>(bits[i]);
+  }
+  program->SetUniform1iv("selectionTable", 8, words);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLMLAAPass::Reconstruct(
+  vtkOpenGLRenderWindow* renWin, int width, int height, bool useAlpha)
+{
+  vtkOpenGLState* ostate = renWin->GetState();
+  vtkOpenGLFramebufferObject* fbo = this->MLAAFramebuffer;
+  fbo->Bind();
+  fbo->AddColorAttachment(0, this->ReconstructedTexture);
+  fbo->ActivateDrawBuffer(0);
+  fbo->StartNonOrtho(width, height);
+  ostate->vtkglViewport(0, 0, width, height);
+  ostate->vtkglScissor(0, 0, width, height);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  if (!this->ReadyQuad(renWin, this->ReconstructionQuad, vtkMLAAReconstructionFS,
+        Define("MLAA_USE_ALPHA", useAlpha)))
+  {
+    return false;
+  }
+  this->ColorTexture->Activate();
+  this->SetReconstructionUniforms(this->ReconstructionQuad.Quad->Program);
+  this->ReconstructionQuad.Quad->Render();
+  this->ColorTexture->Deactivate();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLMLAAPass::WriteBackReconstruction(
+  vtkOpenGLRenderWindow* renWin, int x, int y, int width, int height, bool useAlpha)
+{
+  // The target holds the delegate's image; the blending writes back only the pixels it
+  // blends, so the reconstructed ones are written here first (the others are discarded).
+  vtkOpenGLState* ostate = renWin->GetState();
+  ostate->vtkglViewport(x, y, width, height);
+  ostate->vtkglScissor(x, y, width, height);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  if (!this->ReadyQuad(renWin, this->WriteBackQuad, vtkMLAAReconstructionFS,
+        Define("MLAA_USE_ALPHA", useAlpha) + Define("MLAA_WRITE_BACK", true)))
+  {
+    return false;
+  }
+  this->ColorTexture->Activate();
+  this->SetReconstructionUniforms(this->WriteBackQuad.Quad->Program);
+  this->WriteBackQuad.Quad->Render();
   this->ColorTexture->Deactivate();
   return true;
 }
@@ -701,9 +798,18 @@ void vtkOpenGLMLAAPass::Render(const vtkRenderState* s)
       steps->SetOverlayPass(overlay);
     }
 
+    // Topological reconstruction (Biri et al., section 4.3): before edge detection, into
+    // ReconstructedTexture, which the later passes read instead of ColorTexture.
+    const bool reconstruction = this->Options->GetReconstruction();
     ostate->PushFramebufferBindings();
-    const bool computed = this->ComputeEdgesAndWeights(renWin, width, height, useAlpha);
+    bool computed = !reconstruction || this->Reconstruct(renWin, width, height, useAlpha);
+    computed = computed && this->ComputeEdgesAndWeights(renWin, width, height, useAlpha);
     ostate->PopFramebufferBindings();
+    if (computed && reconstruction && inPlace &&
+      this->Options->GetDebugOutput() == vtkMLAAOptions::NO_DEBUG_OUTPUT)
+    {
+      computed = this->WriteBackReconstruction(renWin, x, y, width, height, useAlpha);
+    }
     done =
       computed && this->Blend(renWin, x, y, width, height, composite, straightAlpha, inPlace);
   }
@@ -724,9 +830,9 @@ void vtkOpenGLMLAAPass::Render(const vtkRenderState* s)
 void vtkOpenGLMLAAPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
-  for (ShaderVariant* variant :
-    { &this->EdgesQuad, &this->LocalContrastQuad, &this->WeightsQuad, &this->BlendQuad,
-      &this->LengthsInitQuad, &this->LengthsQuad })
+  for (ShaderVariant* variant : { &this->ReconstructionQuad, &this->WriteBackQuad,
+         &this->EdgesQuad, &this->LocalContrastQuad, &this->WeightsQuad, &this->BlendQuad,
+         &this->LengthsInitQuad, &this->LengthsQuad })
   {
     variant->Release(w);
   }
@@ -734,7 +840,8 @@ void vtkOpenGLMLAAPass::ReleaseGraphicsResources(vtkWindow* w)
   DeleteObject(this->MLAAFramebuffer, w);
   for (vtkTextureObject** texture : { &this->ColorTexture, &this->DepthTexture,
          &this->EdgesTexture, &this->WeightsTexture, &this->MaskTexture, &this->AreaTexture,
-         &this->DiagonalAreaTexture, &this->LengthsTextures[0], &this->LengthsTextures[1] })
+         &this->DiagonalAreaTexture, &this->LengthsTextures[0], &this->LengthsTextures[1],
+         &this->ReconstructedTexture })
   {
     DeleteObject(*texture, w);
   }
@@ -753,7 +860,8 @@ vtkIdType vtkOpenGLMLAAPass::GetTargetMemorySize()
   const int colorBytes = (this->ColorTexture && this->ColorTexture->GetVTKDataType() == VTK_FLOAT)
     ? 16
     : 4;
-  return TextureBytes(this->ColorTexture, colorBytes) + TextureBytes(this->DepthTexture, 4) +
+  return TextureBytes(this->ColorTexture, colorBytes) +
+    TextureBytes(this->ReconstructedTexture, colorBytes) + TextureBytes(this->DepthTexture, 4) +
     this->GetMLAATargetMemorySize() + TextureBytes(this->MaskTexture, 2) +
     TextureBytes(this->AreaTexture, 8) + TextureBytes(this->DiagonalAreaTexture, 12) +
     TextureBytes(this->LengthsTextures[0], 8) + TextureBytes(this->LengthsTextures[1], 8);

@@ -9,7 +9,11 @@
  * and for renderers that are composited over lower layers (below), the delegate is rendered
  * into a colour and a depth texture of the pass instead, and every pixel and its depth are
  * written back. The passes:
- * 1. edge detection into an RG8 edges texture (luma, colour or the delegate's depth); pixels
+ * 0. with vtkMLAAOptions::Reconstruction only, topological reconstruction (Biri et al.,
+ *    "Morphological antialiasing and topological reconstruction", section 4) into a copy of the
+ *    colour texture, which the later passes read instead; the selection table comes from
+ *    vtkMLAATopology. In place, the reconstructed pixels are written back too;
+ * 1. edge detection into an RG8 edges texture (luma, colour, CIELAB or the delegate's depth); pixels
  *    without an edge are marked in a depth buffer so that the second pass skips them (the
  *    chapter's stencil trick); with a LocalContrastFactor, a second run of the edge shader on
  *    the edge pixels only drops edges much fainter than a neighbouring one;
@@ -208,9 +212,9 @@ public:
 
   /**
    * Bytes of GPU memory held by the pass's render targets at the last render (the copy of the
-   * delegate's colour, and of its depth when the pass renders it into its own textures, edges,
-   * blending weights, the pixel mask, the area textures and, with recursive doubling, the two
-   * line-lengths textures).
+   * delegate's colour, its reconstructed copy with vtkMLAAOptions::Reconstruction, and of its
+   * depth when the pass renders it into its own textures, edges, blending weights, the pixel
+   * mask, the area textures and, with recursive doubling, the two line-lengths textures).
    */
   vtkIdType GetTargetMemorySize();
 
@@ -257,6 +261,17 @@ private:
     bool straightAlpha, bool inPlace);
   // The uniforms of both edge detection programs.
   void SetEdgeUniforms(vtkShaderProgram* program);
+  // The image the edge detection and the blending read: ReconstructedTexture with
+  // vtkMLAAOptions::Reconstruction, else ColorTexture.
+  vtkTextureObject* GetSourceTexture();
+  // Pass 0, topological reconstruction (vtkMLAAReconstructionFS), into ReconstructedTexture.
+  bool Reconstruct(vtkOpenGLRenderWindow* renWin, int width, int height, bool useAlpha);
+  // In place, the reconstructed pixels drawn into the target viewport before the blending
+  // (which writes back only the pixels it blends).
+  bool WriteBackReconstruction(
+    vtkOpenGLRenderWindow* renWin, int x, int y, int width, int height, bool useAlpha);
+  // The uniforms of both reconstruction programs (the selection table of vtkMLAATopology).
+  void SetReconstructionUniforms(vtkShaderProgram* program);
 
   // A full-screen quad and the #defines its fragment shader was built with: the options that
   // change a shader's work select a compile-time variant of its one .glsl source.
@@ -282,7 +297,10 @@ private:
   vtkTextureObject* AreaTexture = nullptr;
   vtkTextureObject* DiagonalAreaTexture = nullptr;
   vtkTextureObject* LengthsTextures[2] = { nullptr, nullptr }; // RGBA16F, ping-pong
+  vtkTextureObject* ReconstructedTexture = nullptr; // with vtkMLAAOptions::Reconstruction only
   int AreaTextureMaxDistance = 0;
+  ShaderVariant ReconstructionQuad;
+  ShaderVariant WriteBackQuad;
   ShaderVariant EdgesQuad;
   ShaderVariant LocalContrastQuad;
   ShaderVariant WeightsQuad;

@@ -7,7 +7,8 @@
 //
 // Compile-time variants (vtkOpenGLMLAAPass prepends the #defines in place of //VTK::MLAA::Dec
 // and rebuilds the program when the options change, so no pixel pays for a run-time branch):
-//   MLAA_EDGE_DETECTION   0 luma, 1 colour, 2 depth (vtkMLAAOptions::EdgeDetection)
+//   MLAA_EDGE_DETECTION   0 luma, 1 colour, 2 depth, 3 CIELAB (vtkMLAAOptions::EdgeDetection;
+//                         Lab: Delta E / 100 of Biri et al., section 3.2, vtkMLAALab.glsl)
 //   MLAA_USE_ALPHA        defined: a change in alpha alone is an edge too (the result keeps
 //                         alpha: vtkOpenGLMLAAPass::KeepAlpha, or a composited layer)
 //   MLAA_LOCAL_CONTRAST   defined: the local contrast adaptation pass (below)
@@ -37,6 +38,8 @@ uniform float localContrastFactor; // vtkMLAAOptions::LocalContrastFactor (> 0 h
 
 // Rec. 709 luma weights.
 const vec3 lumaWeights = vec3(0.2126, 0.7152, 0.0722);
+
+//VTK::MLAA::Lab
 
 bool isFiniteColor(vec4 c)
 {
@@ -71,6 +74,8 @@ float contrast(vec4 a, float da, ivec2 q)
   return max(c, max(kept(d.r), max(kept(d.g), kept(d.b))));
 #elif MLAA_EDGE_DETECTION == 2
   return max(c, kept(abs(da - texelFetch(depthTexture, q, 0).r)));
+#elif MLAA_EDGE_DETECTION == 3
+  return max(c, kept(distance(labFeatures(a.rgb), labFeatures(b.rgb))));
 #else
   return max(c, kept(abs(dot(a.rgb, lumaWeights) - dot(b.rgb, lumaWeights))));
 #endif

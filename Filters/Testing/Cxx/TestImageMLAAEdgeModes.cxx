@@ -2,8 +2,13 @@
 // find; depth edges follow a depth image instead of the colours; alpha edges give a silhouette
 // over a transparent background a soft alpha border; the threshold decides how faint an edge may
 // be; zero threshold means any difference; local contrast adaptation drops faint edges next to
-// strong ones only.
+// strong ones only. Lab edges (Biri et al. section 3.2) find red against blue of equal luma,
+// which luma edges miss; the conversion gives reference CIELAB values; the contrast is
+// Delta E / 100 (an edge appears just below a reference Delta E and not just above it, with and
+// without alpha).
 #include "vtkMLAATestUtilities.h"
+
+#include "vtkMLAAStages.h"
 
 using namespace vtkMLAATest;
 
@@ -189,6 +194,175 @@ void LocalContrast()
   MLAA_CHECK(ChangedPixels(input, RunMLAA(input, off)) > 0);
   MLAA_CHECK(ChangedPixels(input, RunMLAA(input)) == 0);
 }
+
+// Reference CIELAB (L, a, b) of an sRGB colour in [0, 1], in double precision with std::cbrt.
+void ReferenceLab(const double rgb[3], double lab[3])
+{
+  double lin[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    const double c = std::max(rgb[k], 0.0);
+    lin[k] = c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+  }
+  const double xyz[3] = {
+    (0.4124564 * lin[0] + 0.3575761 * lin[1] + 0.1804375 * lin[2]) / 0.95047,
+    0.2126729 * lin[0] + 0.7151522 * lin[1] + 0.0721750 * lin[2],
+    (0.0193339 * lin[0] + 0.1191920 * lin[1] + 0.9503041 * lin[2]) / 1.08883
+  };
+  double f[3];
+  const double d = 6.0 / 29.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    f[k] = xyz[k] > d * d * d ? std::cbrt(xyz[k]) : xyz[k] / (3.0 * d * d) + 4.0 / 29.0;
+  }
+  lab[0] = 116.0 * f[1] - 16.0;
+  lab[1] = 500.0 * (f[0] - f[1]);
+  lab[2] = 200.0 * (f[1] - f[2]);
+}
+
+double ReferenceDeltaE(const double p[3], const double q[3])
+{
+  double a[3], b[3];
+  ReferenceLab(p, a);
+  ReferenceLab(q, b);
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+    (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+void Lab()
+{
+  // The conversion: sRGB red and blue against published L*a*b* values, and the stage's fast
+  // cube root against std::cbrt.
+  struct Known
+  {
+    double Rgb[3];
+    double Lab[3];
+  };
+  for (const Known& known : { Known{ { 1, 0, 0 }, { 53.24, 80.09, 67.20 } },
+         Known{ { 0, 0, 1 }, { 32.30, 79.19, -107.86 } },
+         Known{ { 1, 1, 1 }, { 100.0, 0.0, 0.0 } } })
+  {
+    for (int precision = 0; precision < 2; ++precision)
+    {
+      double lab[3];
+      if (precision == 0)
+      {
+        float l, a, b;
+        vtkMLAAStages::Lab::FromLinear(vtkMLAAStages::Lab::Linearise(float(known.Rgb[0])),
+          vtkMLAAStages::Lab::Linearise(float(known.Rgb[1])),
+          vtkMLAAStages::Lab::Linearise(float(known.Rgb[2])), l, a, b);
+        lab[0] = l;
+        lab[1] = a;
+        lab[2] = b;
+      }
+      else
+      {
+        vtkMLAAStages::Lab::FromLinear(vtkMLAAStages::Lab::Linearise(known.Rgb[0]),
+          vtkMLAAStages::Lab::Linearise(known.Rgb[1]), vtkMLAAStages::Lab::Linearise(known.Rgb[2]),
+          lab[0], lab[1], lab[2]);
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        if (!MLAA_CHECK(std::abs(100.0 * lab[k] - known.Lab[k]) <= 0.05))
+        {
+          std::cerr << "Lab component " << k << ": " << 100.0 * lab[k] << " instead of "
+                    << known.Lab[k] << std::endl;
+        }
+      }
+    }
+  }
+  double worstFloat = 0.0, worstDouble = 0.0;
+  for (double x = 0.008; x <= 1.2; x *= 1.01)
+  {
+    const double exact = std::cbrt(x);
+    worstFloat = std::max(worstFloat,
+      std::abs(vtkMLAAStages::Lab::FastCbrt(static_cast<float>(x)) - exact) / exact);
+    worstDouble = std::max(worstDouble, std::abs(vtkMLAAStages::Lab::FastCbrt(x) - exact) / exact);
+  }
+  MLAA_CHECK(worstFloat < 1e-6);
+  MLAA_CHECK(worstDouble < 1e-12);
+
+  // Red against blue of (nearly) equal luma: 0.2126 * 87 / 255 = 0.0725 against 0.0722. Luma
+  // finds no edge, Lab finds the vertical boundary (Delta E 176).
+  auto redBlue = MakeImage(16, 8, 3);
+  FillImage(redBlue, [](int x, int, int, int k) {
+    return x < 8 ? (k == 0 ? 87.0 : 0.0) : (k == 2 ? 255.0 : 0.0);
+  });
+  vtkNew<vtkMLAAOptions> options;
+  options->SetDebugOutputToEdges();
+  auto lumaEdges = RunMLAA(redBlue, options);
+  options->SetEdgeDetectionToLab();
+  auto labEdges = RunMLAA(redBlue, options);
+  for (int y = 0; y < 8; ++y)
+  {
+    for (int x = 0; x < 16; ++x)
+    {
+      MLAA_CHECK(GetValue(lumaEdges, x, y, 0) == 0.0 && GetValue(lumaEdges, x, y, 1) == 0.0);
+      MLAA_CHECK(GetValue(labEdges, x, y, 0) == (x == 8 ? 255.0 : 0.0));
+      MLAA_CHECK(GetValue(labEdges, x, y, 1) == 0.0);
+    }
+  }
+
+  // The contrast is the reference Delta E / 100: an edge at a threshold just below it, none
+  // just above, for a few colour pairs, in 8-bit and float images, with and without alpha
+  // (whose difference here is below both thresholds).
+  const double pairs[][2][3] = { { { 200, 30, 40 }, { 120, 110, 150 } },
+    { { 128, 128, 128 }, { 100, 100, 100 } }, { { 10, 200, 30 }, { 20, 190, 60 } },
+    { { 250, 250, 240 }, { 255, 255, 255 } } };
+  for (const auto& pair : pairs)
+  {
+    double p[3], q[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      p[k] = pair[0][k] / 255.0;
+      q[k] = pair[1][k] / 255.0;
+    }
+    const double contrast = ReferenceDeltaE(p, q) / 100.0;
+    MLAA_CHECK(contrast > 0.01 && contrast < 0.99); // thresholds lie in [0, 1]
+    for (int type : { VTK_UNSIGNED_CHAR, VTK_FLOAT })
+    {
+      for (int components : { 3, 4 })
+      {
+        auto image = MakeImage(8, 4, components, type);
+        FillImage(image, [&](int x, int, int, int k) {
+          const double v = k == 3 ? (x < 4 ? 255.0 : 254.0) : pair[x < 4 ? 0 : 1][k];
+          return type == VTK_FLOAT ? v / 255.0 : v;
+        });
+        for (double offset : { -1e-4, 1e-4 })
+        {
+          options->SetThreshold(contrast + offset);
+          auto edges = RunMLAA(image, options);
+          const bool edge = GetValue(edges, 4, 1, 0) == 255.0;
+          if (!MLAA_CHECK(edge == (offset < 0.0)))
+          {
+            std::cerr << "Delta E " << 100.0 * contrast << ": threshold " << contrast + offset
+                      << (edge ? " finds an edge" : " finds no edge") << std::endl;
+          }
+        }
+      }
+    }
+  }
+  options->SetThreshold(0.1);
+
+  // Grey images are grey sRGB: the same edges as the RGB image with R = G = B.
+  auto grey = MakeImage(24, 16, 1);
+  FillImage(grey, [](int x, int y, int, int) { return Inside(x, y) ? 180.0 : 90.0; });
+  auto greyRgb = MakeImage(24, 16, 3);
+  FillImage(greyRgb, [](int x, int y, int, int) { return Inside(x, y) ? 180.0 : 90.0; });
+  options->SetDebugOutputToNone();
+  auto greyOut = RunMLAA(grey, options);
+  auto greyRgbOut = RunMLAA(greyRgb, options);
+  bool same = true;
+  for (int y = 0; y < 16; ++y)
+  {
+    for (int x = 0; x < 24; ++x)
+    {
+      same = same && GetValue(greyOut, x, y) == GetValue(greyRgbOut, x, y, 1);
+    }
+  }
+  MLAA_CHECK(same);
+  MLAA_CHECK(ChangedPixels(grey, greyOut) > 5);
+}
 }
 
 int TestImageMLAAEdgeModes(int, char*[])
@@ -198,5 +372,6 @@ int TestImageMLAAEdgeModes(int, char*[])
   Alpha();
   Threshold();
   LocalContrast();
+  Lab();
   return Result();
 }

@@ -1,5 +1,5 @@
 // A seeded random test of vtkImageMLAA (1000 cases; --seed N for another set): random scalar types, component counts, sizes (down to
-// one pixel), extents that do not start at 0, volumes, random options (every edge mode, search
+// one pixel), extents that do not start at 0, volumes, random options (every edge mode, Lab included, reconstruction, search
 // length, diagonals, local contrast, blending, alpha convention, value range), pictures with
 // flat areas, edges and noise, NaN and infinity in float images; each run whole and streamed in
 // random pieces. The streamed result must equal the whole one, values must stay within the
@@ -84,7 +84,9 @@ void RandomOptions(std::mt19937& random, vtkMLAAOptions* options, vtkImageMLAA* 
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   options->SetThreshold(random() % 4 == 0 ? 0.0 : 0.02 + 0.3 * unit(random));
   options->SetLocalContrastFactor(random() % 3 == 0 ? 0.0 : 1.0 + 3.0 * unit(random));
-  options->SetEdgeDetection(random() % 2 ? vtkMLAAOptions::LUMA : vtkMLAAOptions::COLOR);
+  const int modes[] = { vtkMLAAOptions::LUMA, vtkMLAAOptions::COLOR, vtkMLAAOptions::LAB };
+  options->SetEdgeDetection(modes[random() % 3]);
+  options->SetReconstruction(random() % 3 == 0);
   options->SetMaxSearchSteps(1 + static_cast<int>(random() % 12));
   options->SetDiagonalDetection(random() % 2 == 0);
   options->SetDominantDirectionBlending(random() % 2 == 0);

@@ -2,7 +2,8 @@
 // volumes. The same picture, stored in each type (values lo + n (hi - lo) of the type's range, or
 // n for floating point), gives the same normalised result as the 8-bit image within 1/255; the
 // output keeps the input's type and components; each z slice of a volume is antialiased on its
-// own.
+// own. All of this in luma mode (the default), in Lab mode, and in Lab mode with reconstruction
+// (a one-pixel diagonal line with a gap is added to the picture, which reconstruction closes).
 #include "vtkMLAATestUtilities.h"
 
 #include <limits>
@@ -23,6 +24,10 @@ double Picture(int x, int y, int z, int k, int components)
     return 0.99;
   }
   const bool inside = y < 4 + (x + 2 * z) / 4;
+  if (!inside && x - y == 6 && x > 12 && x != 18)
+  {
+    return 0.6 + 0.1 * k; // a thin diagonal line with a gap at (18, 12), above the staircase
+  }
   return inside ? 0.85 - 0.1 * k : 0.15 + 0.05 * k;
 }
 
@@ -52,15 +57,15 @@ vtkSmartPointer<vtkImageData> MakePicture(int type, int components, int depth, d
 }
 
 template <typename T>
-void CheckType(int type)
+void CheckType(int type, vtkMLAAOptions* options)
 {
   double lo, hi;
   Range<T>(lo, hi);
   for (int components = 1; components <= 4; ++components)
   {
-    auto reference = RunMLAA(MakePicture(VTK_UNSIGNED_CHAR, components, 1, 0.0, 255.0));
+    auto reference = RunMLAA(MakePicture(VTK_UNSIGNED_CHAR, components, 1, 0.0, 255.0), options);
     auto input = MakePicture(type, components, 1, lo, hi);
-    auto output = RunMLAA(input);
+    auto output = RunMLAA(input, options);
     if (!MLAA_CHECK(output->GetScalarType() == type) ||
       !MLAA_CHECK(output->GetNumberOfScalarComponents() == components))
     {
@@ -85,19 +90,33 @@ void CheckType(int type)
     if (!MLAA_CHECK(worst <= 1.0 / 255.0 + 1e-9) || !MLAA_CHECK(changed > 10))
     {
       std::cerr << "type " << vtkImageScalarTypeNameMacro(type) << ", " << components
-                << " components: largest normalised difference " << worst << ", " << changed
+                << " components, edges " << options->GetEdgeDetectionAsString(options->GetEdgeDetection())
+                << (options->GetReconstruction() ? " with reconstruction" : "")
+                << ": largest normalised difference " << worst << ", " << changed
                 << " values changed" << std::endl;
+    }
+    if (options->GetReconstruction())
+    {
+      // The gap is closed: (18, 12) takes the line's colour (then blended along the line,
+      // so closer to it than to the background, where without reconstruction it stays).
+      for (int k = 0; k < components - ((components == 2 || components == 4) ? 1 : 0); ++k)
+      {
+        const double n = (GetValue(output, 18, 12, k) - lo) / (hi - lo);
+        const double v = (GetValue(input, 18, 12, k) - lo) / (hi - lo);
+        MLAA_CHECK(std::abs(n - (0.6 + 0.1 * k)) < std::abs(n - (0.15 + 0.05 * k)));
+        MLAA_CHECK(std::abs(v - (0.15 + 0.05 * k)) < 1.0 / 255.0);
+      }
     }
   }
 
   // A volume: slice z of the output is the filter's result on slice z alone.
   auto volume = MakePicture(type, 3, 3, lo, hi);
-  auto volumeOut = RunMLAA(volume);
+  auto volumeOut = RunMLAA(volume, options);
   for (int z = 0; z < 3; ++z)
   {
     auto slice = MakeImage(23, 17, 3, type);
     FillImage(slice, [&](int x, int y, int, int k) { return GetValue(volume, x, y, k, z); });
-    auto sliceOut = RunMLAA(slice);
+    auto sliceOut = RunMLAA(slice, options);
     bool same = true;
     for (int y = 0; y < 17; ++y)
     {
@@ -116,20 +135,29 @@ void CheckType(int type)
 
 int TestImageMLAATypes(int, char*[])
 {
-  CheckType<char>(VTK_CHAR);
-  CheckType<signed char>(VTK_SIGNED_CHAR);
-  CheckType<unsigned char>(VTK_UNSIGNED_CHAR);
-  CheckType<short>(VTK_SHORT);
-  CheckType<unsigned short>(VTK_UNSIGNED_SHORT);
-  CheckType<int>(VTK_INT);
-  CheckType<unsigned int>(VTK_UNSIGNED_INT);
-  CheckType<long>(VTK_LONG);
-  CheckType<unsigned long>(VTK_UNSIGNED_LONG);
-  CheckType<long long>(VTK_LONG_LONG);
-  CheckType<unsigned long long>(VTK_UNSIGNED_LONG_LONG);
-  CheckType<vtkIdType>(VTK_ID_TYPE);
-  CheckType<float>(VTK_FLOAT);
-  CheckType<double>(VTK_DOUBLE);
+  for (int config = 0; config < 3; ++config)
+  {
+    vtkNew<vtkMLAAOptions> options;
+    if (config > 0)
+    {
+      options->SetEdgeDetectionToLab();
+    }
+    options->SetReconstruction(config == 2);
+    CheckType<char>(VTK_CHAR, options);
+    CheckType<signed char>(VTK_SIGNED_CHAR, options);
+    CheckType<unsigned char>(VTK_UNSIGNED_CHAR, options);
+    CheckType<short>(VTK_SHORT, options);
+    CheckType<unsigned short>(VTK_UNSIGNED_SHORT, options);
+    CheckType<int>(VTK_INT, options);
+    CheckType<unsigned int>(VTK_UNSIGNED_INT, options);
+    CheckType<long>(VTK_LONG, options);
+    CheckType<unsigned long>(VTK_UNSIGNED_LONG, options);
+    CheckType<long long>(VTK_LONG_LONG, options);
+    CheckType<unsigned long long>(VTK_UNSIGNED_LONG_LONG, options);
+    CheckType<vtkIdType>(VTK_ID_TYPE, options);
+    CheckType<float>(VTK_FLOAT, options);
+    CheckType<double>(VTK_DOUBLE, options);
+  }
 
   // Floating-point images outside [0, 1]: ValueRange says what full scale is.
   auto picture = MakePicture(VTK_DOUBLE, 1, 1, -500.0, 1500.0);

@@ -50,8 +50,9 @@ void Features()
     const unsigned char rgb[] = { 255, 0, 0, 0, 255, 0, 0, 0, 255, 10, 20, 30 };
     const FeatureReader<unsigned char, float> reader(
       MakeFeatureLayout(vtkMLAAOptions::LUMA, 3), 0.0f, 1.0f / 255.0f);
-    // Room for two planes: GCC cannot see that RGB has no alpha plane and warns otherwise.
-    float f[8];
+    // Room for four planes (Lab and alpha): GCC cannot see which planes a layout writes and
+    // warns otherwise.
+    float f[16];
     reader.Row(rgb, 4, nullptr, f);
     for (int x = 0; x < 4; ++x)
     {
@@ -68,7 +69,7 @@ void Features()
     const FeatureLayout layout = MakeFeatureLayout(vtkMLAAOptions::COLOR, 2);
     MLAA_CHECK(layout.Count == 2 && layout.HasAlpha);
     const FeatureReader<signed char, float> reader(layout, -128.0f, 1.0f / 255.0f);
-    float f[6];
+    float f[16];
     reader.Row(ga, 3, nullptr, f);
     const float expected[6] = { 0.0f, 128.0f / 255.0f, 1.0f, 1.0f, 0.0f, 128.0f / 255.0f };
     for (int i = 0; i < 6; ++i)
@@ -84,7 +85,7 @@ void Features()
     const FeatureLayout layout = MakeFeatureLayout(vtkMLAAOptions::LUMA, 4);
     MLAA_CHECK(layout.Count == 2);
     const FeatureReader<float, float> reader(layout, 0.0f, 1.0f);
-    float f[6];
+    float f[16];
     reader.Row(rgba, 3, nullptr, f);
     MLAA_CHECK(std::abs(f[0] - 1.0f) < 1e-6f && f[3] == 0.5f);
     MLAA_CHECK(std::isnan(f[1]) && std::isnan(f[4]));
@@ -96,7 +97,7 @@ void Features()
     const double depth[] = { 0.25, 0.75 };
     const FeatureReader<unsigned short, float> reader(
       MakeFeatureLayout(vtkMLAAOptions::DEPTH, 2), 0.0f, 1.0f / 65535.0f);
-    float f[4];
+    float f[16];
     reader.Row(ga, 2, depth, f);
     MLAA_CHECK(f[0] == 0.25f && f[1] == 0.75f && f[2] == 1.0f && f[3] == 0.0f);
   }

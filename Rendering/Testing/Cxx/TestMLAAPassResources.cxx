@@ -1,7 +1,8 @@
 // Resource handling and window changes: the pass keeps matching the CPU filter after a window
 // resize, after ReleaseGraphicsResources, after its renderer is removed from the window and added
-// again, when an option changes the area texture, and with line lengths by recursive doubling;
-// ReleaseGraphicsResources frees every target (the doubling textures included);
+// again, when an option changes the area texture, with line lengths by recursive doubling, and
+// when reconstruction is turned on and off; ReleaseGraphicsResources frees every target (the
+// doubling textures and the reconstructed colour's included);
 // its MLAA targets take 1.5 times an RGBA8 back buffer (the chapter's figure); tiled rendering
 // (vtkRenderLargeImage) works; a multisampled window works; a pass without a delegate warns and
 // draws nothing. No errors are reported on the way.
@@ -81,6 +82,19 @@ int TestMLAAPassResources(int, char*[])
   MLAA_CHECK(pass->GetTargetMemorySize() == 0);
   pass->SetLineLengthsToAutomatic();
   window->SetSize(421, 263);
+  CheckParity(window, renderer, pass, "after a resize back to 421 x 263");
+  // Reconstruction adds one RGBA8 copy of the colour, which ReleaseGraphicsResources frees and
+  // turning it off deletes.
+  const vtkIdType withoutReconstruction = pass->GetTargetMemorySize();
+  pass->GetOptions()->ReconstructionOn();
+  CheckParity(window, renderer, pass, "with reconstruction");
+  MLAA_CHECK(pass->GetTargetMemorySize() == withoutReconstruction + 421 * 263 * 4);
+  pass->ReleaseGraphicsResources(window);
+  MLAA_CHECK(pass->GetTargetMemorySize() == 0);
+  CheckParity(window, renderer, pass, "with reconstruction, after ReleaseGraphicsResources");
+  pass->GetOptions()->ReconstructionOff();
+  CheckParity(window, renderer, pass, "with reconstruction turned off again");
+  MLAA_CHECK(pass->GetTargetMemorySize() == withoutReconstruction);
 
   // Tiled rendering at twice the window size.
   renderer->SetPass(nullptr);

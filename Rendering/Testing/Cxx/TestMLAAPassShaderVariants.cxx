@@ -1,6 +1,6 @@
 // Compile-time shader variants: the options that change a shader's work (edge detection mode,
-// local contrast adaptation, diagonal detection, dominant-direction blending, the search length,
-// alpha handling, debug output) select #defines prepended to the one .glsl source of each pass,
+// Lab included, local contrast adaptation, diagonal detection, dominant-direction blending, the
+// search length, alpha handling, debug output, reconstruction and its write-back in place) select #defines prepended to the one .glsl source of each pass,
 // and the program is rebuilt when they change, as SMAA does with its presets; they are not
 // run-time uniforms. One pass object is rendered with a sequence of option changes:
 // - after each change its output equals the CPU filter with the same options (so the variant
@@ -69,7 +69,20 @@ int TestMLAAPassShaderVariants(int, char*[])
         options->SetMaxSearchSteps(8);
       },
       {}, {} },
-    { "kept alpha, straight", [&] {
+    { "Lab edges", [&] {
+        options->SetEdgeDetectionToLab();
+        options->SetThreshold(0.1);
+      },
+      {}, {} },
+    { "Lab edges with reconstruction", [&] { options->ReconstructionOn(); }, {}, {} },
+    { "luma edges with reconstruction", [&] { options->SetEdgeDetectionToLuma(); }, {}, {} },
+    { "Lab edges again, reconstruction off", [&] {
+        options->SetEdgeDetectionToLab();
+        options->ReconstructionOff();
+      },
+      {}, {} },
+    { "kept alpha, straight, with reconstruction", [&] {
+        options->ReconstructionOn();
         options->SetEdgeDetectionToLuma();
         options->SetThreshold(0.1);
         pass->KeepAlphaOn();
@@ -82,7 +95,10 @@ int TestMLAAPassShaderVariants(int, char*[])
       { "#define MLAA_DEBUG_OUTPUT 1" }, {} },
     { "weights debug output", [&] { options->SetDebugOutputToBlendingWeights(); },
       { "#define MLAA_DEBUG_OUTPUT 2" }, {} },
-    { "defaults again", [&] { options->SetDebugOutputToNone(); },
+    { "defaults again", [&] {
+        options->SetDebugOutputToNone();
+        options->ReconstructionOff();
+      },
       { "#define MLAA_DEBUG_OUTPUT 0", "#define MLAA_DOMINANT_DIRECTION" }, {} },
   };
 

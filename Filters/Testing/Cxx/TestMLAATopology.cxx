@@ -1,0 +1,132 @@
+// The selection rule of topological reconstruction (vtkMLAATopology, Biri et al. section 4):
+// the connexity number of every one of the 256 neighbourhood masks equals the number of
+// 8-connected components that a flood fill finds on the 3 x 3 grid (centre left out); the
+// selection table is T8(m) == 2 and T8(complement) == 1; the packed bits for the GPU hold the
+// same table; and a few masks named by hand have the expected answers.
+#include "vtkMLAATestUtilities.h"
+
+#include "vtkMLAATopology.h"
+
+#include <sstream>
+
+using namespace vtkMLAATest;
+
+namespace
+{
+// Components of the set cells of a 3 x 3 grid (grid[y][x], centre never set) by flood fill.
+int FloodFillComponents(bool grid[3][3])
+{
+  bool seen[3][3] = {};
+  int components = 0;
+  for (int y = 0; y < 3; ++y)
+  {
+    for (int x = 0; x < 3; ++x)
+    {
+      if (!grid[y][x] || seen[y][x])
+      {
+        continue;
+      }
+      ++components;
+      int stack[9][2];
+      int top = 0;
+      stack[top][0] = x;
+      stack[top][1] = y;
+      ++top;
+      seen[y][x] = true;
+      while (top > 0)
+      {
+        --top;
+        const int cx = stack[top][0];
+        const int cy = stack[top][1];
+        for (int dy = -1; dy <= 1; ++dy)
+        {
+          for (int dx = -1; dx <= 1; ++dx)
+          {
+            const int nx = cx + dx;
+            const int ny = cy + dy;
+            if (nx >= 0 && nx < 3 && ny >= 0 && ny < 3 && grid[ny][nx] && !seen[ny][nx])
+            {
+              seen[ny][nx] = true;
+              stack[top][0] = nx;
+              stack[top][1] = ny;
+              ++top;
+            }
+          }
+        }
+      }
+    }
+  }
+  return components;
+}
+
+int Components(int mask)
+{
+  bool grid[3][3] = {};
+  for (int bit = 0; bit < 8; ++bit)
+  {
+    if ((mask >> bit) & 1)
+    {
+      int dx, dy;
+      vtkMLAATopology::GetNeighborOffset(bit, dx, dy);
+      grid[1 + dy][1 + dx] = true;
+    }
+  }
+  return FloodFillComponents(grid);
+}
+}
+
+int TestMLAATopology(int, char*[])
+{
+  // The neighbour order: E, NE, N, NW, W, SW, S, SE with y up.
+  const int expected[8][2] = { { 1, 0 }, { 1, 1 }, { 0, 1 }, { -1, 1 }, { -1, 0 }, { -1, -1 },
+    { 0, -1 }, { 1, -1 } };
+  for (int bit = 0; bit < 8; ++bit)
+  {
+    int dx, dy;
+    vtkMLAATopology::GetNeighborOffset(bit, dx, dy);
+    MLAA_CHECK(dx == expected[bit][0] && dy == expected[bit][1]);
+  }
+
+  const unsigned char* table = vtkMLAATopology::GetSelectionTable();
+  unsigned int bits[8];
+  vtkMLAATopology::GetSelectionBits(bits);
+  int selected = 0;
+  for (int m = 0; m < 256; ++m)
+  {
+    const int t = Components(m);
+    const int complement = Components(~m & 255);
+    if (!MLAA_CHECK(vtkMLAATopology::ConnexityNumber(m) == t))
+    {
+      std::cerr << "mask " << m << ": T8 " << vtkMLAATopology::ConnexityNumber(m)
+                << ", flood fill " << t << std::endl;
+    }
+    const bool rule = t == 2 && complement == 1;
+    MLAA_CHECK((table[m] != 0) == rule);
+    MLAA_CHECK(vtkMLAATopology::IsSelected(m) == rule);
+    MLAA_CHECK(((bits[m >> 5] >> (m & 31)) & 1u) == (rule ? 1u : 0u));
+    selected += rule ? 1 : 0;
+  }
+  std::cout << selected << " of 256 masks are selected" << std::endl;
+  MLAA_CHECK(selected > 0 && selected < 256);
+
+  // By hand: a diagonal line with a pixel missing (NE and SW) is selected, and so is a knight's
+  // bend (E and NW); a straight horizontal gap (E and W) is not (the like pixels are two
+  // pieces); neither is a line end (SW only), a corner (W, SW, S), nothing, everything, or the
+  // cross of a thin line's own pixel (NE, N, S, SE unlike; E and W like).
+  MLAA_CHECK(vtkMLAATopology::IsSelected((1 << 1) | (1 << 5)));
+  MLAA_CHECK(vtkMLAATopology::IsSelected((1 << 0) | (1 << 3)));
+  MLAA_CHECK(!vtkMLAATopology::IsSelected((1 << 0) | (1 << 4)));
+  MLAA_CHECK(!vtkMLAATopology::IsSelected(1 << 5));
+  MLAA_CHECK(!vtkMLAATopology::IsSelected((1 << 4) | (1 << 5) | (1 << 6)));
+  MLAA_CHECK(!vtkMLAATopology::IsSelected(0));
+  MLAA_CHECK(!vtkMLAATopology::IsSelected(255));
+  MLAA_CHECK(!vtkMLAATopology::IsSelected((1 << 1) | (1 << 2) | (1 << 6) | (1 << 7)));
+  MLAA_CHECK(vtkMLAATopology::ConnexityNumber(0xAA) == 4); // the four corners
+  MLAA_CHECK(vtkMLAATopology::ConnexityNumber(0x55) == 1); // the four sides touch diagonally
+
+  vtkNew<vtkMLAATopology> topology;
+  std::ostringstream print;
+  topology->Print(print);
+  MLAA_CHECK(print.str().find("of 256") != std::string::npos);
+  return Result();
+}

@@ -1,0 +1,83 @@
+/**
+ * @class   vtkMLAATopology
+ * @brief   Connexity numbers and the pixel selection rule of topological reconstruction.
+ *
+ * Topological reconstruction ("Morphological antialiasing and topological reconstruction",
+ * Biri, Herubel and Deverly, GRAPP 2011, section 4) looks at the 3 x 3 neighbourhood of every
+ * pixel A. Each of A's eight neighbours is classed as unlike A (it belongs to the shape X) or
+ * like it (the complement X'). The neighbours are named by the bits of an 8-bit mask,
+ * counter-clockwise from the right, with y growing towards the next row (VTK's image rows):
+ *
+ *     bit 0  E  (x + 1, y)      bit 4  W  (x - 1, y)
+ *     bit 1  NE (x + 1, y + 1)  bit 5  SW (x - 1, y - 1)
+ *     bit 2  N  (x,     y + 1)  bit 6  S  (x,     y - 1)
+ *     bit 3  NW (x - 1, y + 1)  bit 7  SE (x + 1, y - 1)
+ *
+ * ConnexityNumber(m) is T8 of section 4.1 for the set m: the number of 8-connected components
+ * formed by the neighbour positions in m, adjacency being taken among those eight positions
+ * (A itself is left out; every neighbour is 8-adjacent to A, so these are the components
+ * adjacent to A). A pixel is selected for reconstruction (section 4.2) when its unlike
+ * neighbours make exactly two components and its like neighbours exactly one:
+ * T8(X) == 2 and T8(X') == 1. It then joins two pieces of a thin shape that point sampling cut
+ * apart, and neither a line end, an isolated dot, a corner nor a straight line is touched.
+ *
+ * This class is the one generator of that rule: vtkImageMLAA reads GetSelectionTable() and
+ * vtkOpenGLMLAAPass uploads GetSelectionBits() to its reconstruction shader. What "unlike"
+ * means (the CIELAB difference of vtkMLAAOptions::Reconstruction) and the further condition that
+ * the X pixels are all of one colour are left to the back ends.
+ *
+ * @sa vtkMLAAOptions vtkImageMLAA vtkOpenGLMLAAPass
+ */
+
+#ifndef vtkMLAATopology_h
+#define vtkMLAATopology_h
+
+#include "vtkFiltersMLAAModule.h" // For export macro
+#include "vtkObject.h"
+
+class VTKFILTERSMLAA_EXPORT vtkMLAATopology : public vtkObject
+{
+public:
+  static vtkMLAATopology* New();
+  vtkTypeMacro(vtkMLAATopology, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * The offset (dx, dy) of neighbour `bit` (0 to 7, see the class description).
+   */
+  static void GetNeighborOffset(int bit, int& dx, int& dy);
+
+  /**
+   * T8 of the neighbour positions in `mask` (its low 8 bits): the number of their 8-connected
+   * components, 0 to 4.
+   */
+  static int ConnexityNumber(int mask);
+
+  /**
+   * Whether a pixel whose unlike neighbours are `unlikeMask` is selected for reconstruction:
+   * ConnexityNumber(unlikeMask) == 2 and ConnexityNumber(~unlikeMask & 255) == 1.
+   */
+  static bool IsSelected(int unlikeMask) { return GetSelectionTable()[unlikeMask & 255] != 0; }
+
+  /**
+   * The selection rule for the 256 masks: entry m is 1 where IsSelected(m), else 0. Computed
+   * once (thread-safe); the pointer stays valid for the life of the program.
+   */
+  static const unsigned char* GetSelectionTable();
+
+  /**
+   * The selection table packed as 256 bits, for a shader: bit (m & 31) of bits[m >> 5] is
+   * entry m.
+   */
+  static void GetSelectionBits(unsigned int bits[8]);
+
+protected:
+  vtkMLAATopology() = default;
+  ~vtkMLAATopology() override = default;
+
+private:
+  vtkMLAATopology(const vtkMLAATopology&) = delete;
+  void operator=(const vtkMLAATopology&) = delete;
+};
+
+#endif

@@ -1,0 +1,135 @@
+//VTK::System::Dec
+//VTK::Output::Dec
+//VTK::MLAA::Dec
+
+// MLAA pass 0 (with vtkMLAAOptions::Reconstruction only): topological reconstruction (Biri et
+// al., "Morphological antialiasing and topological reconstruction", section 4), before edge
+// detection. Writes the reconstructed colour of every pixel into a texture of the colour
+// texture's format, which the edge detection and the blending then read instead of the
+// delegate's image.
+//
+// For the pixel A under this fragment, each of its eight neighbours is unlike A when the CIELAB
+// difference Delta E / 100 reaches the threshold (and is more than 0), or, with MLAA_USE_ALPHA,
+// the alpha difference does: the two would have a Lab edge before local contrast adaptation.
+// Non-finite colours (float buffers) are never unlike anything. The unlike neighbours X form an
+// 8-bit mask (bit 0 E, 1 NE, 2 N, 3 NW, 4 W, 5 SW, 6 S, 7 SE; N is the next row up). A is
+// selected when the selection table (T8(X) == 2 and T8(complement) == 1, section 4.2, uploaded
+// from vtkMLAATopology::GetSelectionBits: the one generator) has the mask's bit and the X
+// pixels are pairwise alike (one colour: the shape); it then takes the mean of the X pixels,
+// alpha included. Reads beyond the image are clamped to its border.
+//
+// Compile-time variants (#defines prepended by vtkOpenGLMLAAPass in place of //VTK::MLAA::Dec):
+//   MLAA_USE_ALPHA     defined: a change in alpha alone makes a neighbour unlike too
+//   MLAA_WRITE_BACK    defined: only the selected pixels are written (the others are
+//                      discarded): the pass draws this into the target when the blending works
+//                      in place and writes back only the pixels it blends.
+//
+// Must match Reconstruct and Unlike in Filters/vtkMLAAStages.h (vtkImageMLAA), and the
+// neighbour order of vtkMLAATopology.
+
+in vec2 texCoord;
+
+uniform sampler2D colorTexture; // the delegate's image (texelFetch only)
+uniform float threshold;        // vtkMLAAOptions::Threshold
+uniform int selectionTable[8];  // 256 bits: bit (m & 31) of word m >> 5 selects mask m
+
+//VTK::MLAA::Lab
+
+// The neighbours in mask bit order (vtkMLAATopology::GetNeighborOffset).
+const ivec2 offsets[8] = ivec2[8](ivec2(1, 0), ivec2(1, 1), ivec2(0, 1), ivec2(-1, 1),
+  ivec2(-1, 0), ivec2(-1, -1), ivec2(0, -1), ivec2(1, -1));
+
+bool isFiniteColor(vec4 c)
+{
+  return !any(isnan(c)) && !any(isinf(c));
+}
+
+// Lab features (xyz) and alpha (w) of a colour.
+vec4 features(vec4 c)
+{
+  return vec4(labFeatures(c.rgb), c.a);
+}
+
+// Whether two pixels (features f, g; finiteness) are unlike; distances compared squared.
+bool unlike(vec4 f, bool finiteF, vec4 g, bool finiteG)
+{
+  if (!finiteF || !finiteG)
+  {
+    return false;
+  }
+  float t2 = threshold * threshold;
+  vec3 d = f.xyz - g.xyz;
+  float e2 = dot(d, d);
+  if (e2 >= t2 && e2 > 0.0)
+  {
+    return true;
+  }
+#ifdef MLAA_USE_ALPHA
+  float da = f.w - g.w;
+  float a2 = da * da;
+  return a2 >= t2 && a2 > 0.0;
+#else
+  return false;
+#endif
+}
+
+void main()
+{
+  ivec2 size = textureSize(colorTexture, 0);
+  ivec2 p = ivec2(texCoord * vec2(size)); // this fragment's pixel (texCoord is at its centre)
+  vec4 color = texelFetch(colorTexture, p, 0);
+  vec4 f = features(color);
+  bool finite = isFiniteColor(color);
+
+  vec4 neighbors[8];
+  vec4 neighborFeatures[8];
+  bool neighborFinite[8];
+  int mask = 0;
+  for (int i = 0; i < 8; ++i)
+  {
+    neighbors[i] = texelFetch(colorTexture, clamp(p + offsets[i], ivec2(0), size - 1), 0);
+    neighborFeatures[i] = features(neighbors[i]);
+    neighborFinite[i] = isFiniteColor(neighbors[i]);
+    if (unlike(f, finite, neighborFeatures[i], neighborFinite[i]))
+    {
+      mask |= 1 << i;
+    }
+  }
+  bool selected = ((selectionTable[mask >> 5] >> (mask & 31)) & 1) != 0;
+  if (selected)
+  {
+    // The shape is one colour: its pixels are pairwise alike.
+    for (int i = 0; i < 8; ++i)
+    {
+      for (int j = i + 1; j < 8; ++j)
+      {
+        if (((mask >> i) & (mask >> j) & 1) != 0 &&
+          unlike(neighborFeatures[i], neighborFinite[i], neighborFeatures[j], neighborFinite[j]))
+        {
+          selected = false;
+        }
+      }
+    }
+  }
+#ifdef MLAA_WRITE_BACK
+  if (!selected)
+  {
+    discard; // the target keeps the pixel as rendered
+  }
+#endif
+  if (selected)
+  {
+    vec4 sum = vec4(0.0);
+    float n = 0.0;
+    for (int i = 0; i < 8; ++i)
+    {
+      if (((mask >> i) & 1) != 0)
+      {
+        sum += neighbors[i];
+        n += 1.0;
+      }
+    }
+    color = sum / n;
+  }
+  gl_FragData[0] = color;
+}
