@@ -1,5 +1,7 @@
 #include "vtkMLAATopology.h"
 
+#include <algorithm>
+
 #include "vtkObjectFactory.h"
 
 #include <array>
@@ -23,6 +25,21 @@ void vtkMLAATopology::GetNeighborOffset(int bit, int& dx, int& dy)
 
 //------------------------------------------------------------------------------
 int vtkMLAATopology::ConnexityNumber(int mask)
+{
+  int largest;
+  return CountComponents(mask, largest);
+}
+
+//------------------------------------------------------------------------------
+int vtkMLAATopology::LargestComponent(int mask)
+{
+  int largest;
+  CountComponents(mask, largest);
+  return largest;
+}
+
+//------------------------------------------------------------------------------
+int vtkMLAATopology::CountComponents(int mask, int& largest)
 {
   // Union-find over the positions in the mask; two positions are 8-adjacent when they are at
   // most one apart along x and along y (section 4.1, N8).
@@ -51,22 +68,32 @@ int vtkMLAATopology::ConnexityNumber(int mask)
     }
   }
   int components = 0;
+  int sizes[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
   for (int i = 0; i < 8; ++i)
   {
-    components += ((mask >> i) & 1) && root(i) == i ? 1 : 0;
+    if ((mask >> i) & 1)
+    {
+      components += root(i) == i ? 1 : 0;
+      ++sizes[root(i)];
+    }
   }
+  largest = *std::max_element(sizes, sizes + 8);
   return components;
 }
 
 //------------------------------------------------------------------------------
 const unsigned char* vtkMLAATopology::GetSelectionTable()
 {
-  // Section 4.2: T8(X) == 2 and T8(complement of X) == 1.
+  // Section 4.2: T8(X) == 2 and T8(complement of X) == 1; and (ours) no piece of X larger than
+  // the cross-section of a thin line.
   static const std::array<unsigned char, 256> table = [] {
     std::array<unsigned char, 256> t{};
     for (int m = 0; m < 256; ++m)
     {
-      t[m] = (ConnexityNumber(m) == 2 && ConnexityNumber(~m & 255) == 1) ? 1 : 0;
+      t[m] = (ConnexityNumber(m) == 2 && ConnexityNumber(~m & 255) == 1 &&
+               LargestComponent(m) <= MaximumPieceSize)
+        ? 1
+        : 0;
     }
     return t;
   }();

@@ -21,6 +21,12 @@
  * T8(X) == 2 and T8(X') == 1. It then joins two pieces of a thin shape that point sampling cut
  * apart, and neither a line end, an isolated dot, a corner nor a straight line is touched.
  *
+ * The paper's rule alone also selects the background pixels between two lines that pass close
+ * to each other (a dense wireframe, converging iso-lines), and fills them: on the project's
+ * wireframe scene that took the aliasing removed by MLAA from 65 % to 6 %. We add that neither
+ * piece of X holds more than MaximumPieceSize (two) neighbours, which is all a one-pixel line
+ * crossing the 3 x 3 neighbourhood can hold; pieces of lines that merely pass by are larger.
+ *
  * This class is the one generator of that rule: vtkImageMLAA reads GetSelectionTable() and
  * vtkOpenGLMLAAPass uploads GetSelectionBits() to its reconstruction shader. What "unlike"
  * means (the CIELAB difference of vtkMLAAOptions::Reconstruction) and the further condition that
@@ -54,8 +60,20 @@ public:
   static int ConnexityNumber(int mask);
 
   /**
+   * The number of positions in the largest 8-connected component of `mask` (0 for none).
+   */
+  static int LargestComponent(int mask);
+
+  /**
+   * The most neighbours that one piece of the shape may hold for a pixel to be selected: two,
+   * the cross-section of a one-pixel line as the 3 x 3 neighbourhood sees it.
+   */
+  static constexpr int MaximumPieceSize = 2;
+
+  /**
    * Whether a pixel whose unlike neighbours are `unlikeMask` is selected for reconstruction:
-   * ConnexityNumber(unlikeMask) == 2 and ConnexityNumber(~unlikeMask & 255) == 1.
+   * ConnexityNumber(unlikeMask) == 2, ConnexityNumber(~unlikeMask & 255) == 1 and
+   * LargestComponent(unlikeMask) <= MaximumPieceSize.
    */
   static bool IsSelected(int unlikeMask) { return GetSelectionTable()[unlikeMask & 255] != 0; }
 
@@ -76,6 +94,7 @@ protected:
   ~vtkMLAATopology() override = default;
 
 private:
+  static int CountComponents(int mask, int& largest);
   vtkMLAATopology(const vtkMLAATopology&) = delete;
   void operator=(const vtkMLAATopology&) = delete;
 };

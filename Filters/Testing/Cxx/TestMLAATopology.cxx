@@ -1,21 +1,25 @@
 // The selection rule of topological reconstruction (vtkMLAATopology, Biri et al. section 4):
 // the connexity number of every one of the 256 neighbourhood masks equals the number of
 // 8-connected components that a flood fill finds on the 3 x 3 grid (centre left out); the
-// selection table is T8(m) == 2 and T8(complement) == 1; the packed bits for the GPU hold the
+// selection table is T8(m) == 2, T8(complement) == 1 and no piece of m larger than two
+// neighbours (the flood fill's sizes); the packed bits for the GPU hold the
 // same table; and a few masks named by hand have the expected answers.
 #include "vtkMLAATestUtilities.h"
 
 #include "vtkMLAATopology.h"
 
+#include <algorithm>
 #include <sstream>
 
 using namespace vtkMLAATest;
 
 namespace
 {
-// Components of the set cells of a 3 x 3 grid (grid[y][x], centre never set) by flood fill.
-int FloodFillComponents(bool grid[3][3])
+// Components of the set cells of a 3 x 3 grid (grid[y][x], centre never set) by flood fill, and
+// the size of the largest.
+int FloodFillComponents(bool grid[3][3], int& largest)
 {
+  largest = 0;
   bool seen[3][3] = {};
   int components = 0;
   for (int y = 0; y < 3; ++y)
@@ -27,6 +31,7 @@ int FloodFillComponents(bool grid[3][3])
         continue;
       }
       ++components;
+      int size = 1;
       int stack[9][2];
       int top = 0;
       stack[top][0] = x;
@@ -47,6 +52,7 @@ int FloodFillComponents(bool grid[3][3])
             if (nx >= 0 && nx < 3 && ny >= 0 && ny < 3 && grid[ny][nx] && !seen[ny][nx])
             {
               seen[ny][nx] = true;
+              ++size;
               stack[top][0] = nx;
               stack[top][1] = ny;
               ++top;
@@ -54,12 +60,13 @@ int FloodFillComponents(bool grid[3][3])
           }
         }
       }
+      largest = std::max(largest, size);
     }
   }
   return components;
 }
 
-int Components(int mask)
+int Components(int mask, int& largest)
 {
   bool grid[3][3] = {};
   for (int bit = 0; bit < 8; ++bit)
@@ -71,7 +78,13 @@ int Components(int mask)
       grid[1 + dy][1 + dx] = true;
     }
   }
-  return FloodFillComponents(grid);
+  return FloodFillComponents(grid, largest);
+}
+
+int Components(int mask)
+{
+  int largest;
+  return Components(mask, largest);
 }
 }
 
@@ -93,14 +106,16 @@ int TestMLAATopology(int, char*[])
   int selected = 0;
   for (int m = 0; m < 256; ++m)
   {
-    const int t = Components(m);
+    int largest;
+    const int t = Components(m, largest);
     const int complement = Components(~m & 255);
+    MLAA_CHECK(vtkMLAATopology::LargestComponent(m) == largest);
     if (!MLAA_CHECK(vtkMLAATopology::ConnexityNumber(m) == t))
     {
       std::cerr << "mask " << m << ": T8 " << vtkMLAATopology::ConnexityNumber(m)
                 << ", flood fill " << t << std::endl;
     }
-    const bool rule = t == 2 && complement == 1;
+    const bool rule = t == 2 && complement == 1 && largest <= 2;
     MLAA_CHECK((table[m] != 0) == rule);
     MLAA_CHECK(vtkMLAATopology::IsSelected(m) == rule);
     MLAA_CHECK(((bits[m >> 5] >> (m & 31)) & 1u) == (rule ? 1u : 0u));
@@ -121,6 +136,12 @@ int TestMLAATopology(int, char*[])
   MLAA_CHECK(!vtkMLAATopology::IsSelected(0));
   MLAA_CHECK(!vtkMLAATopology::IsSelected(255));
   MLAA_CHECK(!vtkMLAATopology::IsSelected((1 << 1) | (1 << 2) | (1 << 6) | (1 << 7)));
+  // Two lines passing close by (N, NE, E on one side, SW on the other): the paper's rule alone
+  // selects it, the size of the pieces does not.
+  const int passing = (1 << 2) | (1 << 1) | (1 << 0) | (1 << 5);
+  MLAA_CHECK(vtkMLAATopology::ConnexityNumber(passing) == 2);
+  MLAA_CHECK(vtkMLAATopology::ConnexityNumber(~passing & 255) == 1);
+  MLAA_CHECK(!vtkMLAATopology::IsSelected(passing));
   MLAA_CHECK(vtkMLAATopology::ConnexityNumber(0xAA) == 4); // the four corners
   MLAA_CHECK(vtkMLAATopology::ConnexityNumber(0x55) == 1); // the four sides touch diagonally
 
