@@ -28,8 +28,8 @@ struct PresetSettings
 const PresetSettings PresetTable[] = {
   { 0.15, 2.0, vtkMLAAOptions::LUMA, 4, false, true, false }, // low
   { 0.1, 2.0, vtkMLAAOptions::LUMA, 8, true, true, false },   // medium
-  { 0.1, 2.0, vtkMLAAOptions::LUMA, 32, true, true, false },  // high
-  { 0.05, 2.0, vtkMLAAOptions::LAB, 128, true, true, true },  // ultra
+  { 0.1, 2.0, vtkMLAAOptions::LAB, 16, true, true, false },   // high
+  { 0.05, 2.0, vtkMLAAOptions::LAB, 32, true, true, false },  // ultra
 };
 }
 

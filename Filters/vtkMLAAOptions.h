@@ -99,8 +99,9 @@
  * each preset costs and gains, as measured by the project's benchmarks.
  * - Low: luma, threshold 0.15, 4 steps, no diagonals.
  * - Medium: luma, threshold 0.1, 8 steps, diagonals (the defaults).
- * - High: luma, threshold 0.1, 32 steps, diagonals.
- * - Ultra: Lab, threshold 0.05, 128 steps, diagonals, reconstruction.
+ * - High: Lab, threshold 0.1, 16 steps, diagonals.
+ * - Ultra: Lab, threshold 0.05, 32 steps, diagonals.
+ * Every preset leaves Reconstruction off (see above).
  *
  * "Top" and "above" mean towards the top of the displayed image: higher row index in a
  * vtkImageData and in an OpenGL texture.

@@ -18,6 +18,9 @@
 // (the other options as given), each with the search loop and with line lengths by recursive
 // doubling (vtkOpenGLMLAAPass::LineLengths), as configurations MLAA-<steps>-loop and
 // MLAA-<steps>-doubling of the same rounds, reported as overhead / overhead(FXAA-pass).
+// Variants (unless --no-variants): the MLAA pass with each feature of "Morphological antialiasing
+// and topological reconstruction" over the defaults (+lab, +steps32, +steps128, +recon), the
+// three together (+all3) and each preset (P-low ... P-ultra), reported the same way.
 #include "BenchmarkUtilities.h"
 #include "vtkMLAAScenes.h"
 
@@ -49,6 +52,8 @@ void Usage(const char* program)
             << "  --warmup N       untimed frames per configuration first (default 10)\n"
             << "  --rounds N       split the timed frames into N interleaved rounds (default 5)\n"
             << "  --azimuth DEG    camera azimuth step per frame (default 0.2; 0 = still)\n"
+            << "  --no-variants    leave out the MLAA pass with each feature and preset (+lab ...\n"
+            << "                   P-ultra)\n"
             << "  --no-long-lines  leave out the MLAA pass at 8, 32 and 128 steps with the search\n"
             << "                   loop and with recursive doubling\n"
             << "For the MLAA pass, " << mlaaBenchmark::MLAAOptionsUsage();
@@ -68,6 +73,7 @@ int main(int argc, char* argv[])
   int width = 1920, height = 1080, frames = 100, warmup = 10, rounds = 5;
   double azimuth = 0.2;
   bool longLines = true;
+  bool variants = true;
   std::string scene = "mixed";
   vtkNew<vtkMLAAOptions> options;
   for (int i = 1; i < argc; ++i)
@@ -98,6 +104,10 @@ int main(int argc, char* argv[])
     else if (arg == "--rounds" && hasValue && mlaaBenchmark::ParsePositive(argv[i + 1], rounds))
     {
       ++i;
+    }
+    else if (arg == "--no-variants")
+    {
+      variants = false;
     }
     else if (arg == "--no-long-lines")
     {
@@ -184,6 +194,21 @@ int main(int argc, char* argv[])
             (method == vtkOpenGLMLAAPass::SEARCH_LOOP ? "-loop" : "-doubling"),
           pass, false, {} });
       }
+    }
+  }
+
+  // Variants: one pass per feature and preset.
+  std::vector<vtkSmartPointer<vtkOpenGLMLAAPass>> variantPasses;
+  if (variants)
+  {
+    for (const auto& variant : mlaaBenchmark::Variants())
+    {
+      auto pass = vtkSmartPointer<vtkOpenGLMLAAPass>::New();
+      vtkNew<vtkRenderStepsPass> delegate;
+      pass->SetDelegatePass(delegate);
+      variant.Configure(pass->GetOptions());
+      variantPasses.push_back(pass);
+      configurations.push_back({ variant.Name, pass, false, {} });
     }
   }
 
@@ -305,6 +330,31 @@ int main(int argc, char* argv[])
       std::cout << "\n";
     }
   }
+  if (variants)
+  {
+    std::cout << "variants: overhead / overhead(FXAA-pass)\n";
+    for (const auto& variant : mlaaBenchmark::Variants())
+    {
+      for (const auto& c : configurations)
+      {
+        if (c.Name == variant.Name)
+        {
+          const double overhead = mlaaBenchmark::Median(c.Times) - stepsMedian;
+          std::cout << "  " << std::left << std::setw(11) << variant.Name << std::right
+                    << std::setw(8);
+          if (fxaaOverhead > 0.0)
+          {
+            std::cout << overhead / fxaaOverhead;
+          }
+          else
+          {
+            std::cout << "n/a";
+          }
+          std::cout << "\n";
+        }
+      }
+    }
+  }
   std::cout << "MLAA pass render targets: " << targets / (1024.0 * 1024.0) << " MiB = "
             << targets / backBuffer << " x the RGBA8 back buffer (" << backBuffer / (1024.0 * 1024.0)
             << " MiB); MLAA-specific targets (edges + blending weights): "
@@ -315,6 +365,10 @@ int main(int argc, char* argv[])
   renderer->UseFXAAOff();
   mlaa->ReleaseGraphicsResources(window);
   for (auto& pass : longLinePasses)
+  {
+    pass->ReleaseGraphicsResources(window);
+  }
+  for (auto& pass : variantPasses)
   {
     pass->ReleaseGraphicsResources(window);
   }

@@ -95,11 +95,13 @@ int TestMLAAOptions(int, char*[])
   vtkNew<vtkMLAAOptions> preset;
   preset->PremultipliedAlphaOn();
   preset->SetDebugOutputToEdges();
+  preset->ReconstructionOn();
   preset->SetPresetToUltra();
   CHECK(preset->GetPreset() == vtkMLAAOptions::ULTRA);
   CHECK(preset->GetEdgeDetection() == vtkMLAAOptions::LAB);
-  CHECK(preset->GetReconstruction());
-  CHECK(preset->GetMaxSearchSteps() == 128);
+  CHECK(!preset->GetReconstruction()); // no preset reconstructs
+  CHECK(preset->GetMaxSearchSteps() == 32);
+  CHECK(preset->GetThreshold() == 0.05);
   CHECK(preset->GetPremultipliedAlpha());
   CHECK(preset->GetDebugOutput() == vtkMLAAOptions::EDGES);
   preset->SetPresetToLow();
