@@ -15,9 +15,9 @@
  * Only the features and the blending depend on the scalar type; the edges and weights buffers
  * are laid out as the pass's RG8 edges and RGBA8 blending-weights textures, with the same 8-bit
  * quantisation, so the two back ends compute the same numbers. Features are read row by row into
- * per-task buffers (never a full-size copy of the image); the edges and weights buffers (with
- * the weights' scratch of 16-bit column line lengths, 4 bytes per pixel) are the only full-size
- * buffers besides the output.
+ * per-task buffers (never a full-size copy of the image); the edges and weights buffers (with,
+ * from RunLengthSteps search steps on, the weights' scratch of 16-bit line lengths: 4 bytes per
+ * pixel, 12 with DiagonalDetection) are the only full-size buffers besides the output.
  *
  * How far each stage reads beyond the pixels it produces (its halo) is derived from the options
  * in one place, Halo (below); vtkImageMLAA pads its input request by Halo::Total().
@@ -407,10 +407,6 @@ struct WeightsBuffer
 };
 
 /**
- * The area tables of vtkMLAAAreaTexture for one maximum distance, quantised to 8 bits as the
- * blending weights are stored (the pass's RGBA8 texture), and the search settings.
- */
-/**
  * The search length (vtkMLAAOptions::MaxSearchSteps) from which the weights stage counts line
  * lengths as run lengths instead of searching from every edge pixel (measured, 1920 x 1080, one
  * thread, vtkImageMLAA time / vtkImageGaussianSmooth time): searching stops at each line's end,
@@ -422,6 +418,10 @@ struct WeightsBuffer
  */
 constexpr int RunLengthSteps = 16;
 
+/**
+ * The area tables of vtkMLAAAreaTexture for one maximum distance, quantised to 8 bits as the
+ * blending weights are stored (the pass's RGBA8 texture), and the search settings.
+ */
 struct WeightSettings
 {
   int SearchSteps = 8;     // vtkMLAAOptions::MaxSearchSteps
