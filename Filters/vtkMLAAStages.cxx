@@ -364,6 +364,7 @@ void MakeWeightSettings(vtkMLAAOptions* options, WeightSettings& settings)
   const int maxDistance = options->GetMaxDistance();
   settings.SearchSteps = options->GetMaxSearchSteps();
   settings.Diagonals = options->GetDiagonalDetection();
+  settings.RunLengths = settings.SearchSteps >= RunLengthSteps;
   settings.CellSize = maxDistance + 1;
   settings.AreaSize = vtkMLAAAreaTexture::NumberOfCodes * settings.CellSize;
   settings.DiagonalAreaSize = vtkMLAAAreaTexture::NumberOfDiagonalCodes * settings.CellSize;
@@ -616,64 +617,98 @@ public:
   // capped at the maximum distance. Rows are scanned upwards for the directions that go down and
   // downwards for those that go up. Where the next pixel lies outside the extent or the strip of
   // columns, the count is searched unit by unit instead (SearchDiagonal), so strips are
-  // independent and the reads beyond the extent are those of the search.
+  // independent and the reads beyond the extent are those of the search. Must give the counts of
+  // searchDiagonal in Rendering/glsl/vtkMLAABlendingWeightsFS.glsl, which searches from every
+  // unit.
   void ComputeDiagonalLengths(const DiagonalLengths& lengths, int x0, int x1) const
   {
-    const Rect& ext = lengths.Extent;
+    const Rect& ext = lengths.Extent; // within the edges' extent and the image
     const int cap = this->S.CellSize - 1;
     auto rising = [this](int u, int v) { return this->IsRisingUnit(u, v); };
     auto falling = [this](int u, int v) { return this->IsFallingUnit(u, v); };
-    // One direction (dx, dy) of one kind of unit, rows in the order that visits (x + dx, y + dy)
-    // before (x, y).
-    auto scan = [&](int dx, int dy, bool isRising, LineLength* out) {
-      const int first = dy < 0 ? ext.Y0 : ext.Y1;
-      for (int y = first; dy < 0 ? y <= ext.Y1 : y >= ext.Y0; y -= dy)
+    // Rows upwards for the directions that go down (rising towards (-1, -1), falling towards
+    // (+1, -1)), then downwards for those that go up ((+1, +1) and (-1, +1)).
+    for (const int dy : { -1, +1 })
+    {
+      LineLength* risingOut = dy < 0 ? lengths.RisingDown : lengths.RisingUp;
+      LineLength* fallingOut = dy < 0 ? lengths.FallingDown : lengths.FallingUp;
+      const int risingDx = dy;
+      const int fallingDx = -dy;
+      for (int y = dy < 0 ? ext.Y0 : ext.Y1; dy < 0 ? y <= ext.Y1 : y >= ext.Y0; y -= dy)
       {
+        const int ny = y + dy;
+        const bool nextRow = ny >= ext.Y0 && ny <= ext.Y1;
         const unsigned char* e = this->E.At(x0, y);
+        const unsigned char* n = nextRow ? this->E.At(x0, ny) : nullptr;
+        // The count of the unit at (x, y) whose next unit would be at (nx, ny), given whether that
+        // is a unit: from the next unit's count inside the strip, else searched.
+        auto count = [&](int x, int nx, bool isRising, bool nextIsUnit, const LineLength* out) {
+          if (!n || nx < x0 || nx > x1)
+          {
+            bool reachedEnd;
+            return isRising ? this->SearchDiagonal(x, y, risingDx, dy, rising, reachedEnd)
+                            : this->SearchDiagonal(x, y, fallingDx, dy, falling, reachedEnd);
+          }
+          return nextIsUnit ? std::min(cap, 1 + out[lengths.Index(nx, ny)]) : 0;
+        };
         for (int x = x0; x <= x1; ++x)
         {
+          const int i = x - x0;
           // Both kinds of unit have the pixel's top edgel: eight pixels without one are skipped.
-          if ((x - x0) % 8 == 0 && x + 7 <= x1 && !AnyEdgel<1>(e + 2 * (x - x0), 8))
+          if (i % 8 == 0 && x + 7 <= x1 && !AnyEdgel<1>(e + 2 * i, 8))
           {
             x += 7;
             continue;
           }
-          if (!e[2 * (x - x0) + 1] || !(isRising ? rising(x, y) : falling(x, y)))
+          if (!e[2 * i + 1])
           {
             continue;
           }
-          const int nx = x + dx, ny = y + dy;
-          int length;
-          if (nx < x0 || nx > x1 || ny < ext.Y0 || ny > ext.Y1)
+          // A rising unit: the pixel's two edgels (inside the image: no clamping).
+          if (e[2 * i])
           {
-            bool reachedEnd;
-            length = isRising ? this->SearchDiagonal(x, y, dx, dy, rising, reachedEnd)
-                              : this->SearchDiagonal(x, y, dx, dy, falling, reachedEnd);
+            const int nx = x + risingDx;
+            const int ni = nx - x0;
+            const bool next = n && nx >= x0 && nx <= x1 && n[2 * ni] && n[2 * ni + 1];
+            risingOut[lengths.Index(x, y)] =
+              static_cast<LineLength>(count(x, nx, true, next, risingOut));
           }
-          else
+          // A falling unit: its top edgel and the left edgel of the pixel to its right (read
+          // through the clamped accessors at the strip's last column).
+          if (x < x1 ? e[2 * i + 2] != 0 : falling(x, y))
           {
-            const bool next = isRising ? rising(nx, ny) : falling(nx, ny);
-            length = next ? std::min(cap, 1 + out[lengths.Index(nx, ny)]) : 0;
+            const int nx = x + fallingDx;
+            const int ni = nx - x0;
+            bool next = false;
+            if (n && nx >= x0 && nx <= x1)
+            {
+              next = nx < x1 ? (n[2 * ni + 1] && n[2 * ni + 2]) : falling(nx, ny);
+            }
+            fallingOut[lengths.Index(x, y)] =
+              static_cast<LineLength>(count(x, nx, false, next, fallingOut));
           }
-          out[lengths.Index(x, y)] = static_cast<LineLength>(length);
         }
       }
-    };
-    scan(-1, -1, true, lengths.RisingDown);
-    scan(+1, -1, false, lengths.FallingDown);
-    scan(+1, +1, true, lengths.RisingUp);
-    scan(-1, +1, false, lengths.FallingUp);
+    }
   }
 
   // The four weights of a pixel with edgels (see WeightsBuffer), given the lengths of its lines
   // (ComputeRowLineLengths, ComputeColumnLineLengths): leftEnd and rightEnd along its row,
-  // up and down along its column. With DiagonalDetection, an edgel that is part of a 45-degree
+  // up and down along its column; leftEnd -1: none given, they are searched. With DiagonalDetection, an edgel that is part of a 45-degree
   // staircase takes its weights from the diagonal line instead (ComputeDiagonalWeights).
   void Compute(int x, int y, int leftEnd, int rightEnd, int up, int down, unsigned char* w) const
   {
     w[0] = w[1] = w[2] = w[3] = 0;
     bool top = this->E.Top(x, y);
     bool left = this->E.Left(x, y);
+    if (leftEnd < 0)
+    {
+      // No lengths counted beforehand: search.
+      leftEnd = top ? this->SearchTopEdges(x, y, -1) : 0;
+      rightEnd = top ? this->SearchTopEdges(x, y, +1) : 0;
+      up = left ? this->SearchLeftEdges(x, y, +1) : 0;
+      down = left ? this->SearchLeftEdges(x, y, -1) : 0;
+    }
     if (this->S.Diagonals)
     {
       this->ComputeDiagonalWeights(x, y, top, left, w);
@@ -704,6 +739,57 @@ private:
   }
   int TopAt(int x, int y) const { return this->Clamped(x, y)[1] ? 1 : 0; }
   int LeftAt(int x, int y) const { return this->Clamped(x, y)[0] ? 1 : 0; }
+
+  // Section 4.3.1, searched (below WeightSettings::RunLengthSteps; the run lengths give the
+  // same numbers): distance from (x, y) to the end of its line of top edgels in direction dx
+  // (-1 left, +1 right), or of left edgels in direction dy (-1 down, +1 up). Each step looks at
+  // the next two pixels along the line, as the GPU does with two bilinear fetches:
+  // - the two edgels along the line (weighted 3:1, so that each can be told apart);
+  // - the crossing edgels (perpendicular ones, on either side of the line) at the boundary
+  //   before the first pixel and at the boundary between the two.
+  // The line ends before the first pixel without an edgel, or at the first boundary with a
+  // crossing edgel. Stopping at crossing edges (which the chapter's search does not, section
+  // 4.3.1 and 4.6) keeps the top and bottom outlines of one-pixel-wide lines apart.
+  int SearchTopEdges(int x, int y, int dx) const
+  {
+    for (int i = 0; i < this->S.SearchSteps; ++i)
+    {
+      const int first = x + dx * (2 * i + 1);
+      const int second = first + dx;
+      // Left edgels of the pixels right of the two boundaries, on this row and the one above.
+      const int nearOwner = std::max(first, first - dx);
+      const int midOwner = std::max(first, second);
+      if (this->LeftAt(nearOwner, y) || this->LeftAt(nearOwner, y + 1) || !this->TopAt(first, y))
+      {
+        return 2 * i;
+      }
+      if (this->LeftAt(midOwner, y) || this->LeftAt(midOwner, y + 1) || !this->TopAt(second, y))
+      {
+        return 2 * i + 1;
+      }
+    }
+    return 2 * this->S.SearchSteps;
+  }
+  int SearchLeftEdges(int x, int y, int dy) const
+  {
+    for (int i = 0; i < this->S.SearchSteps; ++i)
+    {
+      const int first = y + dy * (2 * i + 1);
+      const int second = first + dy;
+      // Top edgels of the pixels below the two boundaries, in this column and the one left.
+      const int nearOwner = std::min(first, first - dy);
+      const int midOwner = std::min(first, second);
+      if (this->TopAt(x, nearOwner) || this->TopAt(x - 1, nearOwner) || !this->LeftAt(x, first))
+      {
+        return 2 * i;
+      }
+      if (this->TopAt(x, midOwner) || this->TopAt(x - 1, midOwner) || !this->LeftAt(x, second))
+      {
+        return 2 * i + 1;
+      }
+    }
+    return 2 * this->S.SearchSteps;
+  }
 
   // Section 4.3.2: the crossing-edge code at an end of a line, 3 * (edgel on the owning pixel's
   // side) + (edgel on the opposite side), as the bilinear fetch a quarter pixel off the edge
@@ -910,7 +996,7 @@ void ComputeBlendingWeights(const EdgesBuffer& edges, const Rect& whole,
   // The lengths of the staircases (DiagonalDetection) through the pixels of the extent, in
   // strips of columns.
   WeightsComputer::DiagonalLengths diagonal;
-  const bool diagonalRuns = settings.Diagonals && settings.DiagonalRunLengths;
+  const bool diagonalRuns = settings.Diagonals && settings.RunLengths;
   if (diagonalRuns)
   {
     weights.DiagonalLengths.Reserve(4 * pixels * sizeof(LineLength));
@@ -933,10 +1019,14 @@ void ComputeBlendingWeights(const EdgesBuffer& edges, const Rect& whole,
   const WeightsComputer computer(edges, whole, settings, diagonalRuns ? &diagonal : nullptr);
   // The up and down lengths of every pixel of the extent (the columns are scanned in strips),
   // the left and right ones row by row in each task.
-  weights.ColumnLengths.Reserve(2 * pixels * sizeof(LineLength));
+  const bool runs = settings.RunLengths;
+  weights.ColumnLengths.Reserve(runs ? 2 * pixels * sizeof(LineLength) : 0);
   LineLength* down = reinterpret_cast<LineLength*>(weights.ColumnLengths.Get());
   LineLength* up = down + pixels;
-  ComputeColumnLineLengths(edges, r, maxDistance, down, up);
+  if (runs)
+  {
+    ComputeColumnLineLengths(edges, r, maxDistance, down, up);
+  }
   if (progress.CheckAbort())
   {
     return;
@@ -947,7 +1037,7 @@ void ComputeBlendingWeights(const EdgesBuffer& edges, const Rect& whole,
     {
       return;
     }
-    std::vector<LineLength> rowLengths(2 * static_cast<size_t>(edgesWidth));
+    std::vector<LineLength> rowLengths(runs ? 2 * static_cast<size_t>(edgesWidth) : 0);
     LineLength* left = rowLengths.data();
     LineLength* right = left + edgesWidth;
     const int offset = r.X0 - edges.Extent.X0;
@@ -957,7 +1047,10 @@ void ComputeBlendingWeights(const EdgesBuffer& edges, const Rect& whole,
       const unsigned char* e = edges.At(r.X0, y);
       unsigned char* w = weights.At(r.X0, y);
       const size_t column = static_cast<size_t>(i) * r.Width();
-      ComputeRowLineLengths(edges, y, maxDistance, left, right);
+      if (runs)
+      {
+        ComputeRowLineLengths(edges, y, maxDistance, left, right);
+      }
       // Most pixels have no edgel: four at a time are skipped; their weights are not written.
       for (int x = r.X0; x <= r.X1;)
       {
@@ -975,6 +1068,12 @@ void ComputeBlendingWeights(const EdgesBuffer& edges, const Rect& whole,
         if (e[2 * i] | e[2 * i + 1])
         {
           // Lengths are only computed for pixels with the edgel they belong to.
+          if (!runs)
+          {
+            computer.Compute(x, y, -1, -1, -1, -1, w + 4 * i);
+            ++x;
+            continue;
+          }
           const bool hasTop = e[2 * i + 1] != 0;
           const bool hasLeft = e[2 * i] != 0;
           computer.Compute(x, y, hasTop ? left[offset + i] : 0, hasTop ? right[offset + i] : 0,

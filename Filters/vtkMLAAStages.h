@@ -16,9 +16,9 @@
  * Only the features and the blending depend on the scalar type; the edges and weights buffers
  * are laid out as the pass's RG8 edges and RGBA8 blending-weights textures, with the same 8-bit
  * quantisation, so the two back ends compute the same numbers. Features are read row by row into
- * per-task buffers (never a full-size copy of the image); the edges and weights buffers (with
- * the weights' scratch of 16-bit column line lengths, 4 bytes per pixel) are the only full-size
- * buffers besides the output.
+ * per-task buffers (never a full-size copy of the image); the edges and weights buffers (with,
+ * from RunLengthSteps search steps on, the weights' scratch of 16-bit line lengths: 4 bytes per
+ * pixel, 12 with DiagonalDetection) are the only full-size buffers besides the output.
  *
  * How far each stage reads beyond the pixels it produces (its halo) is derived from the options
  * in one place, Halo (below); vtkImageMLAA pads its input request by Halo::Total().
@@ -685,6 +685,18 @@ struct WeightsBuffer
 };
 
 /**
+ * The search length (vtkMLAAOptions::MaxSearchSteps) from which the weights stage counts line
+ * lengths as run lengths instead of searching from every edge pixel (measured, 1920 x 1080, one
+ * thread, vtkImageMLAA time / vtkImageGaussianSmooth time): searching stops at each line's end,
+ * so on images of short lines it is cheaper (0.30 against 0.44 at 8 steps on the "mixed" scene:
+ * counting reads every pixel a few times) but its cost grows with the lines' length, up to 6.3
+ * at 32 steps and 11 at 128 on a screen of long 0.3-degree stripes, and 6.2 and 14 on 45-degree
+ * stripes (staircases), where run lengths stay at 1.5 to 2.3. From 16 steps on (32 pixels each
+ * way) run lengths bound that cost; below, the search's reads are bounded by the short distance.
+ */
+constexpr int RunLengthSteps = 16;
+
+/**
  * The area tables of vtkMLAAAreaTexture for one maximum distance, quantised to 8 bits as the
  * blending weights are stored (the pass's RGBA8 texture), and the search settings.
  */
@@ -692,10 +704,12 @@ struct WeightSettings
 {
   int SearchSteps = 8;     // vtkMLAAOptions::MaxSearchSteps
   bool Diagonals = true;   // vtkMLAAOptions::DiagonalDetection
-  // How staircases are followed: true, by run lengths counted over the extent beforehand
-  // (four 16-bit values per pixel); false, unit by unit from every unit (as the GPU pass does).
-  // The same numbers either way; false is kept for tests and comparisons.
-  bool DiagonalRunLengths = true;
+  // How lines and staircases are measured: true, by run lengths counted over the extent
+  // beforehand (ComputeRowLineLengths, ComputeColumnLineLengths, and the staircases' likewise);
+  // false, by searching from every pixel with an edgel, step by step, as the GPU's SEARCH_LOOP.
+  // The same numbers either way; MakeWeightSettings picks run lengths from RunLengthSteps
+  // search steps on.
+  bool RunLengths = false;
   int CellSize = 17;       // D = 2 * SearchSteps + 1
   int AreaSize = 85;       // 5 D
   int DiagonalAreaSize = 51; // 3 D
@@ -750,7 +764,8 @@ VTKFILTERSMLAA_EXPORT void ComputeColumnLineLengths(const EdgesBuffer& edges, co
  * the ends of orthogonal lines are line lengths (ComputeRowLineLengths, per row of each task,
  * and ComputeColumnLineLengths, held for the whole weights extent: two 16-bit values per pixel);
  * with DiagonalDetection, the lengths of staircases are counted the same way beforehand (four
- * 16-bit values per pixel; WeightSettings::DiagonalRunLengths).
+ * 16-bit values per pixel). Below RunLengthSteps search steps they are searched from each pixel
+ * instead (WeightSettings::RunLengths), which needs none of these buffers.
  */
 VTKFILTERSMLAA_EXPORT void ComputeBlendingWeights(const EdgesBuffer& edges, const Rect& whole,
   const WeightSettings& settings, WeightsBuffer& weights, Progress& progress);

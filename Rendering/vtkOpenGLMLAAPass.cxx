@@ -206,9 +206,10 @@ void vtkOpenGLMLAAPass::PrepareTargets(
   }
   else
   {
-    // Not needed by the search loop: not kept.
+    // Not needed by the search loop: not kept (and no framebuffer keeps them attached).
     for (vtkTextureObject*& lengths : this->LengthsTextures)
     {
+      reallocated |= lengths != nullptr;
       DeleteObject(lengths, renWin);
     }
   }

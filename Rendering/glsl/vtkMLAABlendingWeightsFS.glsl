@@ -30,7 +30,8 @@
 // With MLAA_DIAGONAL_DETECTION, edgels that belong to a staircase of one-pixel steps (at least
 // minimumDiagonalLength units) take their weights from the 45-degree line through it instead,
 // from the diagonal area table (vtkMLAAAreaTexture::ComputeDiagonalAreas). Exact texel reads are
-// used there; the staircase is followed one unit per step.
+// used there; the staircase is followed one unit per step (vtkImageMLAA counts the same lengths
+// as run lengths along the diagonals, WeightsComputer::ComputeDiagonalLengths).
 //
 // Must match vtkImageMLAA's blending weights (ComputeBlendingWeights in Filters/vtkMLAAStages.cxx);
 // the distances of searchTopEdges/searchLeftEdges must equal the line lengths of

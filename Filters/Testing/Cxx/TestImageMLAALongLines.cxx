@@ -7,8 +7,8 @@
 //   smooth ramp along each whole step with 32 steps or more, and the weights of every step are
 //   the area texture's for the step's full length; with 8 steps (16 pixels each way) they are
 //   not, which shows what the check catches;
-// - with DiagonalDetection, the staircase lengths counted beforehand give the weights of the
-//   unit-by-unit search on random 45-degree patterns.
+// - with DiagonalDetection, the line and staircase lengths counted beforehand give the weights
+//   of the search on random 45-degree patterns.
 #include "vtkMLAATestUtilities.h"
 
 #include "vtkMLAAAreaTexture.h"
@@ -159,8 +159,9 @@ void RunLengthsMatchSearch()
   MLAA_CHECK(atCap > compared / 50);
 }
 
-// Staircases (DiagonalDetection): the blending weights with staircase lengths counted
-// beforehand (the default) equal those of following every staircase unit by unit, on random
+// Staircases (DiagonalDetection) and lines: the blending weights with line and staircase lengths
+// counted beforehand (WeightSettings::RunLengths) equal those of searching from every pixel, on
+// random
 // images of 45-degree stripes both ways with noise, for weights extents within the edges extent
 // (so that the counts meet the extent's and the strips' borders), for 1, 8, 37 and 128 steps.
 void DiagonalRunsMatchSearch()
@@ -224,9 +225,9 @@ void DiagonalRunsMatchSearch()
         runs.Allocate(weightsExtent);
         search.Allocate(weightsExtent);
         Progress progress;
-        settings.DiagonalRunLengths = true;
+        settings.RunLengths = true;
         ComputeBlendingWeights(edges, whole, settings, runs, progress);
-        settings.DiagonalRunLengths = false;
+        settings.RunLengths = false;
         ComputeBlendingWeights(edges, whole, settings, search, progress);
         int differ = 0;
         for (int y = weightsExtent.Y0; y <= weightsExtent.Y1; ++y)
