@@ -632,7 +632,8 @@ struct EdgeSettings
   double Threshold = 0.1;
   double LocalContrastFactor = 2.0; // 0: off
   // How many leading features are compared together, by their Euclidean distance: 3 in LAB
-  // mode (Delta E / 100 from L, a, b, Biri et al. section 3.2), 1 otherwise (a plain difference).
+  // mode (Delta E / 100 from L, a, b, Biri et al. section 3.2), 1 otherwise (a plain
+  // difference); no other value is used.
   int EuclideanFeatures = 1;
 };
 
