@@ -77,8 +77,8 @@ std::vector<std::pair<int, int>> Changed(vtkImageData* a, vtkImageData* b)
 
 // A grey picture with thin shapes: a diagonal line (5, 5) to (17, 17) with (11, 11) missing,
 // an isolated dot, a filled square (its corners), a "+" crossing of two lines, and another "+"
-// of two colours. (The corner pixel of a one-pixel-wide L is selected by the rule, T8 = 2 and
-// 1: it is replaced by the background, which turns the L's corner into a diagonal step.)
+// of two colours. (Not here, see the caveats of vtkMLAATopology: the corner pixel of a
+// one-pixel-wide L and the two pixels beside a gap in a straight one-pixel line are selected.)
 bool Shapes(int x, int y, bool gap, double& v)
 {
   v = Background;
