@@ -112,7 +112,7 @@ class EdgeDetector
 public:
   EdgeDetector(int features, const EdgeSettings& settings)
     : F(features)
-    , E(std::min(std::max(settings.EuclideanFeatures, 1), features))
+    , E(settings.EuclideanFeatures == 3 && features >= 3 ? 3 : 1)
     , Threshold(static_cast<Acc>(settings.Threshold))
     , Factor(static_cast<Acc>(settings.LocalContrastFactor))
   {

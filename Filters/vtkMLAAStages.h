@@ -632,7 +632,8 @@ struct EdgeSettings
   double Threshold = 0.1;
   double LocalContrastFactor = 2.0; // 0: off
   // How many leading features are compared together, by their Euclidean distance: 3 in LAB
-  // mode (Delta E / 100 from L, a, b, Biri et al. section 3.2), 1 otherwise (a plain difference).
+  // mode (Delta E / 100 from L, a, b, Biri et al. section 3.2), 1 otherwise (a plain
+  // difference); no other value is used.
   int EuclideanFeatures = 1;
 };
 
@@ -1109,6 +1110,26 @@ void UnlikeMasks(const Acc* a, const Acc* b, size_t plane, Acc threshold2, unsig
 }
 
 /**
+ * The neighbour masks (bits as vtkMLAATopology) of pixels first..last - 1 of a row from the
+ * comparisons of Reconstruct (1 where unlike): toE[x] with the pixel right of x, toN, toNE and
+ * toNW[x] with the pixels above, and those of the row below, whose entries at x, x - 1 and
+ * x + 1 are the comparisons of pixel x with its S, SW and SE neighbours.
+ */
+inline void CombineUnlike(const unsigned char* __restrict toE,
+  const unsigned char* __restrict toNE, const unsigned char* __restrict toN,
+  const unsigned char* __restrict toNW, const unsigned char* __restrict belowNE,
+  const unsigned char* __restrict belowN, const unsigned char* __restrict belowNW, int first,
+  int last, unsigned char* __restrict mask)
+{
+  for (int x = first; x < last; ++x)
+  {
+    mask[x] = static_cast<unsigned char>(toE[x] | (toNE[x] << 1) | (toN[x] << 2) |
+      (toNW[x] << 3) | (toE[x - 1] << 4) | (belowNE[x - 1] << 5) | (belowN[x] << 6) |
+      (belowNW[x + 1] << 7));
+  }
+}
+
+/**
  * Section 4.3: the reconstructed pixels of setup.Input into `output` (rows of
  * setup.Input.Width() pixels, packed). `input` points at the first pixel of setup.Input (rows
  * `inputRowStride` values apart); reads beyond setup.Input are clamped to it (the halo keeps
@@ -1164,34 +1185,62 @@ void Reconstruct(const SliceSetup& setup, const T* input, vtkIdType inputRowStri
       const int y = std::min(std::max(first + i, 0), h - 1);
       reader.Row(pixel(0, y), w, nullptr, band.get() + rowSize * i);
     }
-    std::vector<unsigned char> masks(static_cast<size_t>(w));
+    // Whether pixels are unlike their neighbours, each pair compared once (Unlike is
+    // symmetric): along each band row (x, x + 1), and between band rows i and i + 1 (x with x,
+    // x + 1 and x - 1 above it), over the columns where both pixels exist. Branch-free loops
+    // that vectorise.
+    const size_t uw = static_cast<size_t>(w);
+    std::vector<unsigned char> along(rows * uw, 0);
+    std::vector<unsigned char> up((rows - 1) * uw, 0);
+    std::vector<unsigned char> upRight((rows - 1) * uw, 0);
+    std::vector<unsigned char> upLeft((rows - 1) * uw, 0);
+    auto compare = [&](const Acc* a, const Acc* b, int from, int to, unsigned char* out) {
+      if (count > 3)
+      {
+        UnlikeMasks<Acc, true>(a, b, plane, threshold2, 1, from, to, out);
+      }
+      else
+      {
+        UnlikeMasks<Acc, false>(a, b, plane, threshold2, 1, from, to, out);
+      }
+    };
+    for (int i = 0; i < rows; ++i)
+    {
+      const Acc* here = band.get() + rowSize * i;
+      if (i > 0 && i < rows - 1)
+      {
+        compare(here, here + 1, 0, w - 1, along.data() + i * uw);
+      }
+      if (i < rows - 1)
+      {
+        const Acc* above = here + rowSize;
+        compare(here, above, 0, w, up.data() + i * uw);
+        compare(here, above + 1, 0, w - 1, upRight.data() + i * uw);
+        compare(here, above - 1, 1, w, upLeft.data() + i * uw);
+      }
+    }
+    std::vector<unsigned char> masks(uw);
     for (vtkIdType row = begin; row < end; ++row)
     {
       const int y = static_cast<int>(row);
       T* out = output + static_cast<size_t>(y) * w * c;
       std::copy(pixel(0, y), pixel(0, y) + static_cast<size_t>(w) * c, out);
       // The features of the rows below, at and above y.
-      const Acc* around[3] = { band.get() + rowSize * (y - first - 1),
-        band.get() + rowSize * (y - first), band.get() + rowSize * (y - first + 1) };
-      // The masks of the unlike neighbours: direction by direction over the inner columns
-      // (branch-free loops that vectorise), then the first and last columns, whose reads are
-      // clamped.
+      const int j = y - first; // band row of y
+      const Acc* around[3] = { band.get() + rowSize * (j - 1), band.get() + rowSize * j,
+        band.get() + rowSize * (j + 1) };
+      // The masks of the unlike neighbours of the inner columns from the comparisons above
+      // (bits as vtkMLAATopology: E, NE, N, NW, W, SW, S, SE), then those of the first and
+      // last columns, whose reads are clamped.
       unsigned char* mask = masks.data();
-      std::fill(mask, mask + w, 0);
-      for (int bit = 0; bit < 8 && w > 2; ++bit)
-      {
-        const Acc* a = around[1];
-        const Acc* b = around[1 + offsets[bit][1]] + offsets[bit][0];
-        const unsigned char value = static_cast<unsigned char>(1 << bit);
-        if (count > 3)
-        {
-          UnlikeMasks<Acc, true>(a, b, plane, threshold2, value, 1, w - 1, mask);
-        }
-        else
-        {
-          UnlikeMasks<Acc, false>(a, b, plane, threshold2, value, 1, w - 1, mask);
-        }
-      }
+      const unsigned char* toE = along.data() + j * uw;
+      const unsigned char* toN = up.data() + j * uw;
+      const unsigned char* toNE = upRight.data() + j * uw;
+      const unsigned char* toNW = upLeft.data() + j * uw;
+      const unsigned char* toS = up.data() + (j - 1) * uw;
+      const unsigned char* toSW = upRight.data() + (j - 1) * uw; // from (x - 1, y - 1)
+      const unsigned char* toSE = upLeft.data() + (j - 1) * uw;  // from (x + 1, y - 1)
+      CombineUnlike(toE, toNE, toN, toNW, toSW, toS, toSE, 1, w - 1, mask);
       for (int x : { 0, w - 1 })
       {
         mask[x] = 0; // (a single column is done twice, to the same result)
@@ -1205,6 +1254,17 @@ void Reconstruct(const SliceSetup& setup, const T* input, vtkIdType inputRowStri
       }
       for (int x = 0; x < w; ++x)
       {
+        if ((x & 7) == 0 && x + 8 <= w)
+        {
+          // Most pixels have no unlike neighbour: eight at a time are skipped.
+          std::uint64_t eight;
+          std::memcpy(&eight, mask + x, sizeof(eight));
+          if (eight == 0)
+          {
+            x += 7;
+            continue;
+          }
+        }
         if (!selected[mask[x]])
         {
           continue;

@@ -19,7 +19,15 @@
  * adjacent to A). A pixel is selected for reconstruction (section 4.2) when its unlike
  * neighbours make exactly two components and its like neighbours exactly one:
  * T8(X) == 2 and T8(X') == 1. It then joins two pieces of a thin shape that point sampling cut
- * apart, and neither a line end, an isolated dot, a corner nor a straight line is touched.
+ * apart (a diagonal line missing one pixel is closed), and neither a line end, an isolated dot,
+ * the corner of a filled shape nor an unbroken straight line is touched.
+ *
+ * Caveats of the rule as the paper states it (8-adjacency among the neighbours): the corner
+ * pixel of a one-pixel-wide L is selected (its unlike neighbours are two pieces, its two like
+ * ones one) and takes the background's colour, which cuts the corner diagonally; and a
+ * one-pixel gap in a horizontal or vertical one-pixel line is not closed (the like neighbours
+ * of the gap are two pieces), while the two pixels beside the gap, across the line, are
+ * selected and take the line's colour.
  *
  * The paper's rule alone also selects the background pixels between two lines that pass close
  * to each other (a dense wireframe, converging iso-lines), and fills them: on the project's

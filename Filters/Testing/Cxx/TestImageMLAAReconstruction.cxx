@@ -5,6 +5,7 @@
 //   crossing another (of the same or another colour) are left alone;
 // - the mean is over the unlike neighbours, all components, alpha included, rounded to nearest;
 //   a change in alpha alone makes a neighbour unlike; non-finite pixels are never unlike;
+// - the rule's caveats (vtkMLAATopology) hold as documented;
 // - through the filter, the gapped line gives exactly the output of the closed line, and the
 //   restored pixel is in the output even with no edge anywhere; off by default, and off changes
 //   nothing; streamed equals unstreamed; the halo grows by one.
@@ -77,8 +78,8 @@ std::vector<std::pair<int, int>> Changed(vtkImageData* a, vtkImageData* b)
 
 // A grey picture with thin shapes: a diagonal line (5, 5) to (17, 17) with (11, 11) missing,
 // an isolated dot, a filled square (its corners), a "+" crossing of two lines, and another "+"
-// of two colours. (The corner pixel of a one-pixel-wide L is selected by the rule, T8 = 2 and
-// 1: it is replaced by the background, which turns the L's corner into a diagonal step.)
+// of two colours. (Not here, see the caveats of vtkMLAATopology: the corner pixel of a
+// one-pixel-wide L and the two pixels beside a gap in a straight one-pixel line are selected.)
 bool Shapes(int x, int y, bool gap, double& v)
 {
   v = Background;
@@ -144,6 +145,31 @@ void ClosesTheGapOnly()
     // The closed line is left as it is.
     MLAA_CHECK(Compare(ReconstructOnly<unsigned char>(closed), closed).Count == 0);
   }
+}
+
+void RuleCaveats()
+{
+  // As vtkMLAATopology documents: a gap in a straight one-pixel line stays open, and the two
+  // pixels beside it, across the line, take the line's colour; the corner pixel of a
+  // one-pixel-wide L takes the background's.
+  auto straight = MakeImage(12, 7, 1, VTK_UNSIGNED_CHAR, Background);
+  FillImage(straight, [](int x, int y, int, int) {
+    return (y == 3 && x >= 1 && x <= 10 && x != 6) ? Ink : Background;
+  });
+  auto out = ReconstructOnly<unsigned char>(straight);
+  const auto changed = Changed(straight, out);
+  MLAA_CHECK(changed.size() == 2 && changed[0] == std::make_pair(6, 2) &&
+    changed[1] == std::make_pair(6, 4));
+  MLAA_CHECK(GetValue(out, 6, 3) == Background && GetValue(out, 6, 4) == Ink);
+
+  auto ell = MakeImage(12, 12, 1, VTK_UNSIGNED_CHAR, Background);
+  FillImage(ell, [](int x, int y, int, int) {
+    return ((y == 3 && x >= 3 && x <= 9) || (x == 3 && y >= 3 && y <= 9)) ? Ink : Background;
+  });
+  auto ellOut = ReconstructOnly<unsigned char>(ell);
+  const auto ellChanged = Changed(ell, ellOut);
+  MLAA_CHECK(ellChanged.size() == 1 && ellChanged[0] == std::make_pair(3, 3));
+  MLAA_CHECK(GetValue(ellOut, 3, 3) == Background);
 }
 
 void MeanAndAlpha()
@@ -266,6 +292,7 @@ void ThroughTheFilter()
 int TestImageMLAAReconstruction(int, char*[])
 {
   ClosesTheGapOnly();
+  RuleCaveats();
   MeanAndAlpha();
   ThroughTheFilter();
   return Result();
