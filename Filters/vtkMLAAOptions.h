@@ -66,11 +66,12 @@
  *   edge detection. Each pixel's eight neighbours are classed as unlike it (the CIELAB
  *   difference of the Lab mode reaches the threshold, or alpha differs by as much) or like it;
  *   where the unlike neighbours form exactly two 8-connected pieces of at most two pixels each,
- *   all of one colour, and the like ones a single piece, the pixel is where point sampling
- *   dropped a piece of a thin shape (a wire, a streamline, an iso-line) and is replaced by the
- *   mean of the unlike neighbours (vtkMLAATopology). MLAA alone cannot restore such pixels. A
- *   line end, an isolated dot, a corner or a thin line crossing the pixel's own thin line are
- *   left alone. It restores lines that point sampling dashed, at their full colour, where a
+ *   all of one colour, on opposite sides of the pixel, and the like ones a single piece (two
+ *   for a straight line), the pixel is where point sampling dropped a piece of a thin shape (a
+ *   wire, a streamline, an iso-line) and is replaced by the mean of the unlike neighbours
+ *   (vtkMLAATopology has the rule and where it departs from the paper's). MLAA alone cannot
+ *   restore such pixels. A line end, an isolated dot, a corner or a thin line crossing the
+ *   pixel's own thin line are left alone. It restores lines that point sampling dashed, at their full colour, where a
  *   supersampled image shows them faint; and it also thickens lines that pass within a pixel
  *   of each other (dense wireframes). Off by default and in every preset: turn it on for
  *   images of sub-pixel wires and curves (the README has the measurements).

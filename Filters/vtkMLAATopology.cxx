@@ -1,6 +1,7 @@
 #include "vtkMLAATopology.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "vtkObjectFactory.h"
 
@@ -26,20 +27,22 @@ void vtkMLAATopology::GetNeighborOffset(int bit, int& dx, int& dy)
 //------------------------------------------------------------------------------
 int vtkMLAATopology::ConnexityNumber(int mask)
 {
-  int largest;
-  return CountComponents(mask, largest);
+  return static_cast<int>(FindPieces(mask).size());
 }
 
 //------------------------------------------------------------------------------
 int vtkMLAATopology::LargestComponent(int mask)
 {
-  int largest;
-  CountComponents(mask, largest);
+  int largest = 0;
+  for (const Piece& piece : FindPieces(mask))
+  {
+    largest = std::max(largest, piece.Size);
+  }
   return largest;
 }
 
 //------------------------------------------------------------------------------
-int vtkMLAATopology::CountComponents(int mask, int& largest)
+std::vector<vtkMLAATopology::Piece> vtkMLAATopology::FindPieces(int mask)
 {
   // Union-find over the positions in the mask; two positions are 8-adjacent when they are at
   // most one apart along x and along y (section 4.1, N8).
@@ -67,33 +70,74 @@ int vtkMLAATopology::CountComponents(int mask, int& largest)
       }
     }
   }
-  int components = 0;
-  int sizes[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
+  std::vector<Piece> pieces;
+  int index[8];
+  for (int i = 0; i < 8; ++i)
+  {
+    if (!((mask >> i) & 1))
+    {
+      continue;
+    }
+    const int r = root(i);
+    if (r == i)
+    {
+      index[r] = static_cast<int>(pieces.size());
+      pieces.push_back(Piece{});
+    }
+  }
   for (int i = 0; i < 8; ++i)
   {
     if ((mask >> i) & 1)
     {
-      components += root(i) == i ? 1 : 0;
-      ++sizes[root(i)];
+      Piece& piece = pieces[index[root(i)]];
+      ++piece.Size;
+      piece.X += Offsets[i][0];
+      piece.Y += Offsets[i][1];
     }
   }
-  largest = *std::max_element(sizes, sizes + 8);
-  return components;
+  return pieces;
+}
+
+//------------------------------------------------------------------------------
+double vtkMLAATopology::PiecesCosine(const Piece& a, const Piece& b)
+{
+  const double ax = static_cast<double>(a.X) / a.Size, ay = static_cast<double>(a.Y) / a.Size;
+  const double bx = static_cast<double>(b.X) / b.Size, by = static_cast<double>(b.Y) / b.Size;
+  const double na = std::sqrt(ax * ax + ay * ay), nb = std::sqrt(bx * bx + by * by);
+  return (na > 0.0 && nb > 0.0) ? (ax * bx + ay * by) / (na * nb) : 1.0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkMLAATopology::ComputeSelection(int mask)
+{
+  // Section 4.2: two pieces of the shape X, one piece of its complement. Ours: pieces no larger
+  // than a thin line's cross-section, on opposite sides of the pixel; and a gap in a straight
+  // line (two single pixels exactly opposite, the complement cut in two by the line) is closed
+  // too.
+  mask &= 255;
+  const std::vector<Piece> shape = FindPieces(mask);
+  if (shape.size() != 2 || shape[0].Size > MaximumPieceSize || shape[1].Size > MaximumPieceSize)
+  {
+    return false;
+  }
+  const double cosine = PiecesCosine(shape[0], shape[1]);
+  if (cosine > OppositeCosine)
+  {
+    return false;
+  }
+  const size_t complement = FindPieces(~mask & 255).size();
+  const bool straightGap = shape[0].Size == 1 && shape[1].Size == 1 && cosine < -0.999;
+  return complement == 1 || (complement == 2 && straightGap);
 }
 
 //------------------------------------------------------------------------------
 const unsigned char* vtkMLAATopology::GetSelectionTable()
 {
-  // Section 4.2: T8(X) == 2 and T8(complement of X) == 1; and (ours) no piece of X larger than
-  // the cross-section of a thin line.
   static const std::array<unsigned char, 256> table = [] {
     std::array<unsigned char, 256> t{};
     for (int m = 0; m < 256; ++m)
     {
-      t[m] = (ConnexityNumber(m) == 2 && ConnexityNumber(~m & 255) == 1 &&
-               LargestComponent(m) <= MaximumPieceSize)
-        ? 1
-        : 0;
+      t[m] = ComputeSelection(m) ? 1 : 0;
     }
     return t;
   }();

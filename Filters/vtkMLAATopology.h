@@ -16,25 +16,32 @@
  * ConnexityNumber(m) is T8 of section 4.1 for the set m: the number of 8-connected components
  * formed by the neighbour positions in m, adjacency being taken among those eight positions
  * (A itself is left out; every neighbour is 8-adjacent to A, so these are the components
- * adjacent to A). A pixel is selected for reconstruction (section 4.2) when its unlike
+ * adjacent to A). The paper selects a pixel for reconstruction (section 4.2) when its unlike
  * neighbours make exactly two components and its like neighbours exactly one:
- * T8(X) == 2 and T8(X') == 1. It then joins two pieces of a thin shape that point sampling cut
- * apart (a diagonal line missing one pixel is closed), and neither a line end, an isolated dot,
- * the corner of a filled shape nor an unbroken straight line is touched.
+ * T8(X) == 2 and T8(X') == 1: it then joins two pieces of a thin shape that point sampling cut
+ * apart (a diagonal line missing one pixel is closed).
  *
- * Caveats of the rule as the paper states it (8-adjacency among the neighbours): the corner
- * pixel of a one-pixel-wide L is selected (its unlike neighbours are two pieces, its two like
- * ones one) and takes the background's colour, which cuts the corner diagonally; and a
- * one-pixel gap in a horizontal or vertical one-pixel line is not closed (the like neighbours
- * of the gap are two pieces), while the two pixels beside the gap, across the line, are
- * selected and take the line's colour.
- *
- * The paper's rule alone also selects the background pixels between two lines that pass close
- * to each other (a dense wireframe, converging iso-lines), and fills them: on the project's
- * wireframe scene that took the aliasing removed by MLAA from 65 % to 6 %. We add that neither
- * piece of X holds more than MaximumPieceSize (two) neighbours, which is all a one-pixel line
- * crossing the 3 x 3 neighbourhood can hold; pieces of lines that merely pass by are larger.
- *
+ * Our additions. The paper's rule as it stands (8-adjacency among the neighbours) also selects
+ * the background pixels between two lines that pass within a pixel of each other (a dense
+ * wireframe, converging iso-lines) and fills them: on the project's wireframe scene that took
+ * the aliasing removed by MLAA from 65 % to 6 %. It selects the corner pixel of a one-pixel-wide
+ * L (which then takes the background's colour and cuts the corner), and the two pixels beside a
+ * gap in a horizontal or vertical one-pixel line (which take the line's colour), while the gap
+ * itself stays open (its like neighbours are two pieces). So a pixel is selected when:
+ * - its unlike neighbours X make exactly two pieces (T8(X) == 2, the paper's rule);
+ * - neither piece holds more than MaximumPieceSize (two) neighbours: all a one-pixel line
+ *   crossing the 3 x 3 neighbourhood holds (pieces of lines passing by, and the background
+ *   around a thin L's corner, are larger);
+ * - the two pieces lie on opposite sides of the pixel: the angle between their mean offsets is
+ *   at least 135 degrees (cosine at most OppositeCosine), as the two ends of a line through the
+ *   pixel are (the pixels beside a straight gap see them at 90 degrees);
+ * - its like neighbours make one piece (T8(X') == 1, the paper's rule), or two where the shape
+ *   is a straight line through the pixel (two single, exactly opposite neighbours): the gap in
+ *   a horizontal, vertical or 45-degree line is closed.
+ * A diagonal or knight's-move gap, and a straight one, are closed; a line end, an isolated dot,
+ * a corner (of a filled shape or of a thin L), a crossing of lines and lines passing by are left
+ * alone.
+
  * This class is the one generator of that rule: vtkImageMLAA reads GetSelectionTable() and
  * vtkOpenGLMLAAPass uploads GetSelectionBits() to its reconstruction shader. What "unlike"
  * means (the CIELAB difference of vtkMLAAOptions::Reconstruction) and the further condition that
@@ -48,6 +55,8 @@
 
 #include "vtkFiltersMLAAModule.h" // For export macro
 #include "vtkObject.h"
+
+#include <vector> // For std::vector
 
 class VTKFILTERSMLAA_EXPORT vtkMLAATopology : public vtkObject
 {
@@ -79,9 +88,14 @@ public:
   static constexpr int MaximumPieceSize = 2;
 
   /**
-   * Whether a pixel whose unlike neighbours are `unlikeMask` is selected for reconstruction:
-   * ConnexityNumber(unlikeMask) == 2, ConnexityNumber(~unlikeMask & 255) == 1 and
-   * LargestComponent(unlikeMask) <= MaximumPieceSize.
+   * The largest cosine of the angle between the two pieces' mean offsets for a pixel to be
+   * selected: -0.7, about 135 degrees (a knight's-move gap is exactly 135 degrees).
+   */
+  static constexpr double OppositeCosine = -0.7;
+
+  /**
+   * Whether a pixel whose unlike neighbours are `unlikeMask` is selected for reconstruction
+   * (the rule of the class description).
    */
   static bool IsSelected(int unlikeMask) { return GetSelectionTable()[unlikeMask & 255] != 0; }
 
@@ -102,7 +116,17 @@ protected:
   ~vtkMLAATopology() override = default;
 
 private:
-  static int CountComponents(int mask, int& largest);
+  // A piece (8-connected component) of a neighbourhood mask: its size and the sums of its
+  // neighbours' offsets.
+  struct Piece
+  {
+    int Size = 0;
+    int X = 0;
+    int Y = 0;
+  };
+  static std::vector<Piece> FindPieces(int mask);
+  static double PiecesCosine(const Piece& a, const Piece& b);
+  static bool ComputeSelection(int mask);
   vtkMLAATopology(const vtkMLAATopology&) = delete;
   void operator=(const vtkMLAATopology&) = delete;
 };

@@ -78,8 +78,8 @@ std::vector<std::pair<int, int>> Changed(vtkImageData* a, vtkImageData* b)
 
 // A grey picture with thin shapes: a diagonal line (5, 5) to (17, 17) with (11, 11) missing,
 // an isolated dot, a filled square (its corners), a "+" crossing of two lines, and another "+"
-// of two colours. (Not here, see the caveats of vtkMLAATopology: the corner pixel of a
-// one-pixel-wide L and the two pixels beside a gap in a straight one-pixel line are selected.)
+// of two colours; and (StraightGapAndThinCorner) the gap in a straight line is closed and a thin
+// L's corner kept.
 bool Shapes(int x, int y, bool gap, double& v)
 {
   v = Background;
@@ -147,20 +147,20 @@ void ClosesTheGapOnly()
   }
 }
 
-void RuleCaveats()
+void StraightGapAndThinCorner()
 {
-  // As vtkMLAATopology documents: a gap in a straight one-pixel line stays open, and the two
-  // pixels beside it, across the line, take the line's colour; the corner pixel of a
-  // one-pixel-wide L takes the background's.
+  // vtkMLAATopology's additions to the paper's rule: a gap in a straight one-pixel line is
+  // closed and nothing else changes (the paper's rule alone left the gap and filled the two
+  // pixels beside it); the corner pixel of a one-pixel-wide L is left alone (the paper's rule
+  // gave it the background's colour).
   auto straight = MakeImage(12, 7, 1, VTK_UNSIGNED_CHAR, Background);
   FillImage(straight, [](int x, int y, int, int) {
     return (y == 3 && x >= 1 && x <= 10 && x != 6) ? Ink : Background;
   });
   auto out = ReconstructOnly<unsigned char>(straight);
   const auto changed = Changed(straight, out);
-  MLAA_CHECK(changed.size() == 2 && changed[0] == std::make_pair(6, 2) &&
-    changed[1] == std::make_pair(6, 4));
-  MLAA_CHECK(GetValue(out, 6, 3) == Background && GetValue(out, 6, 4) == Ink);
+  MLAA_CHECK(changed.size() == 1 && changed[0] == std::make_pair(6, 3));
+  MLAA_CHECK(GetValue(out, 6, 3) == Ink);
 
   auto ell = MakeImage(12, 12, 1, VTK_UNSIGNED_CHAR, Background);
   FillImage(ell, [](int x, int y, int, int) {
@@ -168,8 +168,7 @@ void RuleCaveats()
   });
   auto ellOut = ReconstructOnly<unsigned char>(ell);
   const auto ellChanged = Changed(ell, ellOut);
-  MLAA_CHECK(ellChanged.size() == 1 && ellChanged[0] == std::make_pair(3, 3));
-  MLAA_CHECK(GetValue(ellOut, 3, 3) == Background);
+  MLAA_CHECK(ellChanged.empty());
 }
 
 void MeanAndAlpha()
@@ -292,7 +291,7 @@ void ThroughTheFilter()
 int TestImageMLAAReconstruction(int, char*[])
 {
   ClosesTheGapOnly();
-  RuleCaveats();
+  StraightGapAndThinCorner();
   MeanAndAlpha();
   ThroughTheFilter();
   return Result();
