@@ -32,6 +32,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <memory>
 #include <vector>
 
 namespace vtkDLAAStages
@@ -84,16 +86,11 @@ struct SliceSetup
 template <typename Acc>
 inline Acc BlendMask(Acc numerator, Acc divisor)
 {
-  if (!(numerator > Acc(0)))
-  {
-    return Acc(0);
-  }
-  if (divisor == Acc(0))
-  {
-    return Acc(1);
-  }
-  const Acc m = numerator / divisor;
-  return m > Acc(1) ? Acc(1) : (m > Acc(0) ? m : Acc(0));
+  // Without branches, so that the loops over rows vectorise: a positive numerator over a zero
+  // divisor is +infinity, which saturates to 1; a negative divisor gives 0.
+  const Acc q = numerator / divisor;
+  const Acc m = std::min(std::max(q, Acc(0)), Acc(1));
+  return numerator > Acc(0) ? m : Acc(0);
 }
 
 /** saturate(2 a - 1): the long-edge mask from the mean a of a blend mask. */
@@ -182,10 +179,11 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
     const int y0 = out.Y0 + static_cast<int>(begin) - halo;
     const size_t pw = static_cast<size_t>(paddedWidth);
     const size_t rowSize = pw * (c + 1); // c planes of channels, then the luminosity
-    std::vector<Acc> band(rowSize * rows);
-    std::vector<Acc> readBuffer(static_cast<size_t>(readWidth) * c);
-    auto plane = [&](int j, int k) { return band.data() + rowSize * j + pw * k; };
-    auto luma = [&](int j) { return band.data() + rowSize * j + pw * c; };
+    // Per-task buffers, written before they are read (not cleared).
+    std::unique_ptr<Acc[]> band(new Acc[rowSize * rows]);
+    std::unique_ptr<Acc[]> readBuffer(new Acc[static_cast<size_t>(readWidth) * c]);
+    auto plane = [&](int j, int k) { return band.get() + rowSize * j + pw * k; };
+    auto luma = [&](int j) { return band.get() + rowSize * j + pw * c; };
 
     // The rows, clamped to the available pixels, normalised and padded by clamping.
     bool anyNonFinite = false;
@@ -194,11 +192,11 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
       const int y = std::min(std::max(y0 + j, in.Y0), in.Y1);
       const T* p = input + static_cast<vtkIdType>(y - in.Y0) * inputRowStride +
         static_cast<vtkIdType>(readX0 - in.X0) * c;
-      reader.Row(p, readWidth, nullptr, readBuffer.data());
+      reader.Row(p, readWidth, nullptr, readBuffer.get());
       for (int k = 0; k < c; ++k)
       {
         Acc* dst = plane(j, k);
-        const Acc* src = readBuffer.data() + static_cast<size_t>(readWidth) * k;
+        const Acc* src = readBuffer.get() + static_cast<size_t>(readWidth) * k;
         std::fill(dst, dst + readOffset, src[0]);
         std::copy(src, src + readWidth, dst + readOffset);
         std::fill(dst + readOffset + readWidth, dst + paddedWidth, src[readWidth - 1]);
@@ -216,14 +214,17 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
       }
       if (mayHoldNonFinite)
       {
-        for (int k = 0; k < c && !anyNonFinite; ++k)
+        // (NaN fails every comparison; infinity is beyond the largest finite value.)
+        bool finite = true;
+        for (int k = 0; k < c; ++k)
         {
           const Acc* ck = plane(j, k);
           for (int i = 0; i < paddedWidth; ++i)
           {
-            anyNonFinite = anyNonFinite || !std::isfinite(ck[i]);
+            finite &= std::abs(ck[i]) <= std::numeric_limits<Acc>::max();
           }
         }
+        anyNonFinite = anyNonFinite || !finite;
       }
     }
 
@@ -231,9 +232,9 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
     // longRadius rows each side of the band; mx (a horizontal edge: blur along x) on the band's
     // rows and longRadius columns each side of the output.
     const int myRows = bandRows + 2 * longRadius; // my row m is band row j = m + halo - longRadius
-    std::vector<Acc> my(static_cast<size_t>(myRows) * width);
+    std::unique_ptr<Acc[]> my(new Acc[static_cast<size_t>(myRows) * width]);
     const int mxWidth = width + 2 * longRadius; // mx column m is padded column i = m + halo - longRadius
-    std::vector<Acc> mx(static_cast<size_t>(bandRows) * mxWidth);
+    std::unique_ptr<Acc[]> mx(new Acc[static_cast<size_t>(bandRows) * mxWidth]);
     for (int m = 0; m < myRows; ++m)
     {
       const int j = m + halo - longRadius;
@@ -242,7 +243,7 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
       const Acc* l0 = luma(j) + halo;
       const Acc* u1 = luma(j + 1) + halo;
       const Acc* u2 = luma(j + 2) + halo;
-      Acc* row = my.data() + static_cast<size_t>(m) * width;
+      Acc* row = my.get() + static_cast<size_t>(m) * width;
       std::fill(row, row + width, Acc(0)); // l(Hx), then the mask
       for (int n = 0; n < lumaCount; ++n)
       {
@@ -263,7 +264,7 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
     {
       const int j = r + halo;
       const int first = halo - longRadius; // padded column of mx column 0
-      Acc* row = mx.data() + static_cast<size_t>(r) * mxWidth;
+      Acc* row = mx.get() + static_cast<size_t>(r) * mxWidth;
       std::fill(row, row + mxWidth, Acc(0)); // l(Hy), then the mask
       for (int n = 0; n < lumaCount; ++n)
       {
@@ -335,8 +336,12 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
       }
     }
 
-    // The output pixels.
+    // The output pixels: a copy of the input row, where the pixels that change are then
+    // written.
     std::vector<Acc> result(c);
+    std::unique_ptr<Acc[]> sums(new Acc[2 * static_cast<size_t>(width)]);
+    Acc* ax = sums.get();         // sums of mx over the 17 pixels along x
+    Acc* ay = sums.get() + width; // sums of my over the 17 pixels along y
     for (int r = 0; r < bandRows; ++r)
     {
       const int j = r + halo;
@@ -344,9 +349,31 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
       const T* source = input + static_cast<vtkIdType>(y - in.Y0) * inputRowStride +
         static_cast<vtkIdType>(out.X0 - in.X0) * c;
       T* target = output + (static_cast<size_t>(begin) + r) * width * c;
-      const Acc* mxRow = mx.data() + static_cast<size_t>(r) * mxWidth + longRadius;
-      const Acc* myColumn = my.data() + static_cast<size_t>(r + longRadius) * width;
+      std::copy(source, source + static_cast<size_t>(width) * c, target);
+      const Acc* mxRow = mx.get() + static_cast<size_t>(r) * mxWidth + longRadius;
+      const Acc* myColumn = my.get() + static_cast<size_t>(r + longRadius) * width;
       const Acc* l0 = luma(j) + halo;
+      if (s.LongEdges)
+      {
+        // Summed in the same order for every pixel, whatever the band or piece.
+        std::fill(ax, ax + 2 * width, Acc(0));
+        for (int d = -LongEdgeRadius; d <= LongEdgeRadius; ++d)
+        {
+          const Acc* m = mxRow + d;
+          for (int x = 0; x < width; ++x)
+          {
+            ax[x] += m[x];
+          }
+        }
+        for (int d = -LongEdgeRadius; d <= LongEdgeRadius; ++d)
+        {
+          const Acc* m = myColumn + static_cast<ptrdiff_t>(d) * width;
+          for (int x = 0; x < width; ++x)
+          {
+            ay[x] += m[x];
+          }
+        }
+      }
       for (int x = 0; x < width; ++x)
       {
         const Acc mxp = mxRow[x];
@@ -356,14 +383,8 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
         bool alongX = false;
         if (s.LongEdges)
         {
-          Acc ax = 0, ay = 0;
-          for (int d = -LongEdgeRadius; d <= LongEdgeRadius; ++d)
-          {
-            ax += mxRow[x + d];
-            ay += myColumn[x + d * static_cast<ptrdiff_t>(width)];
-          }
-          const Acc mX = LongEdgeMask(ax * mean);
-          const Acc mY = LongEdgeMask(ay * mean);
+          const Acc mX = LongEdgeMask(ax[x] * mean);
+          const Acc mY = LongEdgeMask(ay[x] * mean);
           if ((mX > Acc(0)) != (mY > Acc(0)))
           {
             alongX = mX > Acc(0);
@@ -373,8 +394,7 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
         const bool isFrozen = !frozen.empty() && frozen[static_cast<size_t>(r) * width + x];
         if (isFrozen || (mxp == Acc(0) && myp == Acc(0) && longMask == Acc(0)))
         {
-          std::copy(source + x * c, source + (x + 1) * c, target + x * c);
-          continue;
+          continue; // copied
         }
         // The short-edge result: s = lerp(lerp(c, Bx, mx), By, my / 2).
         const int i = x + halo;
