@@ -48,7 +48,8 @@ public:
    * or 14-bit data stored in 16-bit integers needs it (SetValueRange(0, 4095) for 12 bits), or
    * its edges look 16 times fainter than they are. SetValueRangeToTypeDefault() restores the
    * defaults; GetValueRange() then holds [0, 1]. There is no automatic (data min/max) mode: it
-   * would make a streamed piece's result depend on the piece.
+   * would make a streamed piece's result depend on the piece; the `mlaa` tool's
+   * `--value-range auto` measures the whole image and sets the range.
    */
   virtual void SetValueRange(double lo, double hi);
   void SetValueRange(const double range[2]) { this->SetValueRange(range[0], range[1]); }
