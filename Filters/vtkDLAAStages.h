@@ -15,7 +15,8 @@
  * - per output pixel, the short-edge result (slide 23), the long-edge masks (the 17-pixel means
  *   of mx and my, slides 26 to 29), the noise rejection (slide 32) and the luminosity-matching
  *   interpolation with the neighbours across the edge (slides 31, 45 to 47).
- * Nothing full-size is allocated besides the output.
+ * Nothing full-size is allocated besides the output; each thread keeps its buffers (about
+ * 5 x (64 + 20) rows of floats) for its next task and update.
  *
  * Rows and columns follow VTK's image layout: y grows towards the top of the displayed image,
  * so the neighbour "above" a pixel is the next row (y + 1).
@@ -179,11 +180,35 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
     const int y0 = out.Y0 + static_cast<int>(begin) - halo;
     const size_t pw = static_cast<size_t>(paddedWidth);
     const size_t rowSize = pw * (c + 1); // c planes of channels, then the luminosity
-    // Per-task buffers, written before they are read (not cleared).
-    std::unique_ptr<Acc[]> band(new Acc[rowSize * rows]);
-    std::unique_ptr<Acc[]> readBuffer(new Acc[static_cast<size_t>(readWidth) * c]);
-    auto plane = [&](int j, int k) { return band.get() + rowSize * j + pw * k; };
-    auto luma = [&](int j) { return band.get() + rowSize * j + pw * c; };
+    // Per-thread buffers, kept from task to task and update to update (pool threads live on),
+    // written before they are read.
+    const size_t myRowsSize = static_cast<size_t>(bandRows + 2 * longRadius) * width;
+    const size_t mxSize = static_cast<size_t>(bandRows) * (width + 2 * longRadius);
+    static thread_local std::vector<Acc> scratch;
+    const size_t sizes[] = { rowSize * rows, static_cast<size_t>(readWidth) * c, myRowsSize,
+      mxSize, 2 * static_cast<size_t>(width) };
+    size_t needed = 0;
+    for (size_t size : sizes)
+    {
+      needed += size;
+    }
+    if (scratch.size() < needed)
+    {
+      scratch.resize(needed);
+    }
+    Acc* next = scratch.data();
+    auto take = [&next](size_t size) {
+      Acc* p = next;
+      next += size;
+      return p;
+    };
+    Acc* const band = take(sizes[0]);
+    Acc* const readBuffer = take(sizes[1]);
+    Acc* const my = take(sizes[2]);
+    Acc* const mx = take(sizes[3]);
+    Acc* const sums = take(sizes[4]);
+    auto plane = [&](int j, int k) { return band + rowSize * j + pw * k; };
+    auto luma = [&](int j) { return band + rowSize * j + pw * c; };
 
     // The rows, clamped to the available pixels, normalised and padded by clamping.
     bool anyNonFinite = false;
@@ -192,11 +217,11 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
       const int y = std::min(std::max(y0 + j, in.Y0), in.Y1);
       const T* p = input + static_cast<vtkIdType>(y - in.Y0) * inputRowStride +
         static_cast<vtkIdType>(readX0 - in.X0) * c;
-      reader.Row(p, readWidth, nullptr, readBuffer.get());
+      reader.Row(p, readWidth, nullptr, readBuffer);
       for (int k = 0; k < c; ++k)
       {
         Acc* dst = plane(j, k);
-        const Acc* src = readBuffer.get() + static_cast<size_t>(readWidth) * k;
+        const Acc* src = readBuffer + static_cast<size_t>(readWidth) * k;
         std::fill(dst, dst + readOffset, src[0]);
         std::copy(src, src + readWidth, dst + readOffset);
         std::fill(dst + readOffset + readWidth, dst + paddedWidth, src[readWidth - 1]);
@@ -232,9 +257,7 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
     // longRadius rows each side of the band; mx (a horizontal edge: blur along x) on the band's
     // rows and longRadius columns each side of the output.
     const int myRows = bandRows + 2 * longRadius; // my row m is band row j = m + halo - longRadius
-    std::unique_ptr<Acc[]> my(new Acc[static_cast<size_t>(myRows) * width]);
     const int mxWidth = width + 2 * longRadius; // mx column m is padded column i = m + halo - longRadius
-    std::unique_ptr<Acc[]> mx(new Acc[static_cast<size_t>(bandRows) * mxWidth]);
     for (int m = 0; m < myRows; ++m)
     {
       const int j = m + halo - longRadius;
@@ -243,7 +266,7 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
       const Acc* l0 = luma(j) + halo;
       const Acc* u1 = luma(j + 1) + halo;
       const Acc* u2 = luma(j + 2) + halo;
-      Acc* row = my.get() + static_cast<size_t>(m) * width;
+      Acc* row = my + static_cast<size_t>(m) * width;
       std::fill(row, row + width, Acc(0)); // l(Hx), then the mask
       for (int n = 0; n < lumaCount; ++n)
       {
@@ -264,7 +287,7 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
     {
       const int j = r + halo;
       const int first = halo - longRadius; // padded column of mx column 0
-      Acc* row = mx.get() + static_cast<size_t>(r) * mxWidth;
+      Acc* row = mx + static_cast<size_t>(r) * mxWidth;
       std::fill(row, row + mxWidth, Acc(0)); // l(Hy), then the mask
       for (int n = 0; n < lumaCount; ++n)
       {
@@ -339,9 +362,8 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
     // The output pixels: a copy of the input row, where the pixels that change are then
     // written.
     std::vector<Acc> result(c);
-    std::unique_ptr<Acc[]> sums(new Acc[2 * static_cast<size_t>(width)]);
-    Acc* ax = sums.get();         // sums of mx over the 17 pixels along x
-    Acc* ay = sums.get() + width; // sums of my over the 17 pixels along y
+    Acc* ax = sums;         // sums of mx over the 17 pixels along x
+    Acc* ay = sums + width; // sums of my over the 17 pixels along y
     for (int r = 0; r < bandRows; ++r)
     {
       const int j = r + halo;
@@ -350,8 +372,8 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
         static_cast<vtkIdType>(out.X0 - in.X0) * c;
       T* target = output + (static_cast<size_t>(begin) + r) * width * c;
       std::copy(source, source + static_cast<size_t>(width) * c, target);
-      const Acc* mxRow = mx.get() + static_cast<size_t>(r) * mxWidth + longRadius;
-      const Acc* myColumn = my.get() + static_cast<size_t>(r + longRadius) * width;
+      const Acc* mxRow = mx + static_cast<size_t>(r) * mxWidth + longRadius;
+      const Acc* myColumn = my + static_cast<size_t>(r + longRadius) * width;
       const Acc* l0 = luma(j) + halo;
       if (s.LongEdges)
       {
