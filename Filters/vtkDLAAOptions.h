@@ -37,6 +37,11 @@
  *    y with the left and right neighbours.
  * Flat regions (every response 0) and faint noise (Lambda * response <= Epsilon) are left
  * exactly as they are. Pixels whose neighbourhood holds NaN or infinity are left as they are.
+ * Details both back ends follow: "above" is the next row (y + 1, up on screen in VTK images and
+ * GL textures), and u is tried before d, left before right (on equal k the first wins); a
+ * neighbour with l(n) = l(c) is never used (no k). A pixel's neighbourhood is every pixel its
+ * result reads: the 5-pixel crosses (x +- 2, y +- 2) of the pixel and, with LongEdges, of every
+ * pixel up to 8 away along x or y.
  *
  * The settings:
  * - Epsilon (default 0.1, range [0, 1]) and Lambda (default 3, range [0, 100]): the contrast
