@@ -5,10 +5,11 @@
  *   mlaa --area-texture D OUTPUT
  *
  * Reads INPUT with OpenImageIO, antialiases it with vtkImageMLAA (Jimenez et al., "Practical
- * Morphological Antialiasing", GPU Pro 2, chapter 4) and writes OUTPUT in the format of its
- * extension and INPUT's pixel type. The options are those of vtkMLAAOptions, under the names
- * that class gives them (GetEdgeDetectionFromString, GetDebugOutputFromString), with its
- * defaults and ranges. `mlaa --help` says everything.
+ * Morphological Antialiasing", GPU Pro 2, chapter 4), or with vtkImageDLAA (directionally
+ * localized antialiasing) with --method dlaa, and writes OUTPUT in the format of its extension
+ * and INPUT's pixel type. The options are those of vtkMLAAOptions and vtkDLAAOptions, under the
+ * names those classes give them (GetEdgeDetectionFromString, GetDebugOutputFromString,
+ * GetLumaFunctionFromString), with their defaults and ranges. `mlaa --help` says everything.
  *
  * Errors are reported as one line on stderr starting with "mlaa: ", with exit status 1 (2 for a
  * bad command line); OUTPUT is then left as it was (see WriteImageFile).
@@ -20,7 +21,9 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkDLAAOptions.h"
 #include "vtkExecutive.h"
+#include "vtkImageDLAA.h"
 #include "vtkImageData.h"
 #include "vtkImageMLAA.h"
 #include "vtkLogger.h"
@@ -183,7 +186,8 @@ void PrintUsage(std::ostream& os)
   PrintWrapped(os, "", 0,
     "Removes staircase aliasing from the image INPUT with morphological antialiasing (MLAA: "
     "Jimenez et al., \"Practical Morphological Antialiasing\", GPU Pro 2, chapter 4; VTK's "
-    "vtkImageMLAA) and writes the result to OUTPUT.");
+    "vtkImageMLAA), or with directionally localized antialiasing (--method dlaa; vtkImageDLAA), "
+    "and writes the result to OUTPUT.");
   os << "\n";
   PrintWrapped(os, "", 0,
     "INPUT may be any image OpenImageIO reads (PNG, TIFF, OpenEXR, JPEG, ...): 8- or 16-bit, "
@@ -197,6 +201,14 @@ void PrintUsage(std::ostream& os)
   os << "\nOptions:\n";
 
   std::ostringstream text;
+  text << "The method: mlaa (morphological antialiasing: recognises the staircases of edges "
+          "and revectorises them; sharpest on still images) or dlaa (directionally localized "
+          "antialiasing, Andreev, GDC 2011: blurs each edge along its own direction; steadier "
+          "in animation). The options from --threshold to --debug are MLAA's, the --dlaa-* and "
+          "--long-edges ones DLAA's; giving one to the other method is an error. Default: mlaa.";
+  option("--method mlaa|dlaa", text);
+
+  text.str("");
   text << "Smallest difference between neighbouring pixels that is an edge, with the image's "
           "value range as 1; in ["
        << defaults->GetThresholdMinValue() << ", " << defaults->GetThresholdMaxValue()
@@ -292,6 +304,36 @@ void PrintUsage(std::ostream& os)
       column + 4, DescribeDebugOutput(d));
   }
 
+  vtkNew<vtkDLAAOptions> dlaaDefaults;
+  text.str("");
+  text << "DLAA: the offset of the contrast curve that turns an edge's high-pass response into "
+          "a blend weight (saturate(lambda * response - epsilon)); in ["
+       << dlaaDefaults->GetEpsilonMinValue() << ", " << dlaaDefaults->GetEpsilonMaxValue()
+       << "]. Responses below epsilon / lambda are left alone. Default: "
+       << dlaaDefaults->GetEpsilon() << ".";
+  option("--dlaa-epsilon E", text);
+
+  text.str("");
+  text << "DLAA: the gain of that contrast curve; in [" << dlaaDefaults->GetLambdaMinValue()
+       << ", " << dlaaDefaults->GetLambdaMaxValue()
+       << "]. Higher blends more. Default: " << dlaaDefaults->GetLambda() << ".";
+  option("--dlaa-lambda L", text);
+
+  text.str("");
+  text << "DLAA: the luminosity function, "
+       << vtkDLAAOptions::GetLumaFunctionAsString(vtkDLAAOptions::REC709)
+       << " (0.2126 R + 0.7152 G + 0.0722 B) or "
+       << vtkDLAAOptions::GetLumaFunctionAsString(vtkDLAAOptions::GREEN)
+       << " (the green channel). Default: "
+       << vtkDLAAOptions::GetLumaFunctionAsString(dlaaDefaults->GetLumaFunction()) << ".";
+  option("--dlaa-luma NAME", text);
+
+  text.str("");
+  text << "DLAA: whether long horizontal and vertical edges get the wide, colour-preserving "
+          "step (on) or only the 5-pixel blurs (off). Default: "
+       << (dlaaDefaults->GetLongEdges() ? "on" : "off") << ".";
+  option("--long-edges on|off", text);
+
   text.str("");
   text << "The values taken as 0 and 1 by edge detection (and, for floating-point images, when "
           "writing to an integer format), for every pixel type. Default: the range of the "
@@ -363,10 +405,19 @@ enum AlphaModes
   AlphaPremultiplied = 2
 };
 
+// The antialiasing methods (--method).
+enum Methods
+{
+  MethodMLAA = 0,
+  MethodDLAA = 1
+};
+
 struct CommandLine
 {
   bool Help = false;
+  int Method = MethodMLAA;
   vtkNew<vtkMLAAOptions> Options;
+  vtkNew<vtkDLAAOptions> DLAAOptions;
   std::string DepthImage;
   double ValueRange[2] = { 0.0, 1.0 }; // for floating-point images, unless given or measured
   int ValueRangeMode = 0;               // ValueRangeDefault, ValueRangeGiven or ValueRangeAuto
@@ -374,6 +425,8 @@ struct CommandLine
   int AreaTextureCellSize = 0;            // 0: antialias INPUT
   unsigned long long MaxPixels = 0;       // 0: mlaa::DefaultMaxPixels
   std::vector<std::string> FilterOptions; // the options given that configure the filter
+  std::vector<std::string> MLAAOnly;      // of those, the ones only MLAA takes
+  std::vector<std::string> DLAAOnly;      // of those, the ones only DLAA takes
   std::vector<std::string> Files;
 };
 
@@ -559,6 +612,42 @@ void ParseCommandLine(const std::vector<std::string>& args, CommandLine& cl)
     {
       options->SetReconstruction(takeSwitch());
     }
+    else if (name == "--method")
+    {
+      const std::string text = takeValues(1)[0];
+      if (text != "mlaa" && text != "dlaa")
+      {
+        throw UsageError("--method: '" + text + "' is neither mlaa nor dlaa");
+      }
+      cl.Method = text == "dlaa" ? MethodDLAA : MethodMLAA;
+      continue; // not an option of either method
+    }
+    else if (name == "--dlaa-epsilon")
+    {
+      vtkDLAAOptions* dlaa = cl.DLAAOptions;
+      dlaa->SetEpsilon(takeNumber(dlaa->GetEpsilonMinValue(), dlaa->GetEpsilonMaxValue()));
+    }
+    else if (name == "--dlaa-lambda")
+    {
+      vtkDLAAOptions* dlaa = cl.DLAAOptions;
+      dlaa->SetLambda(takeNumber(dlaa->GetLambdaMinValue(), dlaa->GetLambdaMaxValue()));
+    }
+    else if (name == "--dlaa-luma")
+    {
+      const std::string text = takeValues(1)[0];
+      const int function = vtkDLAAOptions::GetLumaFunctionFromString(text.c_str());
+      if (function < 0)
+      {
+        throw UsageError("--dlaa-luma: unknown luminosity function '" + text +
+          "' (expected " + vtkDLAAOptions::GetLumaFunctionAsString(vtkDLAAOptions::REC709) +
+          " or " + vtkDLAAOptions::GetLumaFunctionAsString(vtkDLAAOptions::GREEN) + ")");
+      }
+      cl.DLAAOptions->SetLumaFunction(function);
+    }
+    else if (name == "--long-edges")
+    {
+      cl.DLAAOptions->SetLongEdges(takeSwitch());
+    }
     else if (name == "--preset")
     {
       const std::string text = takeValues(1)[0];
@@ -668,6 +757,15 @@ void ParseCommandLine(const std::vector<std::string>& args, CommandLine& cl)
       throw UsageError("unknown option '" + arg + "'");
     }
     cl.FilterOptions.push_back(name);
+    if (name == "--dlaa-epsilon" || name == "--dlaa-lambda" || name == "--dlaa-luma" ||
+      name == "--long-edges")
+    {
+      cl.DLAAOnly.push_back(name);
+    }
+    else if (name != "--value-range")
+    {
+      cl.MLAAOnly.push_back(name);
+    }
   }
 
   // What goes with what.
@@ -695,6 +793,14 @@ void ParseCommandLine(const std::vector<std::string>& args, CommandLine& cl)
   if (cl.Files.size() > 2)
   {
     throw UsageError("unexpected argument '" + cl.Files[2] + "'");
+  }
+  if (cl.Method == MethodDLAA && !cl.MLAAOnly.empty())
+  {
+    throw UsageError(cl.MLAAOnly.front() + " is an option of --method mlaa, not dlaa");
+  }
+  if (cl.Method == MethodMLAA && !cl.DLAAOnly.empty())
+  {
+    throw UsageError(cl.DLAAOnly.front() + " is an option of --method dlaa (add --method dlaa)");
   }
   const bool depthEdges = options->GetEdgeDetection() == vtkMLAAOptions::DEPTH;
   if (depthEdges && cl.DepthImage.empty())
@@ -873,8 +979,20 @@ void Antialias(const CommandLine& cl)
   }
   cl.Options->SetPremultipliedAlpha(premultiplied);
 
-  vtkNew<vtkImageMLAA> filter;
-  filter->SetOptions(cl.Options);
+  vtkSmartPointer<vtkImageAntialiasingAlgorithm> filter;
+  vtkSmartPointer<vtkImageMLAA> mlaaFilter;
+  if (cl.Method == MethodDLAA)
+  {
+    auto dlaa = vtkSmartPointer<vtkImageDLAA>::New();
+    dlaa->SetOptions(cl.DLAAOptions);
+    filter = dlaa;
+  }
+  else
+  {
+    mlaaFilter = vtkSmartPointer<vtkImageMLAA>::New();
+    mlaaFilter->SetOptions(cl.Options);
+    filter = mlaaFilter;
+  }
   double valueRange[2] = { cl.ValueRange[0], cl.ValueRange[1] };
   if (cl.ValueRangeMode == ValueRangeAuto && MeasureValueRange(input.Image, valueRange))
   {
@@ -906,7 +1024,7 @@ void Antialias(const CommandLine& cl)
         mlaa::Printable(inputPath) + "' is " + std::to_string(input.Spec.width) + "x" +
         std::to_string(input.Spec.height));
     }
-    filter->SetDepthInputData(depth.Image);
+    mlaaFilter->SetDepthInputData(depth.Image); // --depth-image is refused with dlaa
   }
 
   VTKMessages messages(filter);
@@ -919,7 +1037,8 @@ void Antialias(const CommandLine& cl)
   if (!error.empty() || !scalars || dims[0] != input.Spec.width || dims[1] != input.Spec.height)
   {
     throw mlaa::Error(mlaa::Printable(inputPath) +
-      ": cannot antialias: " + (error.empty() ? std::string("vtkImageMLAA produced no image") : error));
+      ": cannot antialias: " +
+      (error.empty() ? std::string(filter->GetClassName()) + " produced no image" : error));
   }
   const std::string warnings = messages.GetWarnings();
   if (!warnings.empty())
