@@ -18,10 +18,10 @@
 
 using namespace vtkOpenGLAntialiasingPassInternals;
 
-// ------------------------------------------------------------------------------
+//------------------------------------------------------------------------------
 vtkOpenGLAntialiasingPass::vtkOpenGLAntialiasingPass() = default;
 
-// ------------------------------------------------------------------------------
+//------------------------------------------------------------------------------
 vtkOpenGLAntialiasingPass::~vtkOpenGLAntialiasingPass()
 {
   if (this->ColorTexture || this->DelegateFramebuffer || this->WorkFramebuffer)
@@ -31,7 +31,7 @@ vtkOpenGLAntialiasingPass::~vtkOpenGLAntialiasingPass()
   }
 }
 
-// ------------------------------------------------------------------------------
+//------------------------------------------------------------------------------
 void vtkOpenGLAntialiasingPass::PrepareTargets(const Frame& frame, bool depth)
 {
   vtkOpenGLRenderWindow* renWin = frame.Window;
@@ -72,7 +72,7 @@ void vtkOpenGLAntialiasingPass::PrepareTargets(const Frame& frame, bool depth)
   }
 }
 
-// ------------------------------------------------------------------------------
+//------------------------------------------------------------------------------
 void vtkOpenGLAntialiasingPass::RenderDelegateToTextures(
   const vtkRenderState* s, int width, int height, bool composite)
 {
@@ -104,7 +104,7 @@ void vtkOpenGLAntialiasingPass::RenderDelegateToTextures(
   this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
 }
 
-// ------------------------------------------------------------------------------
+//------------------------------------------------------------------------------
 void vtkOpenGLAntialiasingPass::CopyTargetToColorTexture(
   const Frame& frame, unsigned int targetBinding, unsigned int targetBuffer)
 {
@@ -119,7 +119,7 @@ void vtkOpenGLAntialiasingPass::CopyTargetToColorTexture(
   vtkOpenGLFramebufferObject::Blit(source, destination, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
-// ------------------------------------------------------------------------------
+//------------------------------------------------------------------------------
 void vtkOpenGLAntialiasingPass::ShaderVariant::Release(vtkWindow* window)
 {
   if (this->Quad)
@@ -131,7 +131,7 @@ void vtkOpenGLAntialiasingPass::ShaderVariant::Release(vtkWindow* window)
   this->Defines.clear();
 }
 
-// ------------------------------------------------------------------------------
+//------------------------------------------------------------------------------
 bool vtkOpenGLAntialiasingPass::ReadyQuad(
   vtkOpenGLRenderWindow* renWin, ShaderVariant& variant, const char* fs, const std::string& defines)
 {
@@ -162,7 +162,7 @@ bool vtkOpenGLAntialiasingPass::ReadyQuad(
   return true;
 }
 
-// ------------------------------------------------------------------------------
+//------------------------------------------------------------------------------
 void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
 {
   vtkOpenGLClearErrorMacro();
@@ -298,7 +298,7 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
   vtkOpenGLCheckErrorMacro("failed after vtkOpenGLAntialiasingPass::Render");
 }
 
-// ------------------------------------------------------------------------------
+//------------------------------------------------------------------------------
 void vtkOpenGLAntialiasingPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
@@ -309,7 +309,7 @@ void vtkOpenGLAntialiasingPass::ReleaseGraphicsResources(vtkWindow* w)
   DeleteObject(this->DepthTexture, w);
 }
 
-// ------------------------------------------------------------------------------
+//------------------------------------------------------------------------------
 vtkIdType vtkOpenGLAntialiasingPass::GetTargetMemorySize()
 {
   const int colorBytes =
@@ -318,7 +318,7 @@ vtkIdType vtkOpenGLAntialiasingPass::GetTargetMemorySize()
     this->GetMethodTargetMemorySize();
 }
 
-// ------------------------------------------------------------------------------
+//------------------------------------------------------------------------------
 void vtkOpenGLAntialiasingPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

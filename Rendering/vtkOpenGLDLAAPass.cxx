@@ -24,13 +24,13 @@ using namespace vtkOpenGLAntialiasingPassInternals;
 
 vtkStandardNewMacro(vtkOpenGLDLAAPass);
 
-// ------------------------------------------------------------------------------
+//------------------------------------------------------------------------------
 vtkOpenGLDLAAPass::vtkOpenGLDLAAPass()
 {
   this->Options = vtkDLAAOptions::New();
 }
 
-// ------------------------------------------------------------------------------
+//------------------------------------------------------------------------------
 vtkOpenGLDLAAPass::~vtkOpenGLDLAAPass()
 {
   if (this->MasksTexture || this->MasksQuad.Quad || this->FilterQuad.Quad)
@@ -41,7 +41,7 @@ vtkOpenGLDLAAPass::~vtkOpenGLDLAAPass()
   this->Options->Delete();
 }
 
-// ------------------------------------------------------------------------------
+//------------------------------------------------------------------------------
 void vtkOpenGLDLAAPass::SetOptions(vtkDLAAOptions* options)
 {
   if (vtkDLAAOptions::Assign(this, this->Options, options))
@@ -50,19 +50,19 @@ void vtkOpenGLDLAAPass::SetOptions(vtkDLAAOptions* options)
   }
 }
 
-// ------------------------------------------------------------------------------
+//------------------------------------------------------------------------------
 vtkMTimeType vtkOpenGLDLAAPass::GetMTime()
 {
   return std::max(this->Superclass::GetMTime(), this->Options->GetMTime());
 }
 
-// ------------------------------------------------------------------------------
+//------------------------------------------------------------------------------
 void vtkOpenGLDLAAPass::SubstituteShaderSnippets(std::string& source)
 {
   vtkShaderProgram::Substitute(source, "//VTK::DLAA::Luma", vtkDLAALuma, false);
 }
 
-// ------------------------------------------------------------------------------
+//------------------------------------------------------------------------------
 bool vtkOpenGLDLAAPass::PrepareMethodTargets(const Frame& frame)
 {
   if (!this->MasksTexture)
@@ -70,12 +70,21 @@ bool vtkOpenGLDLAAPass::PrepareMethodTargets(const Frame& frame)
     this->MasksTexture = NewTexture(frame.Window);
   }
   // Full floats: the 17-pixel means of the masks follow the CPU's float arithmetic (half floats
-  // would move the noise rejection's threshold by their rounding).
-  return AllocateColorTarget(
-    this->MasksTexture, frame.Width, frame.Height, 2, VTK_FLOAT, false, GL_RG32F);
+  // would move the noise rejection's threshold by their rounding). With long edges the texture
+  // extends 8 pixels beyond each side of the image, where the 17-pixel windows of the pixels
+  // near the border read masks computed from clamped colours (vtkDLAAMasksFS.glsl).
+  const int padding = this->GetMasksPadding();
+  return AllocateColorTarget(this->MasksTexture, frame.Width + 2 * padding,
+    frame.Height + 2 * padding, 2, VTK_FLOAT, false, GL_RG32F);
 }
 
-// ------------------------------------------------------------------------------
+//------------------------------------------------------------------------------
+int vtkOpenGLDLAAPass::GetMasksPadding()
+{
+  return this->Options->GetLongEdges() ? vtkDLAAOptions::LongEdgeRadius : 0;
+}
+
+//------------------------------------------------------------------------------
 bool vtkOpenGLDLAAPass::ComputeMasks(const Frame& frame)
 {
   vtkOpenGLState* ostate = frame.Window->GetState();
@@ -83,9 +92,12 @@ bool vtkOpenGLDLAAPass::ComputeMasks(const Frame& frame)
   fbo->Bind();
   fbo->AddColorAttachment(0, this->MasksTexture);
   fbo->ActivateDrawBuffer(0);
-  fbo->StartNonOrtho(frame.Width, frame.Height);
-  ostate->vtkglViewport(0, 0, frame.Width, frame.Height);
-  ostate->vtkglScissor(0, 0, frame.Width, frame.Height);
+  const int padding = this->GetMasksPadding();
+  const int width = frame.Width + 2 * padding;
+  const int height = frame.Height + 2 * padding;
+  fbo->StartNonOrtho(width, height);
+  ostate->vtkglViewport(0, 0, width, height);
+  ostate->vtkglScissor(0, 0, width, height);
   ostate->vtkglDisable(GL_BLEND);
   ostate->vtkglDisable(GL_DEPTH_TEST);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -99,12 +111,13 @@ bool vtkOpenGLDLAAPass::ComputeMasks(const Frame& frame)
   program->SetUniformi("colorTexture", this->ColorTexture->GetTextureUnit());
   program->SetUniformf("lambda", static_cast<float>(this->Options->GetLambda()));
   program->SetUniformf("epsilon", static_cast<float>(this->Options->GetEpsilon()));
+  program->SetUniformi("padding", padding);
   this->MasksQuad.Quad->Render();
   this->ColorTexture->Deactivate();
   return true;
 }
 
-// ------------------------------------------------------------------------------
+//------------------------------------------------------------------------------
 bool vtkOpenGLDLAAPass::Filter(const Frame& frame)
 {
   vtkOpenGLState* ostate = frame.Window->GetState();
@@ -145,6 +158,7 @@ bool vtkOpenGLDLAAPass::Filter(const Frame& frame)
   this->MasksTexture->Activate();
   program->SetUniformi("colorTexture", this->ColorTexture->GetTextureUnit());
   program->SetUniformi("masksTexture", this->MasksTexture->GetTextureUnit());
+  program->SetUniformi("padding", this->GetMasksPadding());
   if (!frame.InPlace)
   {
     this->DepthTexture->Activate();
@@ -160,7 +174,7 @@ bool vtkOpenGLDLAAPass::Filter(const Frame& frame)
   return true;
 }
 
-// ------------------------------------------------------------------------------
+//------------------------------------------------------------------------------
 bool vtkOpenGLDLAAPass::Antialias(const Frame& frame)
 {
   vtkOpenGLState* ostate = frame.Window->GetState();
@@ -170,7 +184,7 @@ bool vtkOpenGLDLAAPass::Antialias(const Frame& frame)
   return computed && this->Filter(frame);
 }
 
-// ------------------------------------------------------------------------------
+//------------------------------------------------------------------------------
 void vtkOpenGLDLAAPass::ReleaseMethodResources(vtkWindow* w)
 {
   this->MasksQuad.Release(w);
@@ -178,19 +192,19 @@ void vtkOpenGLDLAAPass::ReleaseMethodResources(vtkWindow* w)
   DeleteObject(this->MasksTexture, w);
 }
 
-// ------------------------------------------------------------------------------
+//------------------------------------------------------------------------------
 vtkIdType vtkOpenGLDLAAPass::GetDLAATargetMemorySize()
 {
   return TextureBytes(this->MasksTexture, 8);
 }
 
-// ------------------------------------------------------------------------------
+//------------------------------------------------------------------------------
 vtkIdType vtkOpenGLDLAAPass::GetMethodTargetMemorySize()
 {
   return this->GetDLAATargetMemorySize();
 }
 
-// ------------------------------------------------------------------------------
+//------------------------------------------------------------------------------
 void vtkOpenGLDLAAPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

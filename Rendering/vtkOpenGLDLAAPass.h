@@ -9,8 +9,9 @@
  * opaque window, the filter run on the RGB screenshot):
  * 1. the short-edge blend masks mx, my of every pixel into an RG32F texture (full floats, so
  *    that their exact 17-pixel means for the long edges follow the CPU's float arithmetic; -1
- *    marks a pixel whose 5-pixel cross holds a colour that is not finite)
- *    (vtkDLAAMasksFS.glsl);
+ *    marks a pixel whose 5-pixel cross holds a colour that is not finite); with LongEdges the
+ *    texture extends 8 pixels beyond each side of the image, where masks are computed from
+ *    colours clamped to the border (vtkDLAAMasksFS.glsl);
  * 2. the short-edge blur and, with LongEdges, the long-edge masks (exact 17-tap means of the
  *    masks), the noise rejection and the move of the pixel towards the luminosity of the
  *    17-pixel mean colour, written into the renderer's viewport (vtkDLAAFS.glsl). In place,
@@ -68,7 +69,8 @@ public:
   vtkMTimeType GetMTime() override;
 
   /**
-   * Bytes of the DLAA-specific target alone (the RG32F masks texture: 8 bytes per pixel).
+   * Bytes of the DLAA-specific target alone (the RG32F masks texture: 8 bytes per pixel, of an
+   * image 16 pixels wider and higher with LongEdges).
    */
   vtkIdType GetDLAATargetMemorySize();
 
@@ -89,6 +91,8 @@ private:
   vtkOpenGLDLAAPass(const vtkOpenGLDLAAPass&) = delete;
   void operator=(const vtkOpenGLDLAAPass&) = delete;
 
+  // Pixels of MasksTexture beyond each side of the image: 8 with long edges, else 0.
+  int GetMasksPadding();
   // Pass 1 into MasksTexture.
   bool ComputeMasks(const Frame& frame);
   // Pass 2 into the target viewport.

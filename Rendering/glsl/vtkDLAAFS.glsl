@@ -28,8 +28,8 @@ in vec2 texCoord;
 
 uniform sampler2D colorTexture; // the delegate's image
 uniform sampler2D depthTexture; // the delegate's depth (not in place)
-uniform sampler2D masksTexture; // pass 1 output
-
+uniform sampler2D masksTexture; // pass 1 output, `padding` pixels larger each side
+uniform int padding;
 //VTK::DLAA::Luma
 
 ivec2 last;
@@ -86,7 +86,8 @@ void main()
   gl_FragDepth = texelFetch(depthTexture, p, 0).r;
 #endif
   vec4 c = texelFetch(colorTexture, p, 0);
-  vec4 m = texelFetch(masksTexture, p, 0);
+  ivec2 pm = p + ivec2(padding); // p in the masks texture
+  vec4 m = texelFetch(masksTexture, pm, 0);
   if (m.x < 0.0)
   {
     leave(c); // the 5-pixel cross holds a colour that is not finite
@@ -101,8 +102,8 @@ void main()
   bool bad = false;
   for (int i = -8; i <= 8; ++i)
   {
-    vec4 mX = texelFetch(masksTexture, clamp(p + ivec2(i, 0), ivec2(0), last), 0);
-    vec4 mY = texelFetch(masksTexture, clamp(p + ivec2(0, i), ivec2(0), last), 0);
+    vec4 mX = texelFetch(masksTexture, pm + ivec2(i, 0), 0);
+    vec4 mY = texelFetch(masksTexture, pm + ivec2(0, i), 0);
     sumX += mX.x;
     sumY += mY.y;
     bad = bad || mX.x < 0.0 || mY.x < 0.0;

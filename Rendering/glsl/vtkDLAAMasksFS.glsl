@@ -4,9 +4,12 @@
 
 // DLAA pass 1 of 2: the short-edge blend masks of every pixel (vtkDLAAOptions, step 1), into an
 // RG32F texture (full floats, so that their 17-pixel means follow the CPU's arithmetic) that
-// the second pass reads at the pixel itself and, for long edges, over 17-pixel windows. Per
-// pixel p with colour c and its four neighbours at distance 1 and 2 along x (reads clamped to
-// the image's border):
+// the second pass reads at the pixel itself and, for long edges, over 17-pixel windows. The
+// texture extends `padding` pixels (8 with long edges, else 0) beyond each side of the image:
+// the masks of the pixels beyond the border, which the 17-pixel windows of the pixels near it
+// average, are computed by the same formulas from colour reads clamped to the border (as
+// vtkImageDLAA computes them). Per pixel p with colour c and its four neighbours at distance
+// 1 and 2 along x (reads clamped to the image's border):
 //   Hx = |sum - 4 c| / 4 (per channel), Bx = (sum + 2 c) / 6, and Hy, By along y;
 //   mx = saturate((lambda * l(Hy) - epsilon) / l(Bx)) (a horizontal edge: blurred along x),
 //   my = saturate((lambda * l(Hx) - epsilon) / l(By)) (a vertical edge: blurred along y),
@@ -19,11 +22,12 @@
 //
 // Must match vtkImageDLAA.
 
-in vec2 texCoord;
+in vec2 texCoord; // over the masks texture
 
 uniform sampler2D colorTexture; // the delegate's image
 uniform float lambda;
 uniform float epsilon;
+uniform int padding; // pixels of the masks texture beyond each side of the image
 
 //VTK::DLAA::Luma
 
@@ -41,9 +45,10 @@ float blendMask(float highPass, float blur)
 void main()
 {
   ivec2 size = textureSize(colorTexture, 0);
-  ivec2 p = ivec2(texCoord * vec2(size));
+  // The fragment's pixel of the masks texture is the image pixel p shifted by the padding.
+  ivec2 p = ivec2(texCoord * vec2(size + ivec2(2 * padding))) - ivec2(padding);
   ivec2 last = size - ivec2(1);
-  vec4 c = texelFetch(colorTexture, p, 0);
+  vec4 c = texelFetch(colorTexture, clamp(p, ivec2(0), last), 0);
   vec4 sumX = texelFetch(colorTexture, clamp(p - ivec2(2, 0), ivec2(0), last), 0) +
     texelFetch(colorTexture, clamp(p - ivec2(1, 0), ivec2(0), last), 0) +
     texelFetch(colorTexture, clamp(p + ivec2(1, 0), ivec2(0), last), 0) +

@@ -137,8 +137,8 @@ int TestDLAAPass(int, char*[])
   messages->Watch(pass);
   MLAA_CHECK(pass->GetTargetMemorySize() == 0);
   auto defaults = vtkMLAAScenes::Capture(scene.Window);
-  MLAA_CHECK(pass->GetDLAATargetMemorySize() == 300 * 200 * 8);
-  MLAA_CHECK(pass->GetTargetMemorySize() == 300 * 200 * (8 + 4));
+  MLAA_CHECK(pass->GetDLAATargetMemorySize() == 316 * 216 * 8);
+  MLAA_CHECK(pass->GetTargetMemorySize() == 316 * 216 * 8 + 300 * 200 * 4);
 
   pass->GetOptions()->SetLambda(0.0);
   MLAA_CHECK(Compare(scene.Plain, vtkMLAAScenes::Capture(scene.Window), 0.0).Count == 0);
@@ -163,7 +163,7 @@ int TestDLAAPass(int, char*[])
 
   scene.Window->SetSize(321, 243);
   auto resized = vtkMLAAScenes::Capture(scene.Window);
-  MLAA_CHECK(pass->GetDLAATargetMemorySize() == 321 * 243 * 8);
+  MLAA_CHECK(pass->GetDLAATargetMemorySize() == 337 * 259 * 8);
   pass->ReleaseGraphicsResources(scene.Window);
   MLAA_CHECK(pass->GetTargetMemorySize() == 0);
   MLAA_CHECK(Compare(resized, vtkMLAAScenes::Capture(scene.Window), 0.0).Count == 0);
