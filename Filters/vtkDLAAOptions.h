@@ -34,15 +34,16 @@
  *    Mx > 0: the 17-pixel mean colour along x (p - 8 .. p + 8) is only a target luminosity t,
  *    never a colour (a distant colour would bleed); the pixel is moved towards the neighbour
  *    above (u) or below (d) until its luminosity is t: with k = (t - l(c)) / (l(n) - l(c)) for
- *    n = u and n = d, the first of u, d whose k lies in (0, 1] (the smaller k if both do; u on
- *    equal k) gives q = lerp(c, n, k), else q = c; and the result is lerp(s, q, Mx). For My > 0
- *    the same along y with the left and right neighbours (left on equal k). "Above" is the next
- *    row, y + 1: VTK's images and GL textures both have row 0 at the bottom.
+ *    n = u and n = d, the first of u, d whose k lies in (0, 1] (the smaller k if both do) gives
+ *    q = lerp(c, n, k), else q = c; and the result is lerp(s, q, Mx). For My > 0 the same along
+ *    y with the left and right neighbours.
  * Flat regions (every response 0) and faint noise (Lambda * response <= Epsilon) are left
- * exactly as they are. Pixels that read NaN or infinity are left as they are: those whose
- * 5-pixel cross (p and its neighbours at distance 1 and 2 along x and y) holds one and, with
- * LongEdges, those with such a pixel within 8 along x or y (whose masks the long masks
- * average); the masks of such a pixel are 0.
+ * exactly as they are. Pixels whose neighbourhood holds NaN or infinity are left as they are.
+ * Details both back ends follow: "above" is the next row (y + 1, up on screen in VTK images and
+ * GL textures), and u is tried before d, left before right (on equal k the first wins); a
+ * neighbour with l(n) = l(c) is never used (no k). A pixel's neighbourhood is every pixel its
+ * result reads: the 5-pixel crosses (x +- 2, y +- 2) of the pixel and, with LongEdges, of every
+ * pixel up to 8 away along x or y.
  *
  * The settings:
  * - Epsilon (default 0.1, range [0, 1]) and Lambda (default 3, range [0, 100]): the contrast

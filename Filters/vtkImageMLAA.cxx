@@ -52,45 +52,6 @@ vtkMTimeType vtkImageMLAA::GetMTime()
 }
 
 //------------------------------------------------------------------------------
-void vtkImageMLAA::SetValueRange(double lo, double hi)
-{
-  if (this->ValueRangeIsTypeDefault || this->ValueRange[0] != lo || this->ValueRange[1] != hi)
-  {
-    this->ValueRange[0] = lo;
-    this->ValueRange[1] = hi;
-    this->ValueRangeIsTypeDefault = false;
-    this->Modified();
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkImageMLAA::SetValueRangeToTypeDefault()
-{
-  if (!this->ValueRangeIsTypeDefault)
-  {
-    this->ValueRange[0] = 0.0;
-    this->ValueRange[1] = 1.0;
-    this->ValueRangeIsTypeDefault = true;
-    this->Modified();
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkImageMLAA::GetEffectiveValueRange(int scalarType, double range[2])
-{
-  range[0] = this->ValueRange[0];
-  range[1] = this->ValueRange[1];
-  if (this->ValueRangeIsTypeDefault && scalarType != VTK_FLOAT && scalarType != VTK_DOUBLE)
-  {
-    switch (scalarType)
-    {
-      vtkTemplateMacro(range[0] = static_cast<double>(std::numeric_limits<VTK_TT>::lowest());
-                       range[1] = static_cast<double>(std::numeric_limits<VTK_TT>::max()));
-    }
-  }
-}
-
-//------------------------------------------------------------------------------
 void vtkImageMLAA::SetDepthInputData(vtkDataObject* depth)
 {
   this->SetInputData(1, depth);
@@ -170,109 +131,26 @@ int vtkImageMLAA::RequestInformation(
 }
 
 //------------------------------------------------------------------------------
-int vtkImageMLAA::RequestUpdateExtent(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  int extent[6];
-  outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
-  const int pad = this->GetInputPadding();
-
-  for (int port = 0; port < 2; ++port)
-  {
-    vtkInformation* inInfo = inputVector[port]->GetInformationObject(0);
-    if (!inInfo)
-    {
-      continue;
-    }
-    int whole[6];
-    inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
-    int padded[6];
-    for (int axis = 0; axis < 3; ++axis)
-    {
-      const int p = axis < 2 ? pad : 0; // z slices are independent
-      padded[2 * axis] = std::max(extent[2 * axis] - p, whole[2 * axis]);
-      padded[2 * axis + 1] = std::min(extent[2 * axis + 1] + p, whole[2 * axis + 1]);
-      if (extent[2 * axis] > extent[2 * axis + 1])
-      {
-        // An empty request stays empty.
-        padded[2 * axis] = extent[2 * axis];
-        padded[2 * axis + 1] = extent[2 * axis + 1];
-      }
-    }
-    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), padded, 6);
-  }
-  return 1;
-}
-
-//------------------------------------------------------------------------------
 int vtkImageMLAA::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  vtkImageData* output = vtkImageData::GetData(outInfo);
-  vtkImageData* input = vtkImageData::GetData(inInfo);
-  if (!output)
+  Request request;
+  if (!this->PrepareRequest(inputVector, outputVector, request))
   {
-    vtkErrorMacro("No output image.");
     return 0;
   }
+  vtkImageData* output = request.Output;
+  vtkImageData* input = request.Input;
+  vtkDataArray* scalars = request.Scalars;
+  const int components = request.Components;
+  const int scalarType = request.ScalarType;
+  int* outExt = request.OutputExtent;
+  const int* inExt = request.InputExtent;
+  const int* whole = request.WholeExtent;
   auto fail = [output]() {
     output->Initialize();
     return 0;
   };
-  if (!input)
-  {
-    vtkErrorMacro("No input image.");
-    return fail();
-  }
-
-  vtkDataArray* scalars = input->GetPointData()->GetScalars();
-  if (!scalars)
-  {
-    vtkErrorMacro("The input image has no point scalars to antialias.");
-    return fail();
-  }
-  if (scalars->GetNumberOfTuples() < input->GetNumberOfPoints())
-  {
-    vtkErrorMacro("The input scalars '" << (scalars->GetName() ? scalars->GetName() : "")
-                                        << "' hold " << scalars->GetNumberOfTuples()
-                                        << " tuples, fewer than the " << input->GetNumberOfPoints()
-                                        << " points of the input's extent.");
-    return fail();
-  }
-  const int components = scalars->GetNumberOfComponents();
-  if (components < 1 || components > 4)
-  {
-    vtkErrorMacro("The input image has " << components
-                                         << " components; vtkImageMLAA takes 1 to 4 (grey, grey "
-                                            "+ alpha, RGB, RGBA).");
-    return fail();
-  }
-  const int scalarType = scalars->GetDataType();
-  switch (scalarType)
-  {
-    vtkTemplateMacro(break);
-    default:
-      vtkErrorMacro("The input scalars are of type " << scalars->GetDataTypeAsString()
-                                                     << ", which vtkImageMLAA does not support "
-                                                        "(it takes integer and floating-point "
-                                                        "types).");
-      return fail();
-  }
-  if (this->ValueRange[1] <= this->ValueRange[0] || !std::isfinite(this->ValueRange[0]) ||
-    !std::isfinite(this->ValueRange[1]))
-  {
-    vtkErrorMacro("ValueRange must be finite with ValueRange[0] < ValueRange[1]; it is ["
-      << this->ValueRange[0] << ", " << this->ValueRange[1] << "].");
-    return fail();
-  }
-
-  int outExt[6], inExt[6], whole[6];
-  outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), outExt);
-  input->GetExtent(inExt);
-  inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
   // The output: the input's type and components, or 8-bit RGBA for a debug image.
   const int debugOutput = this->Options->GetDebugOutput();
   auto allocateOutput = [&]() {
@@ -289,28 +167,10 @@ int vtkImageMLAA::RequestData(
       output->GetPointData()->GetScalars()->SetName(scalars->GetName());
     }
   };
-  const bool emptyWhole = whole[0] > whole[1] || whole[2] > whole[3] || whole[4] > whole[5];
-  if (!emptyWhole && (outExt[0] > outExt[1] || outExt[2] > outExt[3] || outExt[4] > outExt[5]))
+  if (request.EmptyRequest)
   {
-    // An empty request (a streamer's piece of an image smaller than its piece count): nothing
-    // to produce, and nothing wrong.
     allocateOutput();
     return 1;
-  }
-  if (emptyWhole || inExt[0] > inExt[1] || inExt[2] > inExt[3] || inExt[4] > inExt[5])
-  {
-    vtkErrorMacro("The input image is empty (extent " << inExt[0] << " " << inExt[1] << " "
-                                                      << inExt[2] << " " << inExt[3] << " "
-                                                      << inExt[4] << " " << inExt[5] << ").");
-    return fail();
-  }
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    if (outExt[2 * axis] < inExt[2 * axis] || outExt[2 * axis + 1] > inExt[2 * axis + 1])
-    {
-      vtkErrorMacro("The input extent does not cover the requested output extent.");
-      return fail();
-    }
   }
 
   const int mode = this->Options->GetEdgeDetection();
@@ -324,9 +184,8 @@ int vtkImageMLAA::RequestData(
   setup.Input = setup.Output.Grown(pad)
                   .Intersect(setup.Whole)
                   .Intersect({ inExt[0], inExt[1], inExt[2], inExt[3] });
-  double range[2];
-  this->GetEffectiveValueRange(scalarType, range);
-  vtkMLAAStages::ConfigureSlice(this->Options, components, range[0], range[1], setup);
+  vtkMLAAStages::ConfigureSlice(
+    this->Options, components, request.Range[0], request.Range[1], setup);
 
   // The depth image, for depth edges.
   vtkImageData* depth = nullptr;
@@ -368,14 +227,8 @@ int vtkImageMLAA::RequestData(
     static_cast<vtkIdType>(setup.Output.Width()) * setup.Output.Height() *
     output->GetPointData()->GetScalars()->GetNumberOfComponents();
 
-  // Progress counts the rows of every stage of every slice; it is reported and AbortExecute is
-  // polled between tasks, from this thread.
-  const int slices = outExt[5] - outExt[4] + 1;
-  vtkMLAAStages::Progress progress([this](double fraction) { this->UpdateProgress(fraction); },
-    [this]() { return this->GetAbortExecute() != 0; }, slices * setup.RowsOfWork());
   vtkMLAAStages::SliceBuffers& buffers = *this->Buffers;
-  for (int z = outExt[4]; z <= outExt[5] && !progress.CheckAbort(); ++z)
-  {
+  this->ForEachSlice(request, setup.RowsOfWork(), [&](int z, vtkMLAAStages::Progress& progress) {
     vtkMLAAStages::DepthRows depthRows;
     if (depth)
     {
@@ -398,15 +251,11 @@ int vtkImageMLAA::RequestData(
       : nullptr;
     switch (scalarType)
     {
-      vtkTemplateMacro(vtkMLAAStages::RunSlice(setup, static_cast<const VTK_TT*>(inPtr), inIncrements[1],
-        depthRows, debug ? nullptr : static_cast<VTK_TT*>(outPtr), debug, buffers, progress));
+      vtkTemplateMacro(vtkMLAAStages::RunSlice(setup, static_cast<const VTK_TT*>(inPtr),
+        inIncrements[1], depthRows, debug ? nullptr : static_cast<VTK_TT*>(outPtr), debug, buffers,
+        progress));
     }
-  }
-  if (progress.Aborted())
-  {
-    // Cancelled (AbortExecute): nothing half-computed goes downstream.
-    output->Initialize();
-  }
+  });
   return 1;
 }
 
@@ -414,15 +263,6 @@ int vtkImageMLAA::RequestData(
 void vtkImageMLAA::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "ValueRange: ";
-  if (this->ValueRangeIsTypeDefault)
-  {
-    os << "type default ([0, 1] for floating point, the type's range for integers)\n";
-  }
-  else
-  {
-    os << this->ValueRange[0] << " " << this->ValueRange[1] << "\n";
-  }
   os << indent << "Options:\n";
   this->Options->PrintSelf(os, indent.GetNextIndent());
 }

@@ -34,8 +34,8 @@
  *
  * Input: vtkImageData of any numeric scalar type with 1 to 4 components (grey, grey + alpha,
  * RGB, RGBA). 2D images and 3D volumes; each z slice is antialiased on its own. Values are
- * normalised for edge detection by ValueRange: by default the range of the type for integers and
- * [0, 1] for floating point; SetValueRange for data that uses part of its type (12-bit data in
+ * normalised for edge detection by ValueRange (vtkImageAntialiasingAlgorithm): by default the
+ * range of the type for integers and [0, 1] for floating point; SetValueRange for data that uses part of its type (12-bit data in
  * 16-bit integers). All components, alpha included, are blended with the same weights, so an
  * opaque silhouette over a transparent background gets a soft alpha edge; with straight alpha
  * (vtkMLAAOptions::PremultipliedAlpha off, the default) the colours are blended premultiplied
@@ -70,23 +70,23 @@
  * piece count) gives an empty output without error. All reads stay within the input the filter
  * is given, even when an upstream delivers less than the padded extent it asked for.
  *
- * @sa vtkMLAAOptions vtkMLAAAreaTexture vtkOpenGLMLAAPass
+ * @sa vtkMLAAOptions vtkMLAAAreaTexture vtkOpenGLMLAAPass vtkImageAntialiasingAlgorithm vtkImageDLAA
  */
 
 #ifndef vtkImageMLAA_h
 #define vtkImageMLAA_h
 
 #include "vtkFiltersMLAAModule.h" // For export macro
-#include "vtkImageAlgorithm.h"
+#include "vtkImageAntialiasingAlgorithm.h"
 
 class vtkMLAAOptions;
 struct vtkImageMLAABuffers;
 
-class VTKFILTERSMLAA_EXPORT vtkImageMLAA : public vtkImageAlgorithm
+class VTKFILTERSMLAA_EXPORT vtkImageMLAA : public vtkImageAntialiasingAlgorithm
 {
 public:
   static vtkImageMLAA* New();
-  vtkTypeMacro(vtkImageMLAA, vtkImageAlgorithm);
+  vtkTypeMacro(vtkImageMLAA, vtkImageAntialiasingAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -97,30 +97,6 @@ public:
   vtkGetObjectMacro(Options, vtkMLAAOptions);
   virtual void SetOptions(vtkMLAAOptions* options);
   ///@}
-
-  ///@{
-  /**
-   * The values that map to 0 and 1 when the image is normalised for edge detection (and, with
-   * straight alpha, the alpha values of no and full coverage). By default floating-point images
-   * use [0, 1] and integer images the range of their type (0 to 255 for unsigned char, 0 to
-   * 65535 for unsigned short). SetValueRange sets one range for every scalar type: 10-, 12- or
-   * 14-bit data stored in 16-bit integers needs it (SetValueRange(0, 4095) for 12 bits), or its
-   * edges look 16 times fainter than they are. SetValueRangeToTypeDefault() restores the
-   * defaults; GetValueRange() then holds [0, 1]. There is no automatic (data min/max) mode here:
-   * it would make a streamed piece's result depend on the piece; the `mlaa` tool's
-   * `--value-range auto` measures the whole image and sets the range.
-   */
-  virtual void SetValueRange(double lo, double hi);
-  void SetValueRange(const double range[2]) { this->SetValueRange(range[0], range[1]); }
-  vtkGetVector2Macro(ValueRange, double);
-  void SetValueRangeToTypeDefault();
-  vtkGetMacro(ValueRangeIsTypeDefault, bool);
-  ///@}
-
-  /**
-   * The range that normalises an image of the given VTK scalar type with the current settings.
-   */
-  void GetEffectiveValueRange(int scalarType, double range[2]);
 
   ///@{
   /**
@@ -141,7 +117,7 @@ public:
    * Reconstruction). RequestUpdateExtent pads the
    * requested extent by this much.
    */
-  int GetInputPadding();
+  int GetInputPadding() override;
 
 protected:
   vtkImageMLAA();
@@ -150,14 +126,10 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
-  int RequestUpdateExtent(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
   vtkMLAAOptions* Options = nullptr;
-  double ValueRange[2] = { 0.0, 1.0 };
-  bool ValueRangeIsTypeDefault = true;
   vtkImageMLAABuffers* Buffers = nullptr; // the stages' edges and weights, kept between updates
 
 private:

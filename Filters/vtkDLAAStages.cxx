@@ -1,0 +1,32 @@
+#include "vtkDLAAStages.h"
+
+namespace vtkDLAAStages
+{
+//------------------------------------------------------------------------------
+Settings MakeSettings(vtkDLAAOptions* options, int components, double lo, double hi)
+{
+  Settings s;
+  s.Epsilon = options->GetEpsilon();
+  s.Lambda = options->GetLambda();
+  s.LongEdges = options->GetLongEdges();
+  s.Components = components;
+  s.Lo = lo;
+  s.Hi = hi;
+  std::fill(s.LumaWeights, s.LumaWeights + 4, 0.0);
+  if (components < 3)
+  {
+    s.LumaWeights[0] = 1.0; // grey (and alpha)
+  }
+  else if (options->GetLumaFunction() == vtkDLAAOptions::GREEN)
+  {
+    s.LumaWeights[1] = 1.0;
+  }
+  else
+  {
+    s.LumaWeights[0] = 0.2126;
+    s.LumaWeights[1] = 0.7152;
+    s.LumaWeights[2] = 0.0722;
+  }
+  return s;
+}
+}
