@@ -120,8 +120,8 @@ public:
   vtkTypeMacro(vtkOpenGLMLAAPass, vtkOpenGLAntialiasingPass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  // Render and ReleaseGraphicsResources are vtkOpenGLAntialiasingPass's; so are
-  // AntialiasOverlays and KeepAlpha, whose meaning for MLAA follows.
+  // Render, ReleaseGraphicsResources and AntialiasOverlays are vtkOpenGLAntialiasingPass's; so
+  // is KeepAlpha, whose meaning for MLAA is below.
 
   ///@{
   /**
@@ -132,23 +132,19 @@ public:
   virtual void SetOptions(vtkMLAAOptions* options);
   ///@}
 
-  ///@{
-  /**
-   * Whether the alpha channel of the renderer's image is part of the result: a window with a
-   * transparent background (renderer BackgroundAlpha below 1) read back as RGBA
-   * (vtkWindowToImageFilter::SetInputBufferTypeToRGBA) or composited by the application.
-   * Default off: the image is treated as opaque, as the screen and an RGB screenshot show it;
-   * edges are found in the colour alone, so the RGB result equals vtkImageMLAA on the RGB
-   * screenshot (VTK's framebuffer holds alpha 0 on the background and 1 on geometry whatever
-   * their colours, which would otherwise make edges nobody sees). On: alpha changes are edges
-   * too, and colours are blended with their coverage, in the convention of
-   * vtkMLAAOptions::PremultipliedAlpha (see the class description). Renderers that preserve the
-   * colour buffer (layers) always keep alpha. VTK 9.1's GetAlphaBitPlanes() reports the bits of
-   * the window's framebuffer (8 on every offscreen window), not whether alpha is wanted, so the
-   * pass cannot tell by itself.
-   */
-  // (KeepAlpha: set and get in vtkOpenGLAntialiasingPass.)
-  ///@}
+  // KeepAlpha (vtkOpenGLAntialiasingPass), for MLAA: whether the alpha channel of the
+  // renderer's image is part of the result: a window with a
+  // transparent background (renderer BackgroundAlpha below 1) read back as RGBA
+  // (vtkWindowToImageFilter::SetInputBufferTypeToRGBA) or composited by the application.
+  // Default off: the image is treated as opaque, as the screen and an RGB screenshot show it;
+  // edges are found in the colour alone, so the RGB result equals vtkImageMLAA on the RGB
+  // screenshot (VTK's framebuffer holds alpha 0 on the background and 1 on geometry whatever
+  // their colours, which would otherwise make edges nobody sees). On: alpha changes are edges
+  // too, and colours are blended with their coverage, in the convention of
+  // vtkMLAAOptions::PremultipliedAlpha (see the class description). Renderers that preserve the
+  // colour buffer (layers) always keep alpha. VTK 9.1's GetAlphaBitPlanes() reports the bits of
+  // the window's framebuffer (8 on every offscreen window), not whether alpha is wanted, so the
+  // pass cannot tell by itself.
 
   ///@{
   /**
