@@ -27,7 +27,9 @@
  *    The short-edge result is s = lerp(lerp(c, Bx, mx), By, my / 2).
  * 2. Long edges (slides 25 to 31, 44 to 47; LongEdges on). A long horizontal edge is a run of
  *    horizontal-edge responses along x: the long mask Mx = saturate(2 * a - 1), where a is the
- *    mean of mx over the 17 pixels p - 8 .. p + 8 along x; My likewise along y with my. Where
+ *    mean of mx over the 17 pixels p - 8 .. p + 8 along x; My likewise along y with my. Near
+ *    the border, the masks of the positions beyond it are computed by the formulas of step 1
+ *    at those positions, from clamped colour reads (not the border pixel's masks). Where
  *    both Mx and My are positive (noise, texture: slide 32) nothing more is done. Otherwise, for
  *    Mx > 0: the 17-pixel mean colour along x (p - 8 .. p + 8) is only a target luminosity t,
  *    never a colour (a distant colour would bleed); the pixel is moved towards the neighbour

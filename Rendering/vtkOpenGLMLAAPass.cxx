@@ -1,5 +1,7 @@
 #include "vtkOpenGLMLAAPass.h"
 
+#include "vtkOpenGLAntialiasingPassInternals.h"
+
 #include "vtkMLAAAreaTexture.h"
 #include "vtkMLAAOptions.h"
 #include "vtkMLAATopology.h"
@@ -31,54 +33,10 @@
 
 vtkStandardNewMacro(vtkOpenGLMLAAPass);
 
+using namespace vtkOpenGLAntialiasingPassInternals;
+
 namespace
 {
-// Makes `texture` a 2D texture of the given size, components and type: resized in place (same GL
-// handle, so framebuffer attachments stay valid) when only the size differs, allocated afresh
-// otherwise. Returns true when the texture was allocated afresh (its handle changed).
-bool AllocateColorTarget(vtkTextureObject* texture, int width, int height, int components,
-  int vtkType, bool linear)
-{
-  const bool sameFormat = texture->GetHandle() && texture->GetComponents() == components &&
-    texture->GetVTKDataType() == vtkType;
-  if (sameFormat)
-  {
-    if (texture->GetWidth() != static_cast<unsigned int>(width) ||
-      texture->GetHeight() != static_cast<unsigned int>(height))
-    {
-      texture->Resize(width, height);
-    }
-    return false;
-  }
-  texture->ReleaseGraphicsResources(texture->GetContext());
-  texture->SetWrapS(vtkTextureObject::ClampToEdge);
-  texture->SetWrapT(vtkTextureObject::ClampToEdge);
-  texture->SetMinificationFilter(linear ? vtkTextureObject::Linear : vtkTextureObject::Nearest);
-  texture->SetMagnificationFilter(linear ? vtkTextureObject::Linear : vtkTextureObject::Nearest);
-  texture->Allocate2D(width, height, components, vtkType);
-  return true;
-}
-
-// The same for a depth texture.
-bool AllocateDepthTarget(vtkTextureObject* texture, int width, int height, int format)
-{
-  if (texture->GetHandle())
-  {
-    if (texture->GetWidth() != static_cast<unsigned int>(width) ||
-      texture->GetHeight() != static_cast<unsigned int>(height))
-    {
-      texture->Resize(width, height);
-    }
-    return false;
-  }
-  texture->SetWrapS(vtkTextureObject::ClampToEdge);
-  texture->SetWrapT(vtkTextureObject::ClampToEdge);
-  texture->SetMinificationFilter(vtkTextureObject::Nearest);
-  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-  texture->AllocateDepth(width, height, format);
-  return true;
-}
-
 // The same for a line-lengths texture: RGBA16F (integers up to 2048 exactly), nearest.
 bool AllocateLengthsTarget(vtkTextureObject* texture, int width, int height)
 {
@@ -99,41 +57,6 @@ bool AllocateLengthsTarget(vtkTextureObject* texture, int width, int height)
   texture->Allocate2D(width, height, 4, VTK_FLOAT);
   return true;
 }
-
-vtkTextureObject* NewTexture(vtkOpenGLRenderWindow* renWin)
-{
-  vtkTextureObject* texture = vtkTextureObject::New();
-  texture->SetContext(renWin);
-  return texture;
-}
-
-vtkIdType TextureBytes(vtkTextureObject* texture, int bytesPerTexel)
-{
-  return texture && texture->GetHandle()
-    ? static_cast<vtkIdType>(texture->GetWidth()) * texture->GetHeight() * bytesPerTexel
-    : 0;
-}
-
-// One #define line of a shader variant.
-std::string Define(const char* name, int value)
-{
-  return std::string("#define ") + name + " " + std::to_string(value) + "\n";
-}
-std::string Define(const char* name, bool defined)
-{
-  return defined ? std::string("#define ") + name + "\n" : std::string();
-}
-
-template <typename T>
-void DeleteObject(T*& object, vtkWindow* w)
-{
-  if (object)
-  {
-    object->ReleaseGraphicsResources(w);
-    object->Delete();
-    object = nullptr;
-  }
-}
 }
 
 //------------------------------------------------------------------------------
@@ -145,7 +68,7 @@ vtkOpenGLMLAAPass::vtkOpenGLMLAAPass()
 //------------------------------------------------------------------------------
 vtkOpenGLMLAAPass::~vtkOpenGLMLAAPass()
 {
-  if (this->ColorTexture || this->EdgesQuad.Quad || this->DelegateFramebuffer)
+  if (this->EdgesTexture || this->EdgesQuad.Quad)
   {
     vtkErrorMacro("Graphics resources should have been released by ReleaseGraphicsResources().");
   }
@@ -162,31 +85,21 @@ void vtkOpenGLMLAAPass::SetOptions(vtkMLAAOptions* options)
 }
 
 //------------------------------------------------------------------------------
-void vtkOpenGLMLAAPass::PrepareTargets(
-  vtkOpenGLRenderWindow* renWin, int width, int height, bool floatColor, bool depth)
+bool vtkOpenGLMLAAPass::PrepareMethodTargets(const Frame& frame)
 {
-  for (vtkTextureObject** texture : { &this->ColorTexture, &this->DepthTexture,
-         &this->EdgesTexture, &this->WeightsTexture, &this->MaskTexture })
+  vtkOpenGLRenderWindow* renWin = frame.Window;
+  const int width = frame.Width;
+  const int height = frame.Height;
+  const bool floatColor = frame.FloatColor;
+  for (vtkTextureObject** texture :
+    { &this->EdgesTexture, &this->WeightsTexture, &this->MaskTexture })
   {
     if (!*texture)
     {
       *texture = NewTexture(renWin);
     }
   }
-  bool reallocated = AllocateColorTarget(
-    this->ColorTexture, width, height, 4, floatColor ? VTK_FLOAT : VTK_UNSIGNED_CHAR, false);
-  if (depth)
-  {
-    // 24-bit depth, as a window's depth buffer, so the delegate renders as it would in the
-    // window.
-    reallocated |=
-      AllocateDepthTarget(this->DepthTexture, width, height, vtkTextureObject::Fixed24);
-  }
-  else if (this->DepthTexture->GetHandle())
-  {
-    this->DepthTexture->ReleaseGraphicsResources(renWin); // not needed in place
-    reallocated = true;
-  }
+  bool reallocated = false;
   // Linear filtering: the search and the crossing-edge reads rely on it (section 4.3).
   reallocated |= AllocateColorTarget(this->EdgesTexture, width, height, 2, VTK_UNSIGNED_CHAR, true);
   // 8-bit weights, as the chapter's RGBA8 texture (vtkImageMLAA quantises the same way).
@@ -228,13 +141,6 @@ void vtkOpenGLMLAAPass::PrepareTargets(
     DeleteObject(this->ReconstructedTexture, renWin);
     reallocated = true;
   }
-  if (reallocated)
-  {
-    // Framebuffer objects remember their attachments: start afresh with the new textures.
-    DeleteObject(this->DelegateFramebuffer, renWin);
-    DeleteObject(this->MLAAFramebuffer, renWin);
-  }
-
   // The area textures (orthogonal and diagonal lines), uploaded once per maximum distance from
   // the shared generator.
   const int maxDistance = this->Options->GetMaxDistance();
@@ -266,107 +172,7 @@ void vtkOpenGLMLAAPass::PrepareTargets(
     this->AreaTextureMaxDistance = maxDistance;
   }
 
-  if (!this->DelegateFramebuffer)
-  {
-    this->DelegateFramebuffer = vtkOpenGLFramebufferObject::New();
-    this->DelegateFramebuffer->SetContext(renWin);
-  }
-  if (!this->MLAAFramebuffer)
-  {
-    this->MLAAFramebuffer = vtkOpenGLFramebufferObject::New();
-    this->MLAAFramebuffer->SetContext(renWin);
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLMLAAPass::RenderDelegateToTextures(
-  const vtkRenderState* s, int width, int height, bool composite)
-{
-  vtkOpenGLState* ostate = this->DelegateFramebuffer->GetContext()->GetState();
-  vtkRenderState delegateState(s->GetRenderer());
-  delegateState.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
-  delegateState.SetRequiredKeys(s->GetRequiredKeys());
-  delegateState.SetFrameBuffer(this->DelegateFramebuffer);
-
-  this->DelegateFramebuffer->Bind();
-  this->DelegateFramebuffer->AddColorAttachment(0, this->ColorTexture);
-  this->DelegateFramebuffer->ActivateDrawBuffer(0);
-  this->DelegateFramebuffer->AddDepthAttachment(this->DepthTexture);
-  this->DelegateFramebuffer->StartNonOrtho(width, height);
-  ostate->vtkglViewport(0, 0, width, height);
-  ostate->vtkglScissor(0, 0, width, height);
-  ostate->vtkglEnable(GL_DEPTH_TEST);
-  if (composite)
-  {
-    // The renderer preserves the colour buffer, so it will not clear this one: start from
-    // transparent black. VTK's blending (source alpha, one minus source alpha for colour; one,
-    // one minus source alpha for alpha) then leaves premultiplied colour here.
-    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
-    ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
-  }
-
-  this->DelegatePass->Render(&delegateState);
-  this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLMLAAPass::CopyTargetToColorTexture(vtkOpenGLRenderWindow* renWin,
-  unsigned int targetBinding, unsigned int targetBuffer, int x, int y, int width, int height)
-{
-  vtkOpenGLState* ostate = renWin->GetState();
-  this->DelegateFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
-  this->DelegateFramebuffer->AddColorAttachment(0, this->ColorTexture);
-  this->DelegateFramebuffer->ActivateDrawBuffer(0);
-  ostate->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, targetBinding);
-  ostate->vtkglReadBuffer(targetBuffer);
-  const int source[4] = { x, x + width, y, y + height };
-  const int destination[4] = { 0, width, 0, height };
-  vtkOpenGLFramebufferObject::Blit(source, destination, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLMLAAPass::ShaderVariant::Release(vtkWindow* window)
-{
-  if (this->Quad)
-  {
-    this->Quad->ReleaseGraphicsResources(window);
-    delete this->Quad;
-    this->Quad = nullptr;
-  }
-  this->Defines.clear();
-}
-
-//------------------------------------------------------------------------------
-bool vtkOpenGLMLAAPass::ReadyQuad(vtkOpenGLRenderWindow* renWin, ShaderVariant& variant,
-  const char* fs, const std::string& defines)
-{
-  if (variant.Quad && variant.Defines != defines)
-  {
-    // The options changed what the shader does: build the other variant (the shader cache
-    // keeps the programs, so switching back is cheap).
-    variant.Release(renWin);
-  }
-  vtkOpenGLQuadHelper*& quad = variant.Quad;
-  if (!quad)
-  {
-    std::string source = fs;
-    vtkShaderProgram::Substitute(source, "//VTK::MLAA::Dec", defines, false);
-    // The CIELAB conversion shared by the shaders that compare colours in Lab.
-    vtkShaderProgram::Substitute(source, "//VTK::MLAA::Lab", vtkMLAALab, false);
-    quad = new vtkOpenGLQuadHelper(renWin, nullptr, source.c_str(), "");
-    variant.Defines = defines;
-  }
-  else
-  {
-    renWin->GetShaderCache()->ReadyShaderProgram(quad->Program);
-  }
-  if (!quad->Program || !quad->Program->GetCompiled())
-  {
-    vtkErrorMacro("Could not build an MLAA shader program.");
-    return false;
-  }
-  return true;
+  return reallocated;
 }
 
 //------------------------------------------------------------------------------
@@ -384,7 +190,7 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   vtkOpenGLRenderWindow* renWin, int width, int height, bool useAlpha)
 {
   vtkOpenGLState* ostate = renWin->GetState();
-  vtkOpenGLFramebufferObject* fbo = this->MLAAFramebuffer;
+  vtkOpenGLFramebufferObject* fbo = this->WorkFramebuffer;
   fbo->Bind();
   fbo->AddColorAttachment(0, this->EdgesTexture);
   fbo->ActivateDrawBuffer(0);
@@ -489,7 +295,7 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
 vtkTextureObject* vtkOpenGLMLAAPass::ComputeLineLengths(vtkOpenGLRenderWindow* renWin)
 {
   vtkOpenGLState* ostate = renWin->GetState();
-  vtkOpenGLFramebufferObject* fbo = this->MLAAFramebuffer;
+  vtkOpenGLFramebufferObject* fbo = this->WorkFramebuffer;
   // Both textures start at 0: the passes write the edge pixels only, and the jumps of the
   // doubling land on pixels without an edge too, which must read 0.
   ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
@@ -630,7 +436,7 @@ bool vtkOpenGLMLAAPass::Reconstruct(
   vtkOpenGLRenderWindow* renWin, int width, int height, bool useAlpha)
 {
   vtkOpenGLState* ostate = renWin->GetState();
-  vtkOpenGLFramebufferObject* fbo = this->MLAAFramebuffer;
+  vtkOpenGLFramebufferObject* fbo = this->WorkFramebuffer;
   fbo->Bind();
   fbo->AddColorAttachment(0, this->ReconstructedTexture);
   fbo->ActivateDrawBuffer(0);
@@ -677,128 +483,43 @@ bool vtkOpenGLMLAAPass::WriteBackReconstruction(
 }
 
 //------------------------------------------------------------------------------
-void vtkOpenGLMLAAPass::Render(const vtkRenderState* s)
+bool vtkOpenGLMLAAPass::NeedsDelegateDepth()
 {
-  vtkOpenGLClearErrorMacro();
-  this->NumberOfRenderedProps = 0;
-  if (!this->DelegatePass)
-  {
-    vtkWarningMacro("No delegate pass: nothing to antialias.");
-    return;
-  }
+  // Depth edges read the delegate's depth as a texture.
+  return this->Options->GetEdgeDetection() == vtkMLAAOptions::DEPTH;
+}
 
-  vtkRenderer* renderer = s->GetRenderer();
-  auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
-  if (!renWin)
-  {
-    vtkErrorMacro("vtkOpenGLMLAAPass needs a vtkOpenGLRenderWindow.");
-    return;
-  }
+//------------------------------------------------------------------------------
+bool vtkOpenGLMLAAPass::UsesStraightAlpha()
+{
+  return !this->Options->GetPremultipliedAlpha();
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLMLAAPass::DrawsDeferredOverlays()
+{
+  // Not over a debug image.
+  return this->Options->GetDebugOutput() == vtkMLAAOptions::NO_DEBUG_OUTPUT;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLMLAAPass::SubstituteShaderSnippets(std::string& source)
+{
+  // The CIELAB conversion shared by the shaders that compare colours in Lab.
+  vtkShaderProgram::Substitute(source, "//VTK::MLAA::Lab", vtkMLAALab, false);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLMLAAPass::Antialias(const Frame& frame)
+{
+  // The render targets, the delegate's render, the saved state and the overlays are
+  // vtkOpenGLAntialiasingPass's; this is the MLAA part of the render.
+  vtkOpenGLRenderWindow* renWin = frame.Window;
   vtkOpenGLState* ostate = renWin->GetState();
-
-  // A hardware selection render (picking): the colour buffer holds encoded prop, cell and point
-  // ids, not colours, and a blend of two ids is a third, wrong one. Render straight into the
-  // target, untouched, as vtkOpenGLRenderer does without a pass: the camera (which clears), the
-  // lights, and UpdateGeometry, which hands the props to the selector. (The selector numbers the
-  // props only in UpdateGeometry; render passes such as vtkRenderStepsPass do not call it.)
-  if (renderer->GetSelector())
+  const int x = frame.X, y = frame.Y, width = frame.Width, height = frame.Height;
+  const bool composite = frame.Composite, useAlpha = frame.UseAlpha,
+             straightAlpha = frame.StraightAlpha, inPlace = frame.InPlace;
   {
-    renWin->MakeCurrent();
-    this->UpdateCamera(renderer);
-    this->UpdateLightGeometry(renderer);
-    this->UpdateLights(renderer);
-    this->UpdateGeometry(renderer, s->GetFrameBuffer());
-    this->NumberOfRenderedProps = renderer->GetNumberOfPropsRendered();
-    vtkOpenGLCheckErrorMacro("failed after vtkOpenGLMLAAPass::Render");
-    return;
-  }
-
-  // The viewport to fill: the renderer's (tiled) viewport in the window, or the whole of a
-  // framebuffer object when an enclosing pass renders this one into its own target.
-  int x = 0, y = 0, width = 0, height = 0;
-  bool floatColor = false;
-  if (auto* targetFbo = vtkOpenGLFramebufferObject::SafeDownCast(s->GetFrameBuffer()))
-  {
-    int size[2];
-    s->GetWindowSize(size);
-    width = size[0];
-    height = size[1];
-    vtkTextureObject* target = targetFbo->GetColorAttachmentAsTextureObject(0);
-    floatColor = target && target->GetVTKDataType() == VTK_FLOAT;
-  }
-  else
-  {
-    renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
-  }
-  if (width < 1 || height < 1)
-  {
-    return;
-  }
-  // A renderer that preserves the colour buffer (a layer above 0, or
-  // SetPreserveColorBuffer(1)) draws over what is already there: its image is composited over
-  // the target, and its alpha (coverage) takes part in edge detection.
-  const bool composite = renderer->Transparent() != 0;
-  // Alpha takes part in edge detection only where the result keeps it: when compositing, and
-  // with KeepAlpha. Otherwise the image is opaque to whoever reads it (an RGB screenshot, the
-  // screen), and the alpha VTK leaves in the framebuffer (0 on the background, 1 on geometry,
-  // whatever the background colour) would make edges that nobody sees.
-  const bool useAlpha = composite || this->KeepAlpha;
-  // Straight alpha: the colours are premultiplied before blending and divided by alpha after.
-  // The texture of a composited renderer is premultiplied by construction.
-  const bool straightAlpha =
-    this->KeepAlpha && !composite && !this->Options->GetPremultipliedAlpha();
-  // In place: the delegate renders straight into the target, as it would without the pass; its
-  // colour is copied (blitted) into ColorTexture, and the last pass writes only the pixels that
-  // blending changes. This saves copying every pixel's colour and depth back with a shader. A
-  // composited renderer needs its own transparent texture, and depth edges the delegate's depth
-  // as a texture: those render the delegate into the pass's textures and copy everything back.
-  const bool inPlace =
-    !composite && this->Options->GetEdgeDetection() != vtkMLAAOptions::DEPTH;
-  unsigned int targetBinding = 0, targetBuffer = 0;
-  ostate->GetCurrentDrawFramebufferState(targetBinding, targetBuffer);
-
-  vtkRenderStepsPass* steps =
-    this->AntialiasOverlays ? nullptr : vtkRenderStepsPass::SafeDownCast(this->DelegatePass);
-  vtkSmartPointer<vtkRenderPass> overlay = steps ? steps->GetOverlayPass() : nullptr;
-  bool done = false;
-  {
-    // Save the state this pass changes; restored at the end of this block.
-    vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
-    vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
-    vtkOpenGLState::ScopedglEnableDisable depthTestSaver(ostate, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
-    vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
-    vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
-    vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
-    vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
-    vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
-
-    this->PrepareTargets(renWin, width, height, floatColor, !inPlace);
-
-    // Render the delegate, keeping its overlay step for after the antialiasing.
-    if (overlay)
-    {
-      steps->SetOverlayPass(nullptr);
-    }
-    if (inPlace)
-    {
-      this->DelegatePass->Render(s);
-      this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
-      ostate->PushFramebufferBindings();
-      this->CopyTargetToColorTexture(renWin, targetBinding, targetBuffer, x, y, width, height);
-      ostate->PopFramebufferBindings();
-    }
-    else
-    {
-      ostate->PushFramebufferBindings();
-      this->RenderDelegateToTextures(s, width, height, composite);
-      ostate->PopFramebufferBindings();
-    }
-    if (overlay)
-    {
-      steps->SetOverlayPass(overlay);
-    }
-
     // Topological reconstruction (Biri et al., section 4.3): before edge detection, into
     // ReconstructedTexture, which the later passes read instead of ColorTexture.
     const bool reconstruction = this->Options->GetReconstruction();
@@ -811,36 +532,22 @@ void vtkOpenGLMLAAPass::Render(const vtkRenderState* s)
     {
       computed = this->WriteBackReconstruction(renWin, x, y, width, height, useAlpha);
     }
-    done =
-      computed && this->Blend(renWin, x, y, width, height, composite, straightAlpha, inPlace);
+    return computed &&
+      this->Blend(renWin, x, y, width, height, composite, straightAlpha, inPlace);
   }
-
-  // The overlays (not over a debug image): drawn on top of the result, in the state the pass was
-  // entered with, in the renderer's viewport, as the render steps would have drawn them.
-  if (done && overlay && this->Options->GetDebugOutput() == vtkMLAAOptions::NO_DEBUG_OUTPUT)
-  {
-    ostate->vtkglViewport(x, y, width, height);
-    ostate->vtkglScissor(x, y, width, height);
-    overlay->Render(s);
-    this->NumberOfRenderedProps += overlay->GetNumberOfRenderedProps();
-  }
-  vtkOpenGLCheckErrorMacro("failed after vtkOpenGLMLAAPass::Render");
 }
 
 //------------------------------------------------------------------------------
-void vtkOpenGLMLAAPass::ReleaseGraphicsResources(vtkWindow* w)
+void vtkOpenGLMLAAPass::ReleaseMethodResources(vtkWindow* w)
 {
-  this->Superclass::ReleaseGraphicsResources(w);
   for (ShaderVariant* variant : { &this->ReconstructionQuad, &this->WriteBackQuad,
          &this->EdgesQuad, &this->LocalContrastQuad, &this->WeightsQuad, &this->BlendQuad,
          &this->LengthsInitQuad, &this->LengthsQuad })
   {
     variant->Release(w);
   }
-  DeleteObject(this->DelegateFramebuffer, w);
-  DeleteObject(this->MLAAFramebuffer, w);
-  for (vtkTextureObject** texture : { &this->ColorTexture, &this->DepthTexture,
-         &this->EdgesTexture, &this->WeightsTexture, &this->MaskTexture, &this->AreaTexture,
+  for (vtkTextureObject** texture : { &this->EdgesTexture, &this->WeightsTexture,
+         &this->MaskTexture, &this->AreaTexture,
          &this->DiagonalAreaTexture, &this->LengthsTextures[0], &this->LengthsTextures[1],
          &this->ReconstructedTexture })
   {
@@ -858,12 +565,17 @@ vtkIdType vtkOpenGLMLAAPass::GetMLAATargetMemorySize()
 //------------------------------------------------------------------------------
 vtkIdType vtkOpenGLMLAAPass::GetTargetMemorySize()
 {
+  return this->Superclass::GetTargetMemorySize();
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOpenGLMLAAPass::GetMethodTargetMemorySize()
+{
   const int colorBytes = (this->ColorTexture && this->ColorTexture->GetVTKDataType() == VTK_FLOAT)
     ? 16
     : 4;
-  return TextureBytes(this->ColorTexture, colorBytes) +
-    TextureBytes(this->ReconstructedTexture, colorBytes) + TextureBytes(this->DepthTexture, 4) +
-    this->GetMLAATargetMemorySize() + TextureBytes(this->MaskTexture, 2) +
+  return TextureBytes(this->ReconstructedTexture, colorBytes) + this->GetMLAATargetMemorySize() +
+    TextureBytes(this->MaskTexture, 2) +
     TextureBytes(this->AreaTexture, 8) + TextureBytes(this->DiagonalAreaTexture, 12) +
     TextureBytes(this->LengthsTextures[0], 8) + TextureBytes(this->LengthsTextures[1], 8);
 }
@@ -902,8 +614,6 @@ const char* vtkOpenGLMLAAPass::GetLineLengthsAsString(int method)
 void vtkOpenGLMLAAPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "AntialiasOverlays: " << (this->AntialiasOverlays ? "On" : "Off") << "\n";
-  os << indent << "KeepAlpha: " << (this->KeepAlpha ? "On" : "Off") << "\n";
   os << indent << "LineLengths: " << GetLineLengthsAsString(this->LineLengths) << "\n";
   os << indent << "Options:\n";
   this->Options->PrintSelf(os, indent.GetNextIndent());

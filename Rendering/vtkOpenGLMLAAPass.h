@@ -97,39 +97,31 @@
  * vtkOpenGLFramebufferObject, vtkOpenGLQuadHelper), so the pass runs on GLX, EGL and OSMesa
  * builds alike. ReleaseGraphicsResources frees every GL object it created.
  *
- * @sa vtkMLAAOptions vtkImageMLAA vtkMLAAAreaTexture vtkOpenGLFXAAPass
+ * The targets and state handling above (in place or into the pass's textures, layers, overlays,
+ * picking, KeepAlpha, framebuffers, resources) are vtkOpenGLAntialiasingPass's, shared with
+ * vtkOpenGLDLAAPass; this class adds the MLAA passes.
+ *
+ * @sa vtkMLAAOptions vtkImageMLAA vtkMLAAAreaTexture vtkOpenGLAntialiasingPass vtkOpenGLFXAAPass
  */
 
 #ifndef vtkOpenGLMLAAPass_h
 #define vtkOpenGLMLAAPass_h
 
-#include "vtkImageProcessingPass.h"
+#include "vtkOpenGLAntialiasingPass.h"
 #include "vtkRenderingMLAAModule.h" // For export macro
 
-#include <string> // For std::string
-
 class vtkMLAAOptions;
-class vtkOpenGLFramebufferObject;
-class vtkOpenGLQuadHelper;
-class vtkOpenGLRenderWindow;
 class vtkTextureObject;
 
-class VTKRENDERINGMLAA_EXPORT vtkOpenGLMLAAPass : public vtkImageProcessingPass
+class VTKRENDERINGMLAA_EXPORT vtkOpenGLMLAAPass : public vtkOpenGLAntialiasingPass
 {
 public:
   static vtkOpenGLMLAAPass* New();
-  vtkTypeMacro(vtkOpenGLMLAAPass, vtkImageProcessingPass);
+  vtkTypeMacro(vtkOpenGLMLAAPass, vtkOpenGLAntialiasingPass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /**
-   * Render the delegate and antialias its image into the current framebuffer and viewport.
-   */
-  void Render(const vtkRenderState* s) override;
-
-  /**
-   * Release every graphics resource of the pass and of its delegate.
-   */
-  void ReleaseGraphicsResources(vtkWindow* w) override;
+  // Render, ReleaseGraphicsResources and AntialiasOverlays are vtkOpenGLAntialiasingPass's; so
+  // is KeepAlpha, whose meaning for MLAA is below.
 
   ///@{
   /**
@@ -140,35 +132,19 @@ public:
   virtual void SetOptions(vtkMLAAOptions* options);
   ///@}
 
-  ///@{
-  /**
-   * Whether the overlay step of a vtkRenderStepsPass delegate (text, scalar bars, 2D actors) is
-   * antialiased too. Default off: overlays are drawn after the antialiasing, untouched.
-   */
-  vtkSetMacro(AntialiasOverlays, bool);
-  vtkGetMacro(AntialiasOverlays, bool);
-  vtkBooleanMacro(AntialiasOverlays, bool);
-  ///@}
-
-  ///@{
-  /**
-   * Whether the alpha channel of the renderer's image is part of the result: a window with a
-   * transparent background (renderer BackgroundAlpha below 1) read back as RGBA
-   * (vtkWindowToImageFilter::SetInputBufferTypeToRGBA) or composited by the application.
-   * Default off: the image is treated as opaque, as the screen and an RGB screenshot show it;
-   * edges are found in the colour alone, so the RGB result equals vtkImageMLAA on the RGB
-   * screenshot (VTK's framebuffer holds alpha 0 on the background and 1 on geometry whatever
-   * their colours, which would otherwise make edges nobody sees). On: alpha changes are edges
-   * too, and colours are blended with their coverage, in the convention of
-   * vtkMLAAOptions::PremultipliedAlpha (see the class description). Renderers that preserve the
-   * colour buffer (layers) always keep alpha. VTK 9.1's GetAlphaBitPlanes() reports the bits of
-   * the window's framebuffer (8 on every offscreen window), not whether alpha is wanted, so the
-   * pass cannot tell by itself.
-   */
-  vtkSetMacro(KeepAlpha, bool);
-  vtkGetMacro(KeepAlpha, bool);
-  vtkBooleanMacro(KeepAlpha, bool);
-  ///@}
+  // KeepAlpha (vtkOpenGLAntialiasingPass), for MLAA: whether the alpha channel of the
+  // renderer's image is part of the result: a window with a
+  // transparent background (renderer BackgroundAlpha below 1) read back as RGBA
+  // (vtkWindowToImageFilter::SetInputBufferTypeToRGBA) or composited by the application.
+  // Default off: the image is treated as opaque, as the screen and an RGB screenshot show it;
+  // edges are found in the colour alone, so the RGB result equals vtkImageMLAA on the RGB
+  // screenshot (VTK's framebuffer holds alpha 0 on the background and 1 on geometry whatever
+  // their colours, which would otherwise make edges nobody sees). On: alpha changes are edges
+  // too, and colours are blended with their coverage, in the convention of
+  // vtkMLAAOptions::PremultipliedAlpha (see the class description). Renderers that preserve the
+  // colour buffer (layers) always keep alpha. VTK 9.1's GetAlphaBitPlanes() reports the bits of
+  // the window's framebuffer (8 on every offscreen window), not whether alpha is wanted, so the
+  // pass cannot tell by itself.
 
   ///@{
   /**
@@ -219,7 +195,7 @@ public:
    * depth when the pass renders it into its own textures, edges, blending weights, the pixel
    * mask, the area textures and, with recursive doubling, the two line-lengths textures).
    */
-  vtkIdType GetTargetMemorySize();
+  vtkIdType GetTargetMemorySize() override;
 
   /**
    * Bytes of the MLAA-specific targets alone (edges and blending-weights textures), the figure
@@ -232,25 +208,22 @@ protected:
   ~vtkOpenGLMLAAPass() override;
 
   vtkMLAAOptions* Options = nullptr;
-  bool AntialiasOverlays = false;
-  bool KeepAlpha = false;
   int LineLengths = AUTOMATIC;
+
+  // The hooks of vtkOpenGLAntialiasingPass.
+  bool NeedsDelegateDepth() override;
+  bool UsesStraightAlpha() override;
+  bool DrawsDeferredOverlays() override;
+  bool PrepareMethodTargets(const Frame& frame) override;
+  bool Antialias(const Frame& frame) override;
+  void ReleaseMethodResources(vtkWindow* w) override;
+  vtkIdType GetMethodTargetMemorySize() override;
+  void SubstituteShaderSnippets(std::string& source) override;
 
 private:
   vtkOpenGLMLAAPass(const vtkOpenGLMLAAPass&) = delete;
   void operator=(const vtkOpenGLMLAAPass&) = delete;
 
-  // Creates or resizes the render targets for a viewport of width x height.
-  // (with a depth texture for the delegate when `depth`).
-  void PrepareTargets(
-    vtkOpenGLRenderWindow* renWin, int width, int height, bool floatColor, bool depth);
-  // Copies the viewport (x, y, width, height) of the target framebuffer (binding and colour
-  // buffer) into ColorTexture.
-  void CopyTargetToColorTexture(vtkOpenGLRenderWindow* renWin, unsigned int targetBinding,
-    unsigned int targetBuffer, int x, int y, int width, int height);
-  // Renders the delegate into ColorTexture and DepthTexture (cleared to transparent black first
-  // when compositing over the target).
-  void RenderDelegateToTextures(const vtkRenderState* s, int width, int height, bool composite);
   // Passes 1 and 2 into EdgesTexture and WeightsTexture.
   bool ComputeEdgesAndWeights(vtkOpenGLRenderWindow* renWin, int width, int height, bool useAlpha);
   // The line lengths by recursive doubling into one of LengthsTextures (returned), on the pixels
@@ -276,24 +249,6 @@ private:
   // The uniforms of both reconstruction programs (the selection table of vtkMLAATopology).
   void SetReconstructionUniforms(vtkShaderProgram* program);
 
-  // A full-screen quad and the #defines its fragment shader was built with: the options that
-  // change a shader's work select a compile-time variant of its one .glsl source.
-  struct ShaderVariant
-  {
-    vtkOpenGLQuadHelper* Quad = nullptr;
-    std::string Defines;
-    // Frees the quad helper's graphics resources and the helper itself.
-    void Release(vtkWindow* window);
-  };
-  // Builds the quad helper of a fragment shader with `defines` in place of //VTK::MLAA::Dec
-  // (rebuilt when they differ from the last build), or binds the existing one.
-  bool ReadyQuad(vtkOpenGLRenderWindow* renWin, ShaderVariant& variant, const char* fs,
-    const std::string& defines);
-
-  vtkOpenGLFramebufferObject* DelegateFramebuffer = nullptr;
-  vtkOpenGLFramebufferObject* MLAAFramebuffer = nullptr;
-  vtkTextureObject* ColorTexture = nullptr;
-  vtkTextureObject* DepthTexture = nullptr;
   vtkTextureObject* EdgesTexture = nullptr;
   vtkTextureObject* WeightsTexture = nullptr;
   vtkTextureObject* MaskTexture = nullptr;

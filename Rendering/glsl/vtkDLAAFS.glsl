@@ -1,0 +1,168 @@
+//VTK::System::Dec
+//VTK::Output::Dec
+//VTK::MLAA::Dec
+
+// DLAA pass 2 of 2: short and long edges (vtkDLAAOptions, steps 1 and 2), drawn into the
+// renderer's viewport of the target framebuffer, from the delegate's image and the masks of
+// pass 1 (vtkDLAAMasksFS: mx, my; -1 where the pixel's 5-pixel cross holds a colour that is not
+// finite).
+//   s = lerp(lerp(c, Bx, mx), By, my / 2);
+// with DLAA_LONG_EDGES, Mx = saturate(2 a - 1) for a the mean of mx over p - 8 .. p + 8 along x,
+// My likewise along y; where exactly one of them is positive, the pixel is moved towards one of
+// its two neighbours across the edge until its luminosity is that of the 17-pixel mean colour
+// along the edge (the first neighbour, above or left, on a tie), and mixed into s by that mask.
+// Pixels that read a colour that is not finite are left as they are: those whose 5-pixel cross
+// holds one and, with long edges, those with such a cross within 8 pixels along x or y. Exact
+// texel reads, clamped to the border.
+//
+// Compile-time variants (#defines prepended by vtkOpenGLDLAAPass):
+//   DLAA_LUMA        0 Rec. 709 luma, 1 green (vtkDLAAOptions::LumaFunction)
+//   DLAA_LONG_EDGES  defined: vtkDLAAOptions::LongEdges
+//   DLAA_IN_PLACE    defined: the target already holds the delegate's image and depth; pixels
+//                    the method leaves alone are discarded and no depth is written. Otherwise
+//                    every pixel and its depth are written.
+//
+// Must match vtkImageDLAA.
+
+in vec2 texCoord;
+
+uniform sampler2D colorTexture; // the delegate's image
+uniform sampler2D depthTexture; // the delegate's depth (not in place)
+uniform sampler2D masksTexture; // pass 1 output, `padding` pixels larger each side
+uniform int padding;
+//VTK::DLAA::Luma
+
+ivec2 last;
+
+vec4 colorAt(ivec2 q)
+{
+  return texelFetch(colorTexture, clamp(q, ivec2(0), last), 0);
+}
+
+// The pixel c moved towards the neighbour n0 or n1 (n0 first on a tie) until its luminosity is
+// t; c itself when neither reaches t within one step.
+vec4 towards(vec4 c, vec4 n0, vec4 n1, float t)
+{
+  float lc = luma(c);
+  float best = 2.0;
+  vec4 q = c;
+  float l0 = luma(n0) - lc;
+  if (l0 != 0.0)
+  {
+    float k = (t - lc) / l0;
+    if (k > 0.0 && k <= 1.0)
+    {
+      best = k;
+      q = mix(c, n0, k);
+    }
+  }
+  float l1 = luma(n1) - lc;
+  if (l1 != 0.0)
+  {
+    float k = (t - lc) / l1;
+    if (k > 0.0 && k <= 1.0 && k < best)
+    {
+      q = mix(c, n1, k);
+    }
+  }
+  return q;
+}
+
+void leave(vec4 c)
+{
+#ifdef DLAA_IN_PLACE
+  discard;
+#else
+  gl_FragData[0] = c;
+#endif
+}
+
+void main()
+{
+  ivec2 size = textureSize(colorTexture, 0);
+  last = size - ivec2(1);
+  ivec2 p = ivec2(texCoord * vec2(size));
+#ifndef DLAA_IN_PLACE
+  gl_FragDepth = texelFetch(depthTexture, p, 0).r;
+#endif
+  vec4 c = texelFetch(colorTexture, p, 0);
+  ivec2 pm = p + ivec2(padding); // p in the masks texture
+  vec4 m = texelFetch(masksTexture, pm, 0);
+  if (m.x < 0.0)
+  {
+    leave(c); // the 5-pixel cross holds a colour that is not finite
+    return;
+  }
+
+#ifdef DLAA_LONG_EDGES
+  // The long masks: means of mx along x and of my along y over 17 pixels, and whether a mask
+  // they average read a colour that is not finite.
+  float sumX = 0.0;
+  float sumY = 0.0;
+  bool bad = false;
+  for (int i = -8; i <= 8; ++i)
+  {
+    vec4 mX = texelFetch(masksTexture, pm + ivec2(i, 0), 0);
+    vec4 mY = texelFetch(masksTexture, pm + ivec2(0, i), 0);
+    sumX += mX.x;
+    sumY += mY.y;
+    bad = bad || mX.x < 0.0 || mY.x < 0.0;
+  }
+  if (bad)
+  {
+    leave(c);
+    return;
+  }
+  float longX = clamp(2.0 * (sumX / 17.0) - 1.0, 0.0, 1.0);
+  float longY = clamp(2.0 * (sumY / 17.0) - 1.0, 0.0, 1.0);
+#else
+  float longX = 0.0;
+  float longY = 0.0;
+#endif
+  if (m.x <= 0.0 && m.y <= 0.0 && longX <= 0.0 && longY <= 0.0)
+  {
+    leave(c); // flat, or faint noise: exactly as rendered
+    return;
+  }
+
+  // Short edges.
+  vec4 left = colorAt(p - ivec2(1, 0));
+  vec4 right = colorAt(p + ivec2(1, 0));
+  vec4 below = colorAt(p - ivec2(0, 1));
+  vec4 above = colorAt(p + ivec2(0, 1));
+  vec4 blurX =
+    (colorAt(p - ivec2(2, 0)) + left + right + colorAt(p + ivec2(2, 0)) + 2.0 * c) / 6.0;
+  vec4 blurY =
+    (colorAt(p - ivec2(0, 2)) + below + above + colorAt(p + ivec2(0, 2)) + 2.0 * c) / 6.0;
+  vec4 result = mix(mix(c, blurX, m.x), blurY, m.y / 2.0);
+
+#ifdef DLAA_LONG_EDGES
+  // Long edges, unless both directions have one (noise, texture).
+  if (longX > 0.0 && !(longY > 0.0))
+  {
+    vec4 sum = vec4(0.0);
+    for (int i = -8; i <= 8; ++i)
+    {
+      sum += colorAt(p + ivec2(i, 0));
+    }
+    result = mix(result, towards(c, above, below, luma(sum / 17.0)), longX);
+  }
+  else if (longY > 0.0 && !(longX > 0.0))
+  {
+    vec4 sum = vec4(0.0);
+    for (int i = -8; i <= 8; ++i)
+    {
+      sum += colorAt(p + ivec2(0, i));
+    }
+    result = mix(result, towards(c, left, right, luma(sum / 17.0)), longY);
+  }
+#endif
+
+#ifdef DLAA_IN_PLACE
+  if (result == c)
+  {
+    discard;
+  }
+#endif
+  gl_FragData[0] = result;
+}

@@ -1,0 +1,327 @@
+#include "vtkOpenGLAntialiasingPass.h"
+
+#include "vtkOpenGLAntialiasingPassInternals.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkRenderState.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkSmartPointer.h"
+#include "vtkTextureObject.h"
+
+#include "vtk_glew.h" // For GL enums only: every call goes through VTK's classes
+
+using namespace vtkOpenGLAntialiasingPassInternals;
+
+//------------------------------------------------------------------------------
+vtkOpenGLAntialiasingPass::vtkOpenGLAntialiasingPass() = default;
+
+//------------------------------------------------------------------------------
+vtkOpenGLAntialiasingPass::~vtkOpenGLAntialiasingPass()
+{
+  if (this->ColorTexture || this->DelegateFramebuffer || this->WorkFramebuffer)
+  {
+    vtkErrorMacro("Graphics resources should have been released by "
+                  "ReleaseGraphicsResources().");
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLAntialiasingPass::PrepareTargets(const Frame& frame, bool depth)
+{
+  vtkOpenGLRenderWindow* renWin = frame.Window;
+  for (vtkTextureObject** texture : { &this->ColorTexture, &this->DepthTexture })
+  {
+    if (!*texture)
+    {
+      * texture = NewTexture(renWin);
+    }
+  }
+  bool reallocated = AllocateColorTarget(this->ColorTexture, frame.Width, frame.Height, 4,
+    frame.FloatColor ? VTK_FLOAT : VTK_UNSIGNED_CHAR, false);
+  if (depth)
+  {
+    // 24-bit depth, as a window's depth buffer, so the delegate renders as it would in the window.
+    reallocated |=
+      AllocateDepthTarget(this->DepthTexture, frame.Width, frame.Height, vtkTextureObject::Fixed24);
+  }
+  else if (this->DepthTexture->GetHandle())
+  {
+    this->DepthTexture->ReleaseGraphicsResources(renWin); // not needed in place
+    reallocated = true;
+  }
+  reallocated |= this->PrepareMethodTargets(frame);
+  if (reallocated)
+  {
+    // Framebuffer objects remember their attachments: start afresh with the new textures.
+    DeleteObject(this->DelegateFramebuffer, renWin);
+    DeleteObject(this->WorkFramebuffer, renWin);
+  }
+  for (vtkOpenGLFramebufferObject** fbo : { &this->DelegateFramebuffer, &this->WorkFramebuffer })
+  {
+    if (!*fbo)
+    {
+      * fbo = vtkOpenGLFramebufferObject::New();
+      (*fbo)->SetContext(renWin);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLAntialiasingPass::RenderDelegateToTextures(
+  const vtkRenderState* s, int width, int height, bool composite)
+{
+  vtkOpenGLState* ostate = this->DelegateFramebuffer->GetContext()->GetState();
+  vtkRenderState delegateState(s->GetRenderer());
+  delegateState.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
+  delegateState.SetRequiredKeys(s->GetRequiredKeys());
+  delegateState.SetFrameBuffer(this->DelegateFramebuffer);
+
+  this->DelegateFramebuffer->Bind();
+  this->DelegateFramebuffer->AddColorAttachment(0, this->ColorTexture);
+  this->DelegateFramebuffer->ActivateDrawBuffer(0);
+  this->DelegateFramebuffer->AddDepthAttachment(this->DepthTexture);
+  this->DelegateFramebuffer->StartNonOrtho(width, height);
+  ostate->vtkglViewport(0, 0, width, height);
+  ostate->vtkglScissor(0, 0, width, height);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  if (composite)
+  {
+    // The renderer preserves the colour buffer, so it will not clear this one: start from
+    // transparent black. VTK's blending (source alpha, one minus source alpha for colour; one, one
+    // minus source alpha for alpha) then leaves premultiplied colour here.
+    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+    ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+  }
+
+  this->DelegatePass->Render(&delegateState);
+  this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLAntialiasingPass::CopyTargetToColorTexture(
+  const Frame& frame, unsigned int targetBinding, unsigned int targetBuffer)
+{
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  this->DelegateFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+  this->DelegateFramebuffer->AddColorAttachment(0, this->ColorTexture);
+  this->DelegateFramebuffer->ActivateDrawBuffer(0);
+  ostate->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, targetBinding);
+  ostate->vtkglReadBuffer(targetBuffer);
+  const int source[4] = { frame.X, frame.X + frame.Width, frame.Y, frame.Y + frame.Height };
+  const int destination[4] = { 0, frame.Width, 0, frame.Height };
+  vtkOpenGLFramebufferObject::Blit(source, destination, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLAntialiasingPass::ShaderVariant::Release(vtkWindow* window)
+{
+  if (this->Quad)
+  {
+    this->Quad->ReleaseGraphicsResources(window);
+    delete this->Quad;
+    this->Quad = nullptr;
+  }
+  this->Defines.clear();
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLAntialiasingPass::ReadyQuad(
+  vtkOpenGLRenderWindow* renWin, ShaderVariant& variant, const char* fs, const std::string& defines)
+{
+  if (variant.Quad && variant.Defines != defines)
+  {
+    // The options changed what the shader does: build the other variant (the shader cache keeps the
+    // programs, so switching back is cheap).
+    variant.Release(renWin);
+  }
+  vtkOpenGLQuadHelper*& quad = variant.Quad;
+  if (!quad)
+  {
+    std::string source = fs;
+    vtkShaderProgram::Substitute(source, "//VTK::MLAA::Dec", defines, false);
+    this->SubstituteShaderSnippets(source);
+    quad = new vtkOpenGLQuadHelper(renWin, nullptr, source.c_str(), "");
+    variant.Defines = defines;
+  }
+  else
+  {
+    renWin->GetShaderCache()->ReadyShaderProgram(quad->Program);
+  }
+  if (!quad->Program || !quad->Program->GetCompiled())
+  {
+    vtkErrorMacro("Could not build a shader program of " << this->GetClassName() << ".");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
+{
+  vtkOpenGLClearErrorMacro();
+  this->NumberOfRenderedProps = 0;
+  if (!this->DelegatePass)
+  {
+    vtkWarningMacro("No delegate pass: nothing to antialias.");
+    return;
+  }
+
+  vtkRenderer* renderer = s->GetRenderer();
+  auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  if (!renWin)
+  {
+    vtkErrorMacro(<< this->GetClassName() << " needs a vtkOpenGLRenderWindow.");
+    return;
+  }
+  vtkOpenGLState* ostate = renWin->GetState();
+
+  // A hardware selection render (picking): the colour buffer holds encoded prop, cell and point
+  // ids, not colours, and a blend of two ids is a third, wrong one. Render straight into the
+  // target, untouched, as vtkOpenGLRenderer does without a pass: the camera (which clears), the
+  // lights, and UpdateGeometry, which hands the props to the selector. (The selector numbers the
+  // props only in UpdateGeometry; render passes such as vtkRenderStepsPass do not call it.)
+  if (renderer->GetSelector())
+  {
+    renWin->MakeCurrent();
+    this->UpdateCamera(renderer);
+    this->UpdateLightGeometry(renderer);
+    this->UpdateLights(renderer);
+    this->UpdateGeometry(renderer, s->GetFrameBuffer());
+    this->NumberOfRenderedProps = renderer->GetNumberOfPropsRendered();
+    vtkOpenGLCheckErrorMacro("failed after vtkOpenGLAntialiasingPass::Render");
+    return;
+  }
+
+  // The viewport to fill: the renderer's (tiled) viewport in the window, or the whole of a
+  // framebuffer object when an enclosing pass renders this one into its own target.
+  Frame frame;
+  frame.Window = renWin;
+  if (auto* targetFbo = vtkOpenGLFramebufferObject::SafeDownCast(s->GetFrameBuffer()))
+  {
+    int size[2];
+    s->GetWindowSize(size);
+    frame.Width = size[0];
+    frame.Height = size[1];
+    vtkTextureObject* target = targetFbo->GetColorAttachmentAsTextureObject(0);
+    frame.FloatColor = target && target->GetVTKDataType() == VTK_FLOAT;
+  }
+  else
+  {
+    renderer->GetTiledSizeAndOrigin(&frame.Width, &frame.Height, &frame.X, &frame.Y);
+  }
+  if (frame.Width < 1 || frame.Height < 1)
+  {
+    return;
+  }
+  // A renderer that preserves the colour buffer (a layer above 0, or SetPreserveColorBuffer(1))
+  // draws over what is already there: its image is composited over the target, and its alpha
+  // (coverage) is part of the result.
+  frame.Composite = renderer->Transparent() != 0;
+  // Alpha is part of the result only when compositing, and with KeepAlpha. Otherwise the image is
+  // opaque to whoever reads it (an RGB screenshot, the screen), and the alpha VTK leaves in the
+  // framebuffer (0 on the background, 1 on geometry, whatever the background colour) would make
+  // edges that nobody sees.
+  frame.UseAlpha = frame.Composite || this->KeepAlpha;
+  // Straight alpha: the texture of a composited renderer is premultiplied by construction.
+  frame.StraightAlpha = this->KeepAlpha && !frame.Composite && this->UsesStraightAlpha();
+  // In place: the delegate renders straight into the target, as it would without the pass; its
+  // colour is copied (blitted) into ColorTexture, and the last pass writes only the pixels that
+  // antialiasing changes. This saves copying every pixel's colour and depth back with a shader. A
+  // composited renderer needs its own transparent texture, and a method that reads the delegate's
+  // depth needs it as a texture: those render the delegate into the pass's textures and copy
+  // everything back.
+  frame.InPlace = !frame.Composite && !this->NeedsDelegateDepth();
+  unsigned int targetBinding = 0, targetBuffer = 0;
+  ostate->GetCurrentDrawFramebufferState(targetBinding, targetBuffer);
+
+  vtkRenderStepsPass* steps =
+    this->AntialiasOverlays ? nullptr : vtkRenderStepsPass::SafeDownCast(this->DelegatePass);
+  vtkSmartPointer<vtkRenderPass> overlay = steps ? steps->GetOverlayPass() : nullptr;
+  bool done = false;
+  {
+    // Save the state this pass changes; restored at the end of this block.
+    vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
+    vtkOpenGLState::ScopedglEnableDisable depthTestSaver(ostate, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
+    vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
+    vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
+    vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
+    vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+    vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+
+    this->PrepareTargets(frame, !frame.InPlace);
+
+    // Render the delegate, keeping its overlay step for after the antialiasing.
+    if (overlay)
+    {
+      steps->SetOverlayPass(nullptr);
+    }
+    if (frame.InPlace)
+    {
+      this->DelegatePass->Render(s);
+      this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
+      ostate->PushFramebufferBindings();
+      this->CopyTargetToColorTexture(frame, targetBinding, targetBuffer);
+      ostate->PopFramebufferBindings();
+    }
+    else
+    {
+      ostate->PushFramebufferBindings();
+      this->RenderDelegateToTextures(s, frame.Width, frame.Height, frame.Composite);
+      ostate->PopFramebufferBindings();
+    }
+    if (overlay)
+    {
+      steps->SetOverlayPass(overlay);
+    }
+
+    done = this->Antialias(frame);
+  }
+
+  // The overlays: drawn on top of the result, in the state the pass was entered with, in the
+  // renderer's viewport, as the render steps would have drawn them.
+  if (done && overlay && this->DrawsDeferredOverlays())
+  {
+    ostate->vtkglViewport(frame.X, frame.Y, frame.Width, frame.Height);
+    ostate->vtkglScissor(frame.X, frame.Y, frame.Width, frame.Height);
+    overlay->Render(s);
+    this->NumberOfRenderedProps += overlay->GetNumberOfRenderedProps();
+  }
+  vtkOpenGLCheckErrorMacro("failed after vtkOpenGLAntialiasingPass::Render");
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLAntialiasingPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  this->Superclass::ReleaseGraphicsResources(w);
+  this->ReleaseMethodResources(w);
+  DeleteObject(this->DelegateFramebuffer, w);
+  DeleteObject(this->WorkFramebuffer, w);
+  DeleteObject(this->ColorTexture, w);
+  DeleteObject(this->DepthTexture, w);
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOpenGLAntialiasingPass::GetTargetMemorySize()
+{
+  const int colorBytes =
+    (this->ColorTexture && this->ColorTexture->GetVTKDataType() == VTK_FLOAT) ? 16 : 4;
+  return TextureBytes(this->ColorTexture, colorBytes) + TextureBytes(this->DepthTexture, 4) +
+    this->GetMethodTargetMemorySize();
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLAntialiasingPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "AntialiasOverlays: " << (this->AntialiasOverlays ? "On" : "Off") << "\n";
+  os << indent << "KeepAlpha: " << (this->KeepAlpha ? "On" : "Off") << "\n";
+}

@@ -1,0 +1,168 @@
+/**
+ * @class   vtkOpenGLAntialiasingPass
+ * @brief   Abstract render pass that antialiases a renderer's image with full-screen shader
+ *          passes: the targets and state handling that vtkOpenGLMLAAPass and vtkOpenGLDLAAPass
+ *          share.
+ *
+ * A subclass supplies the antialiasing itself (its own targets and shader passes, which read
+ * ColorTexture and write into the renderer's viewport); this class does everything around it, the
+ * same way for every method:
+ * - the delegate is rendered in place, straight into the target framebuffer and viewport as it
+ *   would be without the pass, and its colour is copied (blitted, resolving multisampled targets)
+ *   into ColorTexture; the subclass then writes only the pixels it changes. When the renderer is
+ *   composited over lower layers, or when the subclass needs the delegate's depth as a texture,
+ *   the delegate renders into ColorTexture and DepthTexture instead and the subclass writes
+ *   every pixel and its depth back;
+ * - layers: a renderer that preserves the colour buffer renders into a texture cleared to
+ *   transparent black (premultiplied colour) and its result is composited over the target with
+ *   premultiplied "over" blending; its alpha takes part in the antialiasing;
+ * - overlays: the overlay step of a vtkRenderStepsPass delegate (text, 2D actors) is drawn after
+ *   the antialiasing, untouched, unless AntialiasOverlays is on;
+ * - picking: while a vtkHardwareSelector renders, the renderer is drawn without the delegate and
+ *   without antialiasing, as vtkOpenGLRenderer does without a pass, so ids are not blended;
+ * - KeepAlpha (whether alpha is part of the result), floating-point targets (the copy is floating
+ *   point too), tiled viewports and framebuffer objects of an enclosing pass, window resizes
+ *   (targets resized in place), ReleaseGraphicsResources and GetTargetMemorySize.
+ * Shaders are full-screen quads whose fragment source has the subclass's #defines in place of
+ * //VTK::MLAA::Dec (ShaderVariant, ReadyQuad: rebuilt when the defines change).
+ *
+ * The behaviour of each piece is described in full in vtkOpenGLMLAAPass's class description.
+ *
+ * @sa vtkOpenGLMLAAPass vtkOpenGLDLAAPass vtkOpenGLFXAAPass
+ */
+
+#ifndef vtkOpenGLAntialiasingPass_h
+#define vtkOpenGLAntialiasingPass_h
+
+#include "vtkImageProcessingPass.h"
+#include "vtkRenderingMLAAModule.h" // For export macro
+
+#include <string> // For std::string
+
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
+class vtkTextureObject;
+
+class VTKRENDERINGMLAA_EXPORT vtkOpenGLAntialiasingPass : public vtkImageProcessingPass
+{
+public:
+  vtkTypeMacro(vtkOpenGLAntialiasingPass, vtkImageProcessingPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Render the delegate and antialias its image into the current framebuffer and viewport.
+   */
+  void Render(const vtkRenderState* s) override;
+
+  /**
+   * Release every graphics resource of the pass and of its delegate.
+   */
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  // /@{
+  /**
+   * Whether the overlay step of a vtkRenderStepsPass delegate (text, scalar bars, 2D actors) is
+   * antialiased too. Default off: overlays are drawn after the antialiasing, untouched.
+   */
+  vtkSetMacro(AntialiasOverlays, bool);
+  vtkGetMacro(AntialiasOverlays, bool);
+  vtkBooleanMacro(AntialiasOverlays, bool);
+  // /@}
+
+  // /@{
+  /**
+   * Whether the alpha channel of the renderer's image is part of the result (a transparent window
+   * read back as RGBA). Default off: the image is treated as opaque, as the screen and an RGB
+   * screenshot show it. Renderers that preserve the colour buffer (layers) always keep alpha. What
+   * each method does with alpha is described by the subclass.
+   */
+  vtkSetMacro(KeepAlpha, bool);
+  vtkGetMacro(KeepAlpha, bool);
+  vtkBooleanMacro(KeepAlpha, bool);
+  // /@}
+
+  /**
+   * Bytes of GPU memory held by the pass's render targets at the last render: the copy of the
+   * delegate's colour, its depth when the pass renders it into its own textures, and the subclass's
+   * targets.
+   */
+  virtual vtkIdType GetTargetMemorySize();
+
+protected:
+  vtkOpenGLAntialiasingPass();
+  ~vtkOpenGLAntialiasingPass() override;
+
+  // What one render asks of the subclass's passes.
+  struct Frame
+  {
+    vtkOpenGLRenderWindow* Window = nullptr;
+    int X = 0, Y = 0, Width = 0, Height = 0; // the target viewport
+    bool Composite = false;                  // composited over the target with premultiplied "over"
+    bool UseAlpha = false;                   // alpha is part of the result (Composite or KeepAlpha)
+    bool StraightAlpha = false; // the image holds straight alpha (see UsesStraightAlpha)
+    bool InPlace = false;       // the target holds the delegate's image: write changed pixels
+    bool FloatColor = false;    // ColorTexture is floating point
+  };
+
+  // /@{
+  /** What the subclass implements. */
+  // Whether the passes need the delegate's depth as a texture (rules out rendering in place).
+  virtual bool NeedsDelegateDepth() { return false; }
+  // Whether, with KeepAlpha and no compositing, the image is read as straight alpha.
+  virtual bool UsesStraightAlpha() { return false; }
+  // Whether the deferred overlays are drawn over the result (not over a debug image, say).
+  virtual bool DrawsDeferredOverlays() { return true; }
+  // Creates or resizes the subclass's targets; returns true when one was allocated afresh (the
+  // framebuffer objects are then rebuilt).
+  virtual bool PrepareMethodTargets(const Frame& frame) = 0;
+  // The antialiasing: reads ColorTexture (and DepthTexture unless in place) and writes the target
+  // viewport, which is bound as the draw framebuffer.
+  virtual bool Antialias(const Frame& frame) = 0;
+  // Frees the subclass's GL objects (shader variants, targets).
+  virtual void ReleaseMethodResources(vtkWindow* w) = 0;
+  // Bytes of the subclass's targets.
+  virtual vtkIdType GetMethodTargetMemorySize() = 0;
+  // Substitutions in a fragment source beyond //VTK::MLAA::Dec (shared snippets).
+  virtual void SubstituteShaderSnippets(std::string&) {}
+  // /@}
+
+  // A full-screen quad and the #defines its fragment shader was built with: the options that change
+  // a shader's work select a compile-time variant of its one .glsl source.
+  struct ShaderVariant
+  {
+    vtkOpenGLQuadHelper* Quad = nullptr;
+    std::string Defines;
+    // Frees the quad helper's graphics resources and the helper itself.
+    void Release(vtkWindow* window);
+  };
+  // Builds the quad helper of a fragment shader with `defines` in place of //VTK::MLAA::Dec
+  // (rebuilt when they differ from the last build), or binds the existing one.
+  bool ReadyQuad(vtkOpenGLRenderWindow* renWin, ShaderVariant& variant, const char* fs,
+    const std::string& defines);
+
+  bool AntialiasOverlays = false;
+  bool KeepAlpha = false;
+
+  vtkOpenGLFramebufferObject* DelegateFramebuffer = nullptr;
+  vtkOpenGLFramebufferObject* WorkFramebuffer = nullptr; // for the subclass's passes
+  vtkTextureObject* ColorTexture = nullptr;
+  vtkTextureObject* DepthTexture = nullptr;
+
+private:
+  vtkOpenGLAntialiasingPass(const vtkOpenGLAntialiasingPass&) = delete;
+  void operator=(const vtkOpenGLAntialiasingPass&) = delete;
+
+  // Creates or resizes the shared targets and the subclass's, and the framebuffer objects (with a
+  // depth texture for the delegate when `depth`).
+  void PrepareTargets(const Frame& frame, bool depth);
+  // Copies the viewport of the target framebuffer (binding and colour buffer) into ColorTexture.
+  void CopyTargetToColorTexture(
+    const Frame& frame, unsigned int targetBinding, unsigned int targetBuffer);
+  // Renders the delegate into ColorTexture and DepthTexture (cleared to transparent black first
+  // when compositing over the target).
+  void RenderDelegateToTextures(const vtkRenderState* s, int width, int height, bool composite);
+};
+
+#endif

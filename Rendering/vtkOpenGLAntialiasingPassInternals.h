@@ -1,0 +1,101 @@
+// Small helpers of the antialiasing passes (vtkOpenGLAntialiasingPass and its subclasses): render
+// targets that are resized in place, #define lines of shader variants. Private header.
+#ifndef vtkOpenGLAntialiasingPassInternals_h
+#define vtkOpenGLAntialiasingPassInternals_h
+
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkTextureObject.h"
+#include "vtkType.h"
+
+#include <string>
+
+namespace vtkOpenGLAntialiasingPassInternals
+{
+// Makes `texture` a 2D texture of the given size, components and type (and, when `internalFormat`
+// is not 0, that GL internal format): resized in place (same GL handle, so framebuffer attachments
+// stay valid) when only the size differs, allocated afresh otherwise. Returns true when the texture
+// was allocated afresh (its handle changed).
+inline bool AllocateColorTarget(vtkTextureObject* texture, int width, int height, int components,
+  int vtkType, bool linear, unsigned int internalFormat = 0)
+{
+  const bool sameFormat = texture->GetHandle() && texture->GetComponents() == components &&
+    texture->GetVTKDataType() == vtkType;
+  if (sameFormat)
+  {
+    if (texture->GetWidth() != static_cast<unsigned int>(width) ||
+      texture->GetHeight() != static_cast<unsigned int>(height))
+    {
+      texture->Resize(width, height);
+    }
+    return false;
+  }
+  texture->ReleaseGraphicsResources(texture->GetContext());
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  texture->SetMinificationFilter(linear ? vtkTextureObject::Linear : vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(linear ? vtkTextureObject::Linear : vtkTextureObject::Nearest);
+  if (internalFormat)
+  {
+    texture->SetInternalFormat(internalFormat);
+  }
+  texture->Allocate2D(width, height, components, vtkType);
+  return true;
+}
+
+// The same for a depth texture.
+inline bool AllocateDepthTarget(vtkTextureObject* texture, int width, int height, int format)
+{
+  if (texture->GetHandle())
+  {
+    if (texture->GetWidth() != static_cast<unsigned int>(width) ||
+      texture->GetHeight() != static_cast<unsigned int>(height))
+    {
+      texture->Resize(width, height);
+    }
+    return false;
+  }
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  texture->SetMinificationFilter(vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  texture->AllocateDepth(width, height, format);
+  return true;
+}
+
+inline vtkTextureObject* NewTexture(vtkOpenGLRenderWindow* renWin)
+{
+  vtkTextureObject* texture = vtkTextureObject::New();
+  texture->SetContext(renWin);
+  return texture;
+}
+
+inline vtkIdType TextureBytes(vtkTextureObject* texture, int bytesPerTexel)
+{
+  return texture && texture->GetHandle()
+    ? static_cast<vtkIdType>(texture->GetWidth()) * texture->GetHeight() * bytesPerTexel
+    : 0;
+}
+
+// One #define line of a shader variant.
+inline std::string Define(const char* name, int value)
+{
+  return std::string("#define ") + name + " " + std::to_string(value) + "\n";
+}
+inline std::string Define(const char* name, bool defined)
+{
+  return defined ? std::string("#define ") + name + "\n" : std::string();
+}
+
+template <typename T>
+void DeleteObject(T*& object, vtkWindow* w)
+{
+  if (object)
+  {
+    object->ReleaseGraphicsResources(w);
+    object->Delete();
+    object = nullptr;
+  }
+}
+} // namespace vtkOpenGLAntialiasingPassInternals
+
+#endif

@@ -1,0 +1,213 @@
+#include "vtkOpenGLDLAAPass.h"
+
+#include "vtkOpenGLAntialiasingPassInternals.h"
+
+#include "vtkDLAAOptions.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+#include "vtkDLAAFS.h"
+#include "vtkDLAALuma.h"
+#include "vtkDLAAMasksFS.h"
+
+#include <algorithm>
+#include <string>
+
+#include "vtk_glew.h" // For GL enums only: every call goes through VTK's classes
+
+using namespace vtkOpenGLAntialiasingPassInternals;
+
+vtkStandardNewMacro(vtkOpenGLDLAAPass);
+
+//------------------------------------------------------------------------------
+vtkOpenGLDLAAPass::vtkOpenGLDLAAPass()
+{
+  this->Options = vtkDLAAOptions::New();
+}
+
+//------------------------------------------------------------------------------
+vtkOpenGLDLAAPass::~vtkOpenGLDLAAPass()
+{
+  if (this->MasksTexture || this->MasksQuad.Quad || this->FilterQuad.Quad)
+  {
+    vtkErrorMacro("Graphics resources should have been released by "
+                  "ReleaseGraphicsResources().");
+  }
+  this->Options->Delete();
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLDLAAPass::SetOptions(vtkDLAAOptions* options)
+{
+  if (vtkDLAAOptions::Assign(this, this->Options, options))
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkOpenGLDLAAPass::GetMTime()
+{
+  return std::max(this->Superclass::GetMTime(), this->Options->GetMTime());
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLDLAAPass::SubstituteShaderSnippets(std::string& source)
+{
+  vtkShaderProgram::Substitute(source, "//VTK::DLAA::Luma", vtkDLAALuma, false);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLDLAAPass::PrepareMethodTargets(const Frame& frame)
+{
+  if (!this->MasksTexture)
+  {
+    this->MasksTexture = NewTexture(frame.Window);
+  }
+  // Full floats: the 17-pixel means of the masks follow the CPU's float arithmetic (half floats
+  // would move the noise rejection's threshold by their rounding). With long edges the texture
+  // extends 8 pixels beyond each side of the image, where the 17-pixel windows of the pixels
+  // near the border read masks computed from clamped colours (vtkDLAAMasksFS.glsl).
+  const int padding = this->GetMasksPadding();
+  return AllocateColorTarget(this->MasksTexture, frame.Width + 2 * padding,
+    frame.Height + 2 * padding, 2, VTK_FLOAT, false, GL_RG32F);
+}
+
+//------------------------------------------------------------------------------
+int vtkOpenGLDLAAPass::GetMasksPadding()
+{
+  return this->Options->GetLongEdges() ? vtkDLAAOptions::LongEdgeRadius : 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLDLAAPass::ComputeMasks(const Frame& frame)
+{
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  vtkOpenGLFramebufferObject* fbo = this->WorkFramebuffer;
+  fbo->Bind();
+  fbo->AddColorAttachment(0, this->MasksTexture);
+  fbo->ActivateDrawBuffer(0);
+  const int padding = this->GetMasksPadding();
+  const int width = frame.Width + 2 * padding;
+  const int height = frame.Height + 2 * padding;
+  fbo->StartNonOrtho(width, height);
+  ostate->vtkglViewport(0, 0, width, height);
+  ostate->vtkglScissor(0, 0, width, height);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  if (!this->ReadyQuad(frame.Window, this->MasksQuad, vtkDLAAMasksFS,
+        Define("DLAA_LUMA", this->Options->GetLumaFunction())))
+  {
+    return false;
+  }
+  vtkShaderProgram* program = this->MasksQuad.Quad->Program;
+  this->ColorTexture->Activate();
+  program->SetUniformi("colorTexture", this->ColorTexture->GetTextureUnit());
+  program->SetUniformf("lambda", static_cast<float>(this->Options->GetLambda()));
+  program->SetUniformf("epsilon", static_cast<float>(this->Options->GetEpsilon()));
+  program->SetUniformi("padding", padding);
+  this->MasksQuad.Quad->Render();
+  this->ColorTexture->Deactivate();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLDLAAPass::Filter(const Frame& frame)
+{
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  ostate->vtkglViewport(frame.X, frame.Y, frame.Width, frame.Height);
+  ostate->vtkglScissor(frame.X, frame.Y, frame.Width, frame.Height);
+  if (frame.Composite)
+  {
+    // Premultiplied "over" onto what lower layers drew (see vtkOpenGLAntialiasingPass).
+    ostate->vtkglEnable(GL_BLEND);
+    ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  }
+  else
+  {
+    ostate->vtkglDisable(GL_BLEND);
+  }
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  if (frame.InPlace)
+  {
+    // Only the changed pixels are written, and no depth.
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+  }
+  else
+  {
+    // Depth writes need the depth test on; ALWAYS copies the delegate's depth.
+    ostate->vtkglEnable(GL_DEPTH_TEST);
+    ostate->vtkglDepthFunc(GL_ALWAYS);
+    ostate->vtkglDepthMask(GL_TRUE);
+  }
+  const std::string defines = Define("DLAA_LUMA", this->Options->GetLumaFunction()) +
+    Define("DLAA_LONG_EDGES", this->Options->GetLongEdges()) +
+    Define("DLAA_IN_PLACE", frame.InPlace);
+  if (!this->ReadyQuad(frame.Window, this->FilterQuad, vtkDLAAFS, defines))
+  {
+    return false;
+  }
+  vtkShaderProgram* program = this->FilterQuad.Quad->Program;
+  this->ColorTexture->Activate();
+  this->MasksTexture->Activate();
+  program->SetUniformi("colorTexture", this->ColorTexture->GetTextureUnit());
+  program->SetUniformi("masksTexture", this->MasksTexture->GetTextureUnit());
+  program->SetUniformi("padding", this->GetMasksPadding());
+  if (!frame.InPlace)
+  {
+    this->DepthTexture->Activate();
+    program->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
+  }
+  this->FilterQuad.Quad->Render();
+  if (!frame.InPlace)
+  {
+    this->DepthTexture->Deactivate();
+  }
+  this->MasksTexture->Deactivate();
+  this->ColorTexture->Deactivate();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLDLAAPass::Antialias(const Frame& frame)
+{
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  ostate->PushFramebufferBindings();
+  const bool computed = this->ComputeMasks(frame);
+  ostate->PopFramebufferBindings();
+  return computed && this->Filter(frame);
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLDLAAPass::ReleaseMethodResources(vtkWindow* w)
+{
+  this->MasksQuad.Release(w);
+  this->FilterQuad.Release(w);
+  DeleteObject(this->MasksTexture, w);
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOpenGLDLAAPass::GetDLAATargetMemorySize()
+{
+  return TextureBytes(this->MasksTexture, 8);
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOpenGLDLAAPass::GetMethodTargetMemorySize()
+{
+  return this->GetDLAATargetMemorySize();
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLDLAAPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Options:\n";
+  this->Options->PrintSelf(os, indent.GetNextIndent());
+}
