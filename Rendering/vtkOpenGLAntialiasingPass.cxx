@@ -24,7 +24,7 @@ vtkOpenGLAntialiasingPass::vtkOpenGLAntialiasingPass() = default;
 //------------------------------------------------------------------------------
 vtkOpenGLAntialiasingPass::~vtkOpenGLAntialiasingPass()
 {
-  if (this->ColorTexture || this->DelegateFramebuffer || this->WorkFramebuffer)
+  if (this->HoldsSharedResources())
   {
     vtkErrorMacro("Graphics resources should have been released by "
                   "ReleaseGraphicsResources().");

@@ -145,6 +145,13 @@ protected:
   bool AntialiasOverlays = false;
   bool KeepAlpha = false;
 
+  // Whether the shared targets are still allocated (ReleaseGraphicsResources not called): the
+  // destructor reports it once; subclasses report their own targets only when these are gone.
+  bool HoldsSharedResources() const
+  {
+    return this->ColorTexture || this->DelegateFramebuffer || this->WorkFramebuffer;
+  }
+
   vtkOpenGLFramebufferObject* DelegateFramebuffer = nullptr;
   vtkOpenGLFramebufferObject* WorkFramebuffer = nullptr; // for the subclass's passes
   vtkTextureObject* ColorTexture = nullptr;

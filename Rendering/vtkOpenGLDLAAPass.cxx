@@ -33,7 +33,8 @@ vtkOpenGLDLAAPass::vtkOpenGLDLAAPass()
 //------------------------------------------------------------------------------
 vtkOpenGLDLAAPass::~vtkOpenGLDLAAPass()
 {
-  if (this->MasksTexture || this->MasksQuad.Quad || this->FilterQuad.Quad)
+  if ((this->MasksTexture || this->MasksQuad.Quad || this->FilterQuad.Quad) &&
+    !this->HoldsSharedResources()) // else the base class reports it
   {
     vtkErrorMacro("Graphics resources should have been released by "
                   "ReleaseGraphicsResources().");

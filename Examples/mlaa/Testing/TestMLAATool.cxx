@@ -10,6 +10,8 @@
 // it (see the project's ENVIRONMENT notes).
 #include "vtkMLAATestUtilities.h"
 
+#include "vtkDLAAOptions.h"
+#include "vtkImageDLAA.h"
 #include "vtkMLAAAreaTexture.h"
 
 #include <OpenImageIO/half.h>
@@ -419,6 +421,21 @@ vtkSmartPointer<vtkImageData> Filter(vtkImageData* input,
   return output;
 }
 
+vtkSmartPointer<vtkImageData> FilterDLAA(
+  vtkImageData* input, const std::function<void(vtkDLAAOptions*)>& configure = nullptr)
+{
+  vtkNew<vtkImageDLAA> filter;
+  if (configure)
+  {
+    configure(filter->GetOptions());
+  }
+  filter->SetInputData(input);
+  filter->Update();
+  auto output = vtkSmartPointer<vtkImageData>::New();
+  output->DeepCopy(filter->GetOutput());
+  return output;
+}
+
 bool SamePixel(vtkImageData* image, int x0, int y0, int x1, int y1)
 {
   for (int k = 0; k < image->GetNumberOfScalarComponents(); ++k)
@@ -540,7 +557,8 @@ void HelpListsEveryOption()
     }
     for (const char* option : { "--threshold T", "--edges MODE", "--depth-image FILE",
            "--max-search-steps N", "--diagonals on|off", "--local-contrast F", "--dominant-blending on|off", "--alpha auto|straight|premultiplied", "--debug", "--value-range LO HI|auto", "--area-texture D",
-           "--reconstruction on|off", "--preset NAME",
+           "--reconstruction on|off", "--preset NAME", "--method mlaa|dlaa", "--dlaa-epsilon E",
+           "--dlaa-lambda L", "--dlaa-luma NAME", "--long-edges on|off",
            "-h, --help", "Usage: mlaa [options] INPUT OUTPUT" })
     {
       if (!MLAA_CHECK(words.find(option) != std::string::npos))
@@ -852,6 +870,42 @@ void OptionPreset()
   ExpectFailure(
     { "--threshold", "0.2", "--preset", "high", input.string(), untouched.string() }, untouched,
     2);
+}
+
+void MethodDLAA()
+{
+  // --method dlaa gives vtkImageDLAA's image, 8-bit RGB and 16-bit grey + alpha, with default
+  // and with given DLAA options; it differs from MLAA's.
+  auto pixels = StaircaseImage(VTK_UNSIGNED_CHAR, { 20, 60, 200 }, { 240, 220, 40 });
+  const fs::path input = WorkFile("in.png");
+  const fs::path output = WorkFile("out.png");
+  WriteFile(pixels, input, OIIO::TypeDesc::UINT8);
+  ExpectSuccess({ "--method", "dlaa", input.string(), output.string() }, output);
+  auto expected = FilterDLAA(pixels);
+  CheckFile(output, expected, OIIO::TypeDesc::UINT8);
+  MLAA_CHECK(Compare(expected, pixels).Count > 0);
+  MLAA_CHECK(Compare(expected, Filter(pixels)).Count > 0);
+  ExpectSuccess({ "--method=dlaa", "--dlaa-epsilon", "0.05", "--dlaa-lambda=5", "--dlaa-luma",
+                  "green", "--long-edges", "off", input.string(), output.string() },
+    output);
+  auto configured = FilterDLAA(pixels, [](vtkDLAAOptions* o) {
+    o->SetEpsilon(0.05);
+    o->SetLambda(5.0);
+    o->SetLumaFunctionToGreen();
+    o->LongEdgesOff();
+  });
+  CheckFile(output, configured, OIIO::TypeDesc::UINT8);
+  MLAA_CHECK(Compare(configured, expected).Count > 0);
+  // --method mlaa is the default.
+  ExpectSuccess({ "--method", "mlaa", input.string(), output.string() }, output);
+  CheckFile(output, Filter(pixels), OIIO::TypeDesc::UINT8);
+
+  auto grey = StaircaseImage(VTK_UNSIGNED_SHORT, { 5000, 65535 }, { 61000, 30000 });
+  const fs::path greyInput = WorkFile("grey.tif");
+  const fs::path greyOutput = WorkFile("grey-out.tif");
+  WriteFile(grey, greyInput, OIIO::TypeDesc::UINT16);
+  ExpectSuccess({ "--method", "dlaa", greyInput.string(), greyOutput.string() }, greyOutput);
+  CheckFile(greyOutput, FilterDLAA(grey), OIIO::TypeDesc::UINT16);
 }
 
 void OptionEdgesDepth()
@@ -1252,6 +1306,28 @@ void ErrorUnknownDebugName()
 void ErrorBadMaxSearchSteps()
 {
   ExpectBadValues("--max-search-steps", { "0", "129", "-1", "2.5", "eight", "99999999999999999999" });
+}
+
+void ErrorMethodOptions()
+{
+  ExpectBadValues("--method", { "fxaa", "MLAA", "", "dlaa,mlaa" });
+  ExpectBadValues("--dlaa-epsilon", { "-0.1", "2", "x", "" });
+  ExpectBadValues("--dlaa-lambda", { "-1", "101", "nan" });
+  ExpectBadValues("--dlaa-luma", { "luma", "Green", "" });
+  ExpectBadValues("--long-edges", { "yes", "1", "" });
+  const fs::path input = GoodInput();
+  const fs::path output = WorkFile("out.png");
+  // One method's options with the other method: refused, nothing written.
+  for (const auto& args : std::vector<std::vector<std::string>>{
+         { "--method", "dlaa", "--threshold", "0.2" }, { "--preset", "high", "--method", "dlaa" },
+         { "--method", "dlaa", "--debug", "edges" }, { "--long-edges", "off" },
+         { "--dlaa-lambda", "4", "--method", "mlaa" } })
+  {
+    std::vector<std::string> full = args;
+    full.push_back(input.string());
+    full.push_back(output.string());
+    ExpectFailure(full, output, Usage);
+  }
 }
 
 void ErrorBadPreset()
@@ -1912,6 +1988,8 @@ int main(int argc, char* argv[])
     { "option-edges-lab", OptionEdgesLab },
     { "option-reconstruction", OptionReconstruction },
     { "option-preset", OptionPreset },
+    { "method-dlaa", MethodDLAA },
+    { "error-method-options", ErrorMethodOptions },
     { "option-max-search-steps", OptionMaxSearchSteps },
     { "option-diagonals", OptionDiagonals },
     { "option-local-contrast", OptionLocalContrast },
