@@ -10,6 +10,7 @@
 //               VTK 9.1's default for imaging filters), for reference;
 //   DeepCopy    vtkImageData::DeepCopy of the image (allocation + copy, as a filter output is);
 //   memcpy      a copy of the scalars into a preallocated buffer (the memory-bandwidth floor);
+//   DLAA        vtkImageDLAA, default vtkDLAAOptions (directionally localized antialiasing);
 //   MLAA-stages the stages of vtkImageMLAA (vtkMLAAStages::RunSlice) run directly into a
 //               preallocated output, each stage timed (features+edges, weights, blending);
 //   variants    (unless --no-variants) vtkImageMLAA with each feature of "Morphological
@@ -24,6 +25,7 @@
 
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
+#include "vtkImageDLAA.h"
 #include "vtkImageGaussianSmooth.h"
 #include "vtkImageMLAA.h"
 #include "vtkNew.h"
@@ -203,6 +205,8 @@ int main(int argc, char* argv[])
   vtkNew<vtkImageMLAA> mlaa;
   mlaa->SetInputData(image);
   mlaa->SetOptions(options);
+  vtkNew<vtkImageDLAA> dlaa;
+  dlaa->SetInputData(image);
   vtkNew<vtkImageGaussianSmooth> gaussianSMP;
   gaussianSMP->SetInputData(image);
   gaussianSMP->SetDimensionality(2);
@@ -259,6 +263,12 @@ int main(int argc, char* argv[])
         [&]() {
           mlaa->Modified();
           mlaa->Update();
+        },
+        {} },
+      { "DLAA",
+        [&]() {
+          dlaa->Modified();
+          dlaa->Update();
         },
         {} },
       { "Gaussian",
@@ -368,14 +378,15 @@ int main(int argc, char* argv[])
   std::cout << "\nratios of medians (same run):\n"
             << std::right << std::setw(8) << "threads" << std::setw(16) << "MLAA/Gaussian"
             << std::setw(18) << "MLAA/Gaussian-MT" << std::setw(16) << "MLAA/DeepCopy"
-            << std::setw(13) << "MLAA/memcpy" << "\n";
+            << std::setw(13) << "MLAA/memcpy" << std::setw(15) << "DLAA/Gaussian" << "\n";
   for (const auto& row : rows)
   {
     const double m = row.Median.at("MLAA");
     std::cout << std::setw(8) << row.Threads << std::fixed << std::setprecision(2) << std::setw(16)
               << m / row.Median.at("Gaussian") << std::setw(18) << m / row.Median.at("Gaussian-MT")
               << std::setw(16) << m / row.Median.at("DeepCopy") << std::setw(13)
-              << m / row.Median.at("memcpy") << std::defaultfloat << "\n";
+              << m / row.Median.at("memcpy") << std::setw(15)
+              << row.Median.at("DLAA") / row.Median.at("Gaussian") << std::defaultfloat << "\n";
   }
   if (rows.size() > 1)
   {

@@ -6,6 +6,7 @@
 //   steps         a vtkRenderStepsPass set as the renderer's pass (the delegate of the two below);
 //   FXAA-pass     vtkOpenGLFXAAPass, delegate vtkRenderStepsPass, default vtkFXAAOptions;
 //   MLAA-pass     vtkOpenGLMLAAPass, delegate vtkRenderStepsPass, default vtkMLAAOptions;
+//   DLAA-pass     vtkOpenGLDLAAPass, delegate vtkRenderStepsPass, default vtkDLAAOptions;
 //   FXAA-builtin  no pass, renderer->UseFXAAOn() (for reference);
 // and times frames: each frame turns the camera by a small azimuth, calls window->Render() and
 // then WaitForCompletion() (glFinish), so that the time includes the GL work. Configurations are
@@ -26,6 +27,7 @@
 
 #include "vtkCamera.h"
 #include "vtkNew.h"
+#include "vtkOpenGLDLAAPass.h"
 #include "vtkOpenGLFXAAPass.h"
 #include "vtkOpenGLMLAAPass.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -168,11 +170,15 @@ int main(int argc, char* argv[])
   mlaa->SetDelegatePass(mlaaSteps);
   mlaa->SetOptions(options);
 
+  vtkNew<vtkRenderStepsPass> dlaaSteps;
+  vtkNew<vtkOpenGLDLAAPass> dlaa;
+  dlaa->SetDelegatePass(dlaaSteps);
   std::vector<Configuration> configurations = {
     { "default", nullptr, false, {} },
     { "steps", steps, false, {} },
     { "FXAA-pass", fxaa, false, {} },
     { "MLAA-pass", mlaa, false, {} },
+    { "DLAA-pass", dlaa, false, {} },
     { "FXAA-builtin", nullptr, true, {} },
   };
   // Long lines: one pass per search length and line-length method.
@@ -299,6 +305,14 @@ int main(int argc, char* argv[])
   {
     std::cout << "n/a (FXAA overhead not positive: within noise)\n";
   }
+  for (const auto& c : configurations)
+  {
+    if (c.Name == "DLAA-pass" && fxaaOverhead > 0.0)
+    {
+      std::cout << "overhead(DLAA-pass) / overhead(FXAA-pass) = "
+                << (mlaaBenchmark::Median(c.Times) - stepsMedian) / fxaaOverhead << "\n";
+    }
+  }
   if (longLines)
   {
     std::cout << "long lines: overhead / overhead(FXAA-pass), search loop and recursive doubling\n"
@@ -373,6 +387,7 @@ int main(int argc, char* argv[])
     pass->ReleaseGraphicsResources(window);
   }
   fxaa->ReleaseGraphicsResources(window);
+  dlaa->ReleaseGraphicsResources(window);
   steps->ReleaseGraphicsResources(window);
   return EXIT_SUCCESS;
 }

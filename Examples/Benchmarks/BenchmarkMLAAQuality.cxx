@@ -10,6 +10,7 @@
 //   MLAA-CPU   vtkImageMLAA with default options on the single-sample render;
 //   MLAA-pass  vtkOpenGLMLAAPass (delegate vtkRenderStepsPass, default options: overlays drawn
 //              after the antialiasing);
+//   DLAA-pass  vtkOpenGLDLAAPass (delegate vtkRenderStepsPass, default vtkDLAAOptions);
 //   variants   (unless --no-variants) MLAA-pass with each feature of "Morphological
 //              antialiasing and topological reconstruction" over the defaults (+lab, +steps32,
 //              +steps128, +recon), the three together (+all3) and each preset (P-low ...
@@ -28,7 +29,7 @@
 // It prints a table and per-method summaries, writes a CSV and, per scene, a crop mosaic PNG:
 // crops of the same region (the crop-size window with the largest squared none-vs-reference
 // error), magnified with nearest-neighbour, left to right:
-//   none | FXAA | MSAA4 | MLAA-CPU | MLAA-pass | P-high | P-ultra | reference
+//   none | FXAA | MSAA4 | MLAA-CPU | MLAA-pass | DLAA-pass | P-high | P-ultra | reference
 // each under a label strip.
 #include "BenchmarkUtilities.h"
 #include "vtkMLAAScenes.h"
@@ -38,6 +39,7 @@
 #include "vtkImageMLAA.h"
 #include "vtkMLAAOptions.h"
 #include "vtkNew.h"
+#include "vtkOpenGLDLAAPass.h"
 #include "vtkOpenGLMLAAPass.h"
 #include "vtkPNGWriter.h"
 #include "vtkPointData.h"
@@ -68,9 +70,11 @@ using mlaaBenchmark::Stopwatch;
 
 // The methods in table order ("none" first: its AAR is 0 by definition); the variants are
 // added unless --no-variants is given.
-std::vector<std::string> Methods = { "none", "FXAA", "MSAA4", "MLAA-CPU", "MLAA-pass" };
+std::vector<std::string> Methods = { "none", "FXAA", "MSAA4", "MLAA-CPU", "MLAA-pass",
+  "DLAA-pass" };
 // The methods of the crop mosaic, in order.
-std::vector<std::string> MosaicMethods = { "none", "FXAA", "MSAA4", "MLAA-CPU", "MLAA-pass" };
+std::vector<std::string> MosaicMethods = { "none", "FXAA", "MSAA4", "MLAA-CPU", "MLAA-pass",
+  "DLAA-pass" };
 
 
 // A difference of more than this (0..255 units) in some channel counts as "differs".
@@ -397,7 +401,7 @@ void Usage(const char* program)
     << "                    (the three), P-low, P-medium, P-high, P-ultra (the presets)\n"
     << "For MLAA-CPU and MLAA-pass alike, " << mlaaBenchmark::MLAAOptionsUsage()
     << "Mosaic panel order, left to right: none | FXAA | MSAA4 | MLAA-CPU | MLAA-pass | "
-       "P-high | P-ultra | reference\n";
+       "DLAA-pass | P-high | P-ultra | reference\n";
 }
 }
 
@@ -599,6 +603,17 @@ int main(int argc, char* argv[])
       pass->ReleaseGraphicsResources(window);
     }
 
+    // vtkOpenGLDLAAPass.
+    {
+      vtkNew<vtkRenderStepsPass> steps;
+      vtkNew<vtkOpenGLDLAAPass> pass;
+      pass->SetDelegatePass(steps);
+      renderer->SetPass(pass);
+      Capture(window, images["DLAA-pass"]);
+      renderer->SetPass(nullptr);
+      pass->ReleaseGraphicsResources(window);
+    }
+
     // The state must be back to single-sample, no AA: the plain render must not have changed.
     Image again;
     Capture(window, again);
@@ -775,8 +790,8 @@ int main(int argc, char* argv[])
               << std::defaultfloat << "\n";
   }
   std::cout << "\nCSV: " << outputDir << "/quality.csv; crop mosaics: " << outputDir
-            << "/quality-<scene>-crops.png (none | FXAA | MSAA4 | MLAA-CPU | MLAA-pass | P-high | P-ultra | "
-               "reference)"
+            << "/quality-<scene>-crops.png (none | FXAA | MSAA4 | MLAA-CPU | MLAA-pass | DLAA-pass | P-high | "
+               "P-ultra | reference)"
             << std::endl;
   return problems ? EXIT_FAILURE : EXIT_SUCCESS;
 }

@@ -16,8 +16,8 @@
 //
 // Methods: none (single-sample), FXAA (VTK's built-in, renderer->UseFXAAOn()), MSAA4
 // (window->SetMultiSamples(4)) and vtkOpenGLMLAAPass at each preset of vtkMLAAOptions
-// (MLAA-low ... MLAA-ultra; overlays drawn after the antialiasing). Frames are read back as
-// 8-bit RGB.
+// (MLAA-low ... MLAA-ultra; overlays drawn after the antialiasing) and vtkOpenGLDLAAPass with
+// its default options (DLAA). Frames are read back as 8-bit RGB.
 #include "BenchmarkUtilities.h"
 #include "vtkMLAAScenes.h"
 
@@ -25,6 +25,7 @@
 #include "vtkImageData.h"
 #include "vtkMLAAOptions.h"
 #include "vtkNew.h"
+#include "vtkOpenGLDLAAPass.h"
 #include "vtkOpenGLMLAAPass.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderWindow.h"
@@ -90,6 +91,20 @@ std::vector<Method> Methods()
         r->SetPass(nullptr);
       } });
   }
+  methods.push_back({ "DLAA",
+    [](vtkRenderer* r, vtkRenderWindow*) {
+      vtkNew<vtkRenderStepsPass> steps;
+      vtkNew<vtkOpenGLDLAAPass> pass;
+      pass->SetDelegatePass(steps);
+      r->SetPass(pass);
+    },
+    [](vtkRenderer* r, vtkRenderWindow* w) {
+      if (r->GetPass())
+      {
+        r->GetPass()->ReleaseGraphicsResources(w);
+      }
+      r->SetPass(nullptr);
+    } });
   return methods;
 }
 
