@@ -151,6 +151,16 @@ inline void SetSplitMode(vtkExtentTranslator* translator, int mode)
 }
 
 // Runs vtkImageMLAA on `input` with `options` (defaults when null).
+// Options set to the medium preset (luma edges, 8 search steps): the settings that the
+// hand-computed patterns of the tests assume (the library's defaults are the high preset).
+inline vtkSmartPointer<vtkMLAAOptions> MediumOptions()
+{
+  auto options = vtkSmartPointer<vtkMLAAOptions>::New();
+  options->SetPresetToMedium();
+  return options;
+}
+
+// vtkImageMLAA on `input` with `options`, or with the library's defaults.
 inline vtkSmartPointer<vtkImageData> RunMLAA(vtkImageData* input, vtkMLAAOptions* options = nullptr)
 {
   vtkNew<vtkImageMLAA> filter;

@@ -32,8 +32,9 @@ void LumaAndColor()
   FillImage(input, [](int x, int y, int, int k) {
     return Inside(x, y) ? (k == 0 ? 255.0 : 0.0) : (k == 1 ? 76.0 : 0.0);
   });
-  MLAA_CHECK(ChangedPixels(input, RunMLAA(input)) == 0);
+  MLAA_CHECK(ChangedPixels(input, RunMLAA(input, MediumOptions())) == 0);
   vtkNew<vtkMLAAOptions> color;
+  color->SetPresetToMedium(); // the settings the expected values assume
   color->SetEdgeDetectionToColor();
   MLAA_CHECK(ChangedPixels(input, RunMLAA(input, color)) > 10);
 }
@@ -47,6 +48,7 @@ void Depth()
   auto depth = MakeImage(48, 16, 1, VTK_FLOAT);
   FillImage(depth, [](int x, int y, int, int) { return (x < 24 && Inside(x, y)) ? 0.3 : 0.6; });
   vtkNew<vtkMLAAOptions> options;
+  options->SetPresetToMedium(); // the settings the expected values assume
   options->SetEdgeDetectionToDepth();
   vtkNew<vtkImageMLAA> filter;
   filter->SetOptions(options);
@@ -66,7 +68,7 @@ void Depth()
   MLAA_CHECK(left > 5);
   MLAA_CHECK(right == 0);
   // With luma edges the right half is blended too.
-  auto luma = RunMLAA(input);
+  auto luma = RunMLAA(input, MediumOptions());
   int lumaRight = 0;
   for (int y = 0; y < 16; ++y)
   {
@@ -106,7 +108,7 @@ void Alpha()
       }
       return 200.0 - 50.0 * k;
     });
-    auto output = RunMLAA(input);
+    auto output = RunMLAA(input, MediumOptions());
     int softAlpha = 0;
     bool colourKept = true;
     bool farKept = true;
@@ -139,8 +141,9 @@ void Threshold()
   // 0.05. Threshold 0 finds every difference; threshold 1 only differences of full scale.
   auto faint = MakeImage(24, 16, 1);
   FillImage(faint, [](int x, int y, int, int) { return Inside(x, y) ? 120.0 : 100.0; });
-  MLAA_CHECK(ChangedPixels(faint, RunMLAA(faint)) == 0);
+  MLAA_CHECK(ChangedPixels(faint, RunMLAA(faint, MediumOptions())) == 0);
   vtkNew<vtkMLAAOptions> options;
+  options->SetPresetToMedium(); // the settings the expected values assume
   options->SetThreshold(0.05);
   MLAA_CHECK(ChangedPixels(faint, RunMLAA(faint, options)) > 5);
   options->SetThreshold(0.0);
@@ -163,6 +166,7 @@ void LocalContrast()
   auto input = MakeImage(16, 12, 1);
   FillImage(input, [](int x, int y, int, int) { return x < 6 ? 255.0 : (y < 5 ? 0.0 : 40.0); });
   vtkNew<vtkMLAAOptions> options;
+  options->SetPresetToMedium(); // the settings the expected values assume
   options->SetDebugOutputToEdges();
   for (double factor : { 0.0, 2.0, 6.0, 7.0 })
   {
@@ -190,9 +194,10 @@ void LocalContrast()
   // silhouette is one straight line with no crossing edge, so nothing is blended, and the
   // shading line, which starts with no crossing edge either, is left alone too.
   vtkNew<vtkMLAAOptions> off;
+  off->SetPresetToMedium(); // the settings the expected values assume
   off->SetLocalContrastFactor(0.0);
   MLAA_CHECK(ChangedPixels(input, RunMLAA(input, off)) > 0);
-  MLAA_CHECK(ChangedPixels(input, RunMLAA(input)) == 0);
+  MLAA_CHECK(ChangedPixels(input, RunMLAA(input, MediumOptions())) == 0);
 }
 
 // Reference CIELAB (L, a, b) of an sRGB colour in [0, 1], in double precision with std::cbrt.
@@ -289,6 +294,7 @@ void Lab()
     return x < 8 ? (k == 0 ? 87.0 : 0.0) : (k == 2 ? 255.0 : 0.0);
   });
   vtkNew<vtkMLAAOptions> options;
+  options->SetPresetToMedium(); // the settings the expected values assume
   options->SetDebugOutputToEdges();
   auto lumaEdges = RunMLAA(redBlue, options);
   options->SetEdgeDetectionToLab();

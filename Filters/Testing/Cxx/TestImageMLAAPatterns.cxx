@@ -40,6 +40,7 @@ vtkSmartPointer<vtkImageData> Weights(
   vtkImageData* input, int searchSteps = 8, bool diagonals = true)
 {
   vtkNew<vtkMLAAOptions> options;
+  options->SetPresetToMedium(); // the settings the expected values assume
   options->SetDebugOutputToBlendingWeights();
   options->SetMaxSearchSteps(searchSteps);
   options->SetDiagonalDetection(diagonals);
@@ -51,6 +52,7 @@ vtkSmartPointer<vtkImageData> Weights(
 vtkSmartPointer<vtkImageData> ChapterBlending(vtkImageData* input)
 {
   vtkNew<vtkMLAAOptions> options;
+  options->SetPresetToMedium(); // the settings the expected values assume
   options->DominantDirectionBlendingOff();
   return RunMLAA(input, options);
 }
@@ -87,7 +89,7 @@ void StraightEdges()
          std::function<bool(int, int)>([](int, int y) { return y >= 3; }) })
   {
     auto in = Grey(11, 7, white);
-    auto out = RunMLAA(in);
+    auto out = RunMLAA(in, MediumOptions());
     MLAA_CHECK(Compare(in, out).Count == 0);
   }
 }
@@ -107,7 +109,7 @@ void LShape()
   MLAA_CHECK(GetValue(weights, 6, 4, 2) == Q(8.0 / 17.0));
   MLAA_CHECK(GetValue(weights, 6, 4, 3) == 0.0);
 
-  auto out = RunMLAA(in);
+  auto out = RunMLAA(in, MediumOptions());
   std::vector<std::pair<int, int>> changed;
   // The corner pixel takes black from below and from the left with equal weights.
   MLAA_CHECK(GetValue(out, 6, 4) == White - Q(8.0 / 17.0)); // 135
@@ -152,7 +154,7 @@ void UShape()
   MLAA_CHECK(GetValue(weights, 8, 2, 3) == Q(1.0 / 4.0));
   MLAA_CHECK(GetValue(weights, 8, 2, 2) == 0.0);
 
-  auto out = RunMLAA(in);
+  auto out = RunMLAA(in, MediumOptions());
   // End pixels: weights 96, 96 (above, below) and 64 (side). The vertical line dominates, so
   // only it blends: 255 (1 - 96/255) = 159. The chapter's blending averages all three:
   // c' = 255 sum a(1 - a) / sum a, which is 42752 / 256 = 167 exactly.
@@ -192,7 +194,7 @@ void ZShape()
   MLAA_CHECK(GetValue(weights, 8, 3, 0) == Q(LArea(0, 17)));
   MLAA_CHECK(GetValue(weights, 9, 3, 0) == Q(LArea(1, 18)));
 
-  auto out = RunMLAA(in);
+  auto out = RunMLAA(in, MediumOptions());
   // (3, 2) is black: it takes white from below (120/255) and from the right (32/255). The
   // vertical weight dominates: 120. The chapter's blending averages both:
   // 255 (a1^2 + a2^2) / (a1 + a2) = (120^2 + 32^2) / 152 = 101.47.
@@ -230,7 +232,7 @@ void ThinLine()
   MLAA_CHECK(GetValue(weights, 4, 3, 2) == q1 && GetValue(weights, 4, 3, 3) == q1);
   MLAA_CHECK(GetValue(weights, 4, 2, 2) == q1 && GetValue(weights, 4, 2, 3) == q1);
 
-  auto out = RunMLAA(in);
+  auto out = RunMLAA(in, MediumOptions());
   // A line pixel that loses 1/8 to the white above; a white pixel that takes 1/8 of the line
   // below it; a white pixel under the start of run B taking 3/8 from above and 1/8 from its
   // black left neighbour: the vertical weight dominates, 255 - 96 = 159; the chapter's blending
@@ -275,9 +277,10 @@ void ThinImages()
   {
     auto in = MakeImage(size.first, size.second, 3);
     FillImage(in, [](int x, int y, int, int k) { return ((x * 7 + y * 13 + k * 5) % 4) * 80.0; });
-    auto out = RunMLAA(in);
+    auto out = RunMLAA(in, MediumOptions());
     MLAA_CHECK(Compare(in, out).Count == 0);
     vtkNew<vtkMLAAOptions> options;
+    options->SetPresetToMedium(); // the settings the expected values assume
     options->SetDebugOutputToEdges();
     auto edges = RunMLAA(in, options);
     int dims[3];
@@ -375,8 +378,10 @@ void DiagonalCoverage()
     }
     double error[3] = { 0.0, 0.0, 0.0 }; // none, orthogonal only, with diagonals
     vtkNew<vtkMLAAOptions> orthogonal;
+    orthogonal->SetPresetToMedium(); // the settings the expected values assume
     orthogonal->DiagonalDetectionOff();
-    vtkSmartPointer<vtkImageData> images[3] = { in, RunMLAA(in, orthogonal), RunMLAA(in) };
+    vtkSmartPointer<vtkImageData> images[3] = { in, RunMLAA(in, orthogonal),
+      RunMLAA(in, MediumOptions()) };
     for (int y = 8; y < size - 8; ++y)
     {
       for (int x = 8; x < size - 8; ++x)

@@ -44,6 +44,7 @@ int TestMLAAPassToneMapping(int, char*[])
   vtkNew<vtkRenderStepsPass> innerSteps;
   vtkNew<vtkOpenGLMLAAPass> before;
   messages->Watch(before);
+  before->GetOptions()->SetPresetToMedium(); // 8 steps: the area texture sizes below
   before->SetDelegatePass(innerSteps);
   vtkNew<vtkToneMappingPass> outer;
   outer->SetToneMappingType(vtkToneMappingPass::Reinhard);
