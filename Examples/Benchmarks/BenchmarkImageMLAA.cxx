@@ -14,7 +14,7 @@
 //   MLAA-stages the stages of vtkImageMLAA (vtkMLAAStages::RunSlice) run directly into a
 //               preallocated output, each stage timed (features+edges, weights, blending);
 //   variants    (unless --no-variants) vtkImageMLAA with each feature of "Morphological
-//               antialiasing and topological reconstruction" over the defaults (+lab, +steps32,
+//               antialiasing and topological reconstruction" over the medium preset (+lab, +steps32,
 //               +steps128, +recon), the three together (+all3) and each preset (P-low ...
 //               P-ultra), reported as time / Gaussian;
 // for each thread count n (default 1 and 2), and reports the median time per operation and the

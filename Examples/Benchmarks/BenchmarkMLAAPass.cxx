@@ -20,7 +20,7 @@
 // doubling (vtkOpenGLMLAAPass::LineLengths), as configurations MLAA-<steps>-loop and
 // MLAA-<steps>-doubling of the same rounds, reported as overhead / overhead(FXAA-pass).
 // Variants (unless --no-variants): the MLAA pass with each feature of "Morphological antialiasing
-// and topological reconstruction" over the defaults (+lab, +steps32, +steps128, +recon), the
+// and topological reconstruction" over the medium preset (+lab, +steps32, +steps128, +recon), the
 // three together (+all3) and each preset (P-low ... P-ultra), reported the same way.
 #include "BenchmarkUtilities.h"
 #include "vtkMLAAScenes.h"

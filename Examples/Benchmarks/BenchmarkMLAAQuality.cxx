@@ -12,7 +12,7 @@
 //              after the antialiasing);
 //   DLAA-pass  vtkOpenGLDLAAPass (delegate vtkRenderStepsPass, default vtkDLAAOptions);
 //   variants   (unless --no-variants) MLAA-pass with each feature of "Morphological
-//              antialiasing and topological reconstruction" over the defaults (+lab, +steps32,
+//              antialiasing and topological reconstruction" over the medium preset (+lab, +steps32,
 //              +steps128, +recon), the three together (+all3) and each preset (P-low ...
 //              P-ultra);
 // all read back as RGB. Per method it reports, against the reference:
@@ -397,7 +397,7 @@ void Usage(const char* program)
     << "  --zoom Z          crop magnification (default 4)\n"
     << "  --write-full      also write the full-size render of every method per scene\n"
     << "  --no-variants     measure only the methods above, not the MLAA-pass variants:\n"
-    << "                    +lab, +steps32, +steps128, +recon (each over the defaults), +all3\n"
+    << "                    +lab, +steps32, +steps128, +recon (each over the medium preset), +all3\n"
     << "                    (the three), P-low, P-medium, P-high, P-ultra (the presets)\n"
     << "For MLAA-CPU and MLAA-pass alike, " << mlaaBenchmark::MLAAOptionsUsage()
     << "Mosaic panel order, left to right: none | FXAA | MSAA4 | MLAA-CPU | MLAA-pass | "
