@@ -7,6 +7,8 @@
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkExtentTranslator.h"
+#include "vtkDLAAOptions.h"
+#include "vtkImageDLAA.h"
 #include "vtkImageData.h"
 #include "vtkImageMLAA.h"
 #include "vtkMLAAOptions.h"
@@ -158,6 +160,18 @@ inline vtkSmartPointer<vtkMLAAOptions> MediumOptions()
   auto options = vtkSmartPointer<vtkMLAAOptions>::New();
   options->SetPresetToMedium();
   return options;
+}
+
+// vtkImageDLAA on `input` with `options`, or with the default vtkDLAAOptions.
+inline vtkSmartPointer<vtkImageData> RunDLAA(vtkImageData* input, vtkDLAAOptions* options = nullptr)
+{
+  vtkNew<vtkImageDLAA> filter;
+  filter->SetOptions(options);
+  filter->SetInputData(input);
+  filter->Update();
+  auto output = vtkSmartPointer<vtkImageData>::New();
+  output->DeepCopy(filter->GetOutput());
+  return output;
 }
 
 // vtkImageMLAA on `input` with `options`, or with the library's defaults.

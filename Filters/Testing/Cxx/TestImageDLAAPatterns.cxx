@@ -14,17 +14,6 @@ using namespace vtkMLAATest;
 
 namespace
 {
-vtkSmartPointer<vtkImageData> RunDLAA(vtkImageData* input, vtkDLAAOptions* options = nullptr)
-{
-  vtkNew<vtkImageDLAA> filter;
-  filter->SetOptions(options);
-  filter->SetInputData(input);
-  filter->Update();
-  auto output = vtkSmartPointer<vtkImageData>::New();
-  output->DeepCopy(filter->GetOutput());
-  return output;
-}
-
 // Grey RGB: every channel `v`.
 double Grey(bool bright)
 {

@@ -19,17 +19,6 @@ using namespace vtkMLAATest;
 
 namespace
 {
-vtkSmartPointer<vtkImageData> RunDLAA(vtkImageData* input, vtkDLAAOptions* options = nullptr)
-{
-  vtkNew<vtkImageDLAA> filter;
-  filter->SetOptions(options);
-  filter->SetInputData(input);
-  filter->Update();
-  auto output = vtkSmartPointer<vtkImageData>::New();
-  output->DeepCopy(filter->GetOutput());
-  return output;
-}
-
 // An odd-sized colour image with edges of every slope, long shallow lines and a textured band.
 vtkSmartPointer<vtkImageData> Picture(int width = 197, int height = 151)
 {

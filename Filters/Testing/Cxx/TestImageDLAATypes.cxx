@@ -15,17 +15,6 @@ using namespace vtkMLAATest;
 
 namespace
 {
-vtkSmartPointer<vtkImageData> RunDLAA(vtkImageData* input, vtkDLAAOptions* options = nullptr)
-{
-  vtkNew<vtkImageDLAA> filter;
-  filter->SetOptions(options);
-  filter->SetInputData(input);
-  filter->Update();
-  auto output = vtkSmartPointer<vtkImageData>::New();
-  output->DeepCopy(filter->GetOutput());
-  return output;
-}
-
 // The picture in normalised units: a shallow staircase (a step every 12 pixels, long enough
 // for the long-edge step) of one colour over another, on an odd-sized image, and a short
 // steep one. Component k gets its own brightness; the last of 2 or 4 components is alpha,
