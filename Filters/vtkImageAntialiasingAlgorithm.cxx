@@ -222,3 +222,18 @@ void vtkImageAntialiasingAlgorithm::PrintSelf(ostream& os, vtkIndent indent)
     os << this->ValueRange[0] << " " << this->ValueRange[1] << "\n";
   }
 }
+
+//------------------------------------------------------------------------------
+void vtkImageAntialiasingAlgorithm::CopyInputScalarInfo(
+  vtkInformationVector** inputVector, vtkInformation* outInfo)
+{
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  vtkInformation* scalarInfo = vtkDataObject::GetActiveFieldInformation(
+    inInfo, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
+  if (scalarInfo)
+  {
+    vtkDataObject::SetPointDataActiveScalarInfo(outInfo,
+      scalarInfo->Get(vtkDataObject::FIELD_ARRAY_TYPE()),
+      scalarInfo->Get(vtkDataObject::FIELD_NUMBER_OF_COMPONENTS()));
+  }
+}

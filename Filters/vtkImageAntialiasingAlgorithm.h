@@ -76,6 +76,12 @@ protected:
   int RequestUpdateExtent(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
+  /**
+   * For RequestInformation: give the output the scalar type and component count of the
+   * input's active point scalars (when the input has them).
+   */
+  static void CopyInputScalarInfo(vtkInformationVector** inputVector, vtkInformation* outInfo);
+
   /** What PrepareRequest found out about an update. */
   struct Request
   {

@@ -50,16 +50,7 @@ int vtkImageDLAA::GetInputPadding()
 int vtkImageDLAA::RequestInformation(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  vtkInformation* scalarInfo = vtkDataObject::GetActiveFieldInformation(
-    inInfo, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
-  if (scalarInfo)
-  {
-    vtkDataObject::SetPointDataActiveScalarInfo(outInfo,
-      scalarInfo->Get(vtkDataObject::FIELD_ARRAY_TYPE()),
-      scalarInfo->Get(vtkDataObject::FIELD_NUMBER_OF_COMPONENTS()));
-  }
+  CopyInputScalarInfo(inputVector, outputVector->GetInformationObject(0));
   return 1;
 }
 

@@ -117,15 +117,7 @@ int vtkImageMLAA::RequestInformation(
   }
   else
   {
-    vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-    vtkInformation* scalarInfo = vtkDataObject::GetActiveFieldInformation(
-      inInfo, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
-    if (scalarInfo)
-    {
-      vtkDataObject::SetPointDataActiveScalarInfo(outInfo,
-        scalarInfo->Get(vtkDataObject::FIELD_ARRAY_TYPE()),
-        scalarInfo->Get(vtkDataObject::FIELD_NUMBER_OF_COMPONENTS()));
-    }
+    CopyInputScalarInfo(inputVector, outInfo);
   }
   return 1;
 }
