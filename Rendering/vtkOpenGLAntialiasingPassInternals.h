@@ -11,6 +11,16 @@
 
 namespace vtkOpenGLAntialiasingPassInternals
 {
+// Resizes an allocated texture to width x height in place (same GL handle), if needed.
+inline void ResizeInPlace(vtkTextureObject* texture, int width, int height)
+{
+  if (texture->GetWidth() != static_cast<unsigned int>(width) ||
+    texture->GetHeight() != static_cast<unsigned int>(height))
+  {
+    texture->Resize(width, height);
+  }
+}
+
 // Makes `texture` a 2D texture of the given size, components and type (and, when `internalFormat`
 // is not 0, that GL internal format): resized in place (same GL handle, so framebuffer attachments
 // stay valid) when only the size differs, allocated afresh otherwise. Returns true when the texture
@@ -22,11 +32,7 @@ inline bool AllocateColorTarget(vtkTextureObject* texture, int width, int height
     texture->GetVTKDataType() == vtkType;
   if (sameFormat)
   {
-    if (texture->GetWidth() != static_cast<unsigned int>(width) ||
-      texture->GetHeight() != static_cast<unsigned int>(height))
-    {
-      texture->Resize(width, height);
-    }
+    ResizeInPlace(texture, width, height);
     return false;
   }
   texture->ReleaseGraphicsResources(texture->GetContext());
@@ -47,11 +53,7 @@ inline bool AllocateDepthTarget(vtkTextureObject* texture, int width, int height
 {
   if (texture->GetHandle())
   {
-    if (texture->GetWidth() != static_cast<unsigned int>(width) ||
-      texture->GetHeight() != static_cast<unsigned int>(height))
-    {
-      texture->Resize(width, height);
-    }
+    ResizeInPlace(texture, width, height);
     return false;
   }
   texture->SetWrapS(vtkTextureObject::ClampToEdge);

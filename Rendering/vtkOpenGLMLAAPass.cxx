@@ -35,30 +35,6 @@ vtkStandardNewMacro(vtkOpenGLMLAAPass);
 
 using namespace vtkOpenGLAntialiasingPassInternals;
 
-namespace
-{
-// The same for a line-lengths texture: RGBA16F (integers up to 2048 exactly), nearest.
-bool AllocateLengthsTarget(vtkTextureObject* texture, int width, int height)
-{
-  if (texture->GetHandle())
-  {
-    if (texture->GetWidth() != static_cast<unsigned int>(width) ||
-      texture->GetHeight() != static_cast<unsigned int>(height))
-    {
-      texture->Resize(width, height);
-    }
-    return false;
-  }
-  texture->SetWrapS(vtkTextureObject::ClampToEdge);
-  texture->SetWrapT(vtkTextureObject::ClampToEdge);
-  texture->SetMinificationFilter(vtkTextureObject::Nearest);
-  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-  texture->SetInternalFormat(GL_RGBA16F);
-  texture->Allocate2D(width, height, 4, VTK_FLOAT);
-  return true;
-}
-}
-
 //------------------------------------------------------------------------------
 vtkOpenGLMLAAPass::vtkOpenGLMLAAPass()
 {
@@ -115,7 +91,9 @@ bool vtkOpenGLMLAAPass::PrepareMethodTargets(const Frame& frame)
       {
         lengths = NewTexture(renWin);
       }
-      reallocated |= AllocateLengthsTarget(lengths, width, height);
+      // RGBA16F: integers up to 2048 exactly; nearest.
+      reallocated |=
+        AllocateColorTarget(lengths, width, height, 4, VTK_FLOAT, false, GL_RGBA16F);
     }
   }
   else
