@@ -325,3 +325,19 @@ void vtkOpenGLAntialiasingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AntialiasOverlays: " << (this->AntialiasOverlays ? "On" : "Off") << "\n";
   os << indent << "KeepAlpha: " << (this->KeepAlpha ? "On" : "Off") << "\n";
 }
+
+//------------------------------------------------------------------------------
+void vtkOpenGLAntialiasingPass::BeginWorkPass(
+  vtkOpenGLRenderWindow* renWin, vtkTextureObject* texture, int width, int height)
+{
+  vtkOpenGLState* ostate = renWin->GetState();
+  vtkOpenGLFramebufferObject* fbo = this->WorkFramebuffer;
+  fbo->Bind();
+  fbo->AddColorAttachment(0, texture);
+  fbo->ActivateDrawBuffer(0);
+  fbo->StartNonOrtho(width, height);
+  ostate->vtkglViewport(0, 0, width, height);
+  ostate->vtkglScissor(0, 0, width, height);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}

@@ -145,6 +145,12 @@ protected:
   bool AntialiasOverlays = false;
   bool KeepAlpha = false;
 
+  // The set-up of a full-screen pass into a texture: binds WorkFramebuffer with `texture` as its
+  // only colour target over width x height (viewport and scissor), blending off, every channel
+  // written. Depth is left to the caller.
+  void BeginWorkPass(
+    vtkOpenGLRenderWindow* renWin, vtkTextureObject* texture, int width, int height);
+
   // Whether the shared targets are still allocated (ReleaseGraphicsResources not called): the
   // destructor reports it once; subclasses report their own targets only when these are gone.
   bool HoldsSharedResources() const

@@ -88,20 +88,11 @@ int vtkOpenGLDLAAPass::GetMasksPadding()
 //------------------------------------------------------------------------------
 bool vtkOpenGLDLAAPass::ComputeMasks(const Frame& frame)
 {
-  vtkOpenGLState* ostate = frame.Window->GetState();
-  vtkOpenGLFramebufferObject* fbo = this->WorkFramebuffer;
-  fbo->Bind();
-  fbo->AddColorAttachment(0, this->MasksTexture);
-  fbo->ActivateDrawBuffer(0);
   const int padding = this->GetMasksPadding();
   const int width = frame.Width + 2 * padding;
   const int height = frame.Height + 2 * padding;
-  fbo->StartNonOrtho(width, height);
-  ostate->vtkglViewport(0, 0, width, height);
-  ostate->vtkglScissor(0, 0, width, height);
-  ostate->vtkglDisable(GL_BLEND);
-  ostate->vtkglDisable(GL_DEPTH_TEST);
-  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  this->BeginWorkPass(frame.Window, this->MasksTexture, width, height);
+  frame.Window->GetState()->vtkglDisable(GL_DEPTH_TEST);
   if (!this->ReadyQuad(frame.Window, this->MasksQuad, vtkDLAAMasksFS,
         Define("DLAA_LUMA", this->Options->GetLumaFunction())))
   {

@@ -170,15 +170,8 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
 {
   vtkOpenGLState* ostate = renWin->GetState();
   vtkOpenGLFramebufferObject* fbo = this->WorkFramebuffer;
-  fbo->Bind();
-  fbo->AddColorAttachment(0, this->EdgesTexture);
-  fbo->ActivateDrawBuffer(0);
+  this->BeginWorkPass(renWin, this->EdgesTexture, width, height);
   fbo->AddDepthAttachment(this->MaskTexture);
-  fbo->StartNonOrtho(width, height);
-  ostate->vtkglViewport(0, 0, width, height);
-  ostate->vtkglScissor(0, 0, width, height);
-  ostate->vtkglDisable(GL_BLEND);
-  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 
   // Pass 1: edges. Cleared edges and a far mask; edge pixels write the quad's depth.
   ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
@@ -414,17 +407,8 @@ void vtkOpenGLMLAAPass::SetReconstructionUniforms(vtkShaderProgram* program)
 bool vtkOpenGLMLAAPass::Reconstruct(
   vtkOpenGLRenderWindow* renWin, int width, int height, bool useAlpha)
 {
-  vtkOpenGLState* ostate = renWin->GetState();
-  vtkOpenGLFramebufferObject* fbo = this->WorkFramebuffer;
-  fbo->Bind();
-  fbo->AddColorAttachment(0, this->ReconstructedTexture);
-  fbo->ActivateDrawBuffer(0);
-  fbo->StartNonOrtho(width, height);
-  ostate->vtkglViewport(0, 0, width, height);
-  ostate->vtkglScissor(0, 0, width, height);
-  ostate->vtkglDisable(GL_BLEND);
-  ostate->vtkglDisable(GL_DEPTH_TEST);
-  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  this->BeginWorkPass(renWin, this->ReconstructedTexture, width, height);
+  renWin->GetState()->vtkglDisable(GL_DEPTH_TEST);
   if (!this->ReadyQuad(renWin, this->ReconstructionQuad, vtkMLAAReconstructionFS,
         Define("MLAA_USE_ALPHA", useAlpha)))
   {
