@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages vtkMLAA needs to build, test and run (VTK 9.1, OpenImageIO,
-# Xvfb with Mesa's llvmpipe for offscreen OpenGL). Packages already present are skipped, so a
-# machine that has them all needs no root rights and no network.
+# Installs the Debian 12 packages vtkMLAA needs to build, test and run (VTK 9.1 and its Python
+# with numpy, OpenImageIO, Xvfb with Mesa's llvmpipe for offscreen OpenGL). Packages already
+# present are skipped, so a machine that has them all needs no root rights and no network.
 set -euo pipefail
 
 packages=(
   cmake g++ ninja-build pkg-config      # build tools
   libvtk9-dev                           # VTK 9.1 (modules, OpenGL2 rendering, testing)
+  python3-vtk9 python3-numpy            # VTK's Python (vtkmodules) for the vtkmlaa package
   libopenimageio-dev openimageio-tools  # image files for the mlaa tool (oiiotool, idiff)
   xvfb xauth libgl1-mesa-dri            # offscreen OpenGL: Xvfb + Mesa llvmpipe
 )
