@@ -2,6 +2,7 @@
 extension modules), docstrings from the C++ class comments, the options and presets as the C++
 classes define them, and enable()'s validation of its arguments."""
 import inspect
+import warnings
 
 import vtkmlaa
 from vtkmlaa import (vtkDLAAOptions, vtkImageAntialiasingAlgorithm, vtkImageDLAA, vtkImageMLAA,
@@ -9,7 +10,7 @@ from vtkmlaa import (vtkDLAAOptions, vtkImageAntialiasingAlgorithm, vtkImageDLAA
                      vtkOpenGLAntialiasingPass, vtkOpenGLDLAAPass, vtkOpenGLMLAAPass)
 from vtkmodules.vtkCommonExecutionModel import vtkImageAlgorithm
 from vtkmodules.vtkRenderingOpenGL2 import vtkImageProcessingPass
-from vtkmodules.vtkRenderingCore import vtkRenderer
+from vtkmodules.vtkRenderingCore import vtkRenderWindow, vtkRenderer
 from vtkmlaa_testing import Checker
 
 check = Checker()
@@ -73,8 +74,21 @@ mlaa.SetOptions(shared)
 mlaa_pass.SetOptions(shared)
 check(mlaa.GetOptions() is shared and mlaa_pass.GetOptions() is shared, "one shared options")
 
-# enable() and disable() on a renderer (nothing is rendered here).
+# enable() and disable() on a renderer (nothing is rendered here). A renderer outside a window
+# gets the pass and a warning (its window's multisampling is not known yet).
+with warnings.catch_warnings(record=True) as caught:
+    warnings.simplefilter("always")
+    vtkmlaa.enable(vtkRenderer())
+check(len(caught) == 1 and "SetMultiSamples(0)" in str(caught[0].message),
+      "enable() warns about a renderer without a window")
+window = vtkRenderWindow()
 renderer = vtkRenderer()
+window.AddRenderer(renderer)
+check(window.GetMultiSamples() > 0, "a window multisamples by default")
+with warnings.catch_warnings():
+    warnings.simplefilter("error")
+    vtkmlaa.enable(renderer)
+check(window.GetMultiSamples() == 0, "enable turns the window's multisampling off")
 p = vtkmlaa.enable(renderer, preset="ultra", threshold=0.08, max_search_steps=24,
                    edge_detection="luma", KeepAlpha=True)
 check(isinstance(p, vtkOpenGLMLAAPass) and renderer.GetPass() is p, "enable installs the pass")

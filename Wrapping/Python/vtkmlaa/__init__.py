@@ -17,6 +17,8 @@ Two conveniences for the common cases:
 - ``antialias_array(array, method="mlaa", preset=None, **options)`` antialiases a numpy array.
 """
 
+import warnings
+
 # VTK's modules first: the wrapped classes derive from theirs, and importing
 # vtkRenderingOpenGL2 registers the OpenGL overrides of the rendering classes (without it,
 # vtkRenderWindow() would be an abstract class and the passes could not render).
@@ -171,6 +173,10 @@ def enable(renderer, method="mlaa", preset=None, **options):
     window = renderer.GetRenderWindow()
     if window is not None:
         window.SetMultiSamples(0)
+    else:
+        warnings.warn("vtkmlaa.enable(): the renderer has no render window yet; call "
+                      "SetMultiSamples(0) on the window it goes into (or call enable() after "
+                      "AddRenderer)", stacklevel=2)
     return aa_pass
 
 
