@@ -21,7 +21,7 @@ import warnings
 
 # VTK's modules first: the wrapped classes derive from theirs, and importing
 # vtkRenderingOpenGL2 registers the OpenGL overrides of the rendering classes (without it,
-# vtkRenderWindow() would be an abstract class and the passes could not render).
+# vtkRenderWindow() would not make an OpenGL window, and the passes would have nothing to run in).
 from vtkmodules import vtkCommonCore as _vtkCommonCore
 from vtkmodules import vtkCommonDataModel as _vtkCommonDataModel
 from vtkmodules import vtkCommonExecutionModel as _vtkCommonExecutionModel
