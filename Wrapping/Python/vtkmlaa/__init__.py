@@ -239,9 +239,15 @@ def antialias_array(array, method="mlaa", preset=None, **options):
     errors = []
 
     def on_error(caller, event, message=None):
-        errors.append(message)
+        # "ERROR: In FILE, line N\nvtkImageMLAA (0x...): what went wrong": keep what went wrong.
+        lines = [line for line in str(message).splitlines() if line.strip()]
+        text = lines[-1] if lines else str(message)
+        errors.append(text.split("): ", 1)[-1].strip())
     on_error.CallDataType = _vtkCommonCore.VTK_STRING
     aa.AddObserver("ErrorEvent", on_error)
+    # The executive then reports that the request failed; the filter's message says why, and
+    # the exception carries it, so the executive's is kept off the console.
+    aa.GetExecutive().AddObserver("ErrorEvent", lambda caller, event: None)
     aa.SetInputData(image)
     aa.Update()
 
