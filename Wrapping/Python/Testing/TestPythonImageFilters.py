@@ -4,7 +4,7 @@ left alone, the same through vtkmlaa.antialias_array, and DLAA's shape, type and
 import numpy
 
 import vtkmlaa
-from vtkmlaa import vtkImageDLAA, vtkImageMLAA, vtkMLAAOptions
+from vtkmlaa import vtkImageDLAA, vtkImageMLAA
 from vtkmlaa_testing import Checker, disk, image_to_numpy, numpy_to_image, quantize
 
 check = Checker()

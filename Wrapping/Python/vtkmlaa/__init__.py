@@ -24,17 +24,20 @@ import warnings
 # vtkRenderWindow() would not make an OpenGL window, and the passes would have nothing to run in).
 from vtkmodules import vtkCommonCore as _vtkCommonCore
 from vtkmodules import vtkCommonDataModel as _vtkCommonDataModel
-from vtkmodules import vtkCommonExecutionModel as _vtkCommonExecutionModel
 from vtkmodules import vtkRenderingCore as _vtkRenderingCore
 from vtkmodules import vtkRenderingOpenGL2 as _vtkRenderingOpenGL2
 
 from . import vtkFiltersMLAA
 from . import vtkRenderingMLAA
+# The classes the functions below use (every class is exported below).
+from .vtkFiltersMLAA import vtkDLAAOptions, vtkImageDLAA, vtkImageMLAA, vtkMLAAOptions
+from .vtkRenderingMLAA import vtkOpenGLAntialiasingPass, vtkOpenGLDLAAPass, vtkOpenGLMLAAPass
 
 __all__ = []
 
 
 def _export(module):
+    """Every class of an extension module as an attribute of the package, and in __all__."""
     for name in dir(module):
         if name.startswith("vtk"):
             globals()[name] = getattr(module, name)
