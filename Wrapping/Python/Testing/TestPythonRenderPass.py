@@ -1,0 +1,103 @@
+"""The render pass from Python: a small scene rendered offscreen without antialiasing and with
+vtkmlaa.enable(renderer), saved to PNG; the pass changes edge pixels, leaves pixels without an
+edge alone, and gives the image vtkImageMLAA gives on the screenshot without antialiasing (within
+2/255 on at least 99.5 % of the pixels, as the C++ test TestMLAAPassMatchesFilter requires).
+Needs a display (ctest runs under scripts/with-xvfb.sh). Usage: TestPythonRenderPass.py OUT_DIR"""
+import os
+import sys
+
+import numpy
+
+import vtkmlaa
+from vtkmodules.vtkFiltersSources import vtkConeSource, vtkSphereSource
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderWindow,
+                                         vtkRenderer, vtkWindowToImageFilter)
+from vtkmlaa_testing import Checker, image_to_numpy, numpy_to_image, write_png
+
+check = Checker()
+out_dir = sys.argv[1] if len(sys.argv) > 1 else "."
+os.makedirs(out_dir, exist_ok=True)
+
+
+def scene():
+    renderer = vtkRenderer()
+    renderer.SetBackground(0.1, 0.2, 0.4)
+    for source, position, colour in ((vtkSphereSource(), (-0.6, 0, 0), (1.0, 0.8, 0.3)),
+                                     (vtkConeSource(), (0.7, 0, 0), (0.9, 0.3, 0.3))):
+        if isinstance(source, vtkSphereSource):
+            source.SetThetaResolution(24)
+            source.SetPhiResolution(16)
+        else:
+            source.SetResolution(7)
+        mapper = vtkPolyDataMapper()
+        mapper.SetInputConnection(source.GetOutputPort())
+        actor = vtkActor()
+        actor.SetMapper(mapper)
+        actor.SetPosition(*position)
+        actor.GetProperty().SetColor(*colour)
+        actor.RotateZ(17)
+        renderer.AddActor(actor)
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.SetSize(300, 200)
+    window.AddRenderer(renderer)
+    renderer.ResetCamera()
+    return window, renderer
+
+
+def screenshot(window):
+    window.Render()
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.SetInputBufferTypeToRGB()
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    return image_to_numpy(grab.GetOutput())
+
+
+def within(a, b, tolerance=2):
+    return (numpy.abs(a.astype(int) - b.astype(int)) <= tolerance).all(axis=2).mean()
+
+
+window, renderer = scene()
+window.SetMultiSamples(0)
+plain = screenshot(window)
+check(plain.shape == (200, 300, 3), "screenshot shape %s" % (plain.shape,))
+
+for method, filter_class in (("mlaa", vtkmlaa.vtkImageMLAA), ("dlaa", vtkmlaa.vtkImageDLAA)):
+    window, renderer = scene()
+    window.SetMultiSamples(8)
+    aa_pass = vtkmlaa.enable(renderer, method=method)
+    check(window.GetMultiSamples() == 0, method + ": enable turns multisampling off")
+    shot = screenshot(window)
+    path = os.path.join(out_dir, "TestPythonRenderPass-%s.png" % method)
+    write_png(path, shot[::-1])  # PNG rows from the top, as the window shows them
+    check(os.path.getsize(path) > 1000, method + ": wrote " + path)
+
+    changed = (shot != plain).any(axis=2)
+    check(changed.sum() > 200, "%s changes %d edge pixels" % (method, changed.sum()))
+    if method == "mlaa":
+        # A pixel equal to its four neighbours has no edge: MLAA leaves it alone.
+        g = plain.astype(int)
+        flat = numpy.zeros(changed.shape, dtype=bool)
+        flat[1:-1, 1:-1] = ((g[1:-1, 1:-1] == g[:-2, 1:-1]).all(axis=2) &
+                            (g[1:-1, 1:-1] == g[2:, 1:-1]).all(axis=2) &
+                            (g[1:-1, 1:-1] == g[1:-1, :-2]).all(axis=2) &
+                            (g[1:-1, 1:-1] == g[1:-1, 2:]).all(axis=2))
+        check(flat.sum() > 0.5 * flat.size, "the scene has flat regions")
+        check(not changed[flat].any(), "mlaa: %d flat pixels changed" % changed[flat].sum())
+
+    aa = filter_class()
+    aa.SetInputData(numpy_to_image(plain))
+    aa.Update()
+    expected = image_to_numpy(aa.GetOutput())
+    share = within(shot, expected)
+    print("%s: pass vs %s on the screenshot: %.4f %% of pixels within 2/255"
+          % (method, filter_class.__name__, 100 * share))
+    check(share >= 0.995, "%s: pass and filter agree on %.4f of the pixels" % (method, share))
+
+    check(vtkmlaa.disable(renderer), method + ": disable")
+    check((screenshot(window) == plain).all(), method + ": after disable, the plain image again")
+    window.Finalize()
+
+check.finish()

@@ -1,0 +1,262 @@
+"""Morphological antialiasing (MLAA) and DLAA for VTK, from Python.
+
+The classes are VTK's own Python wrappings of the C++ classes (the same names and methods;
+``help(vtkmlaa.vtkImageMLAA)`` shows their documentation):
+
+- ``vtkImageMLAA``, ``vtkImageDLAA``: CPU image filters for any ``vtkImageData``;
+- ``vtkOpenGLMLAAPass``, ``vtkOpenGLDLAAPass``: render passes for a ``vtkRenderer``;
+- ``vtkMLAAOptions``, ``vtkDLAAOptions``: the settings the filters and the passes share;
+- ``vtkMLAAAreaTexture``, ``vtkMLAATopology`` and the base classes
+  ``vtkImageAntialiasingAlgorithm``, ``vtkOpenGLAntialiasingPass``.
+
+Two conveniences for the common cases:
+
+- ``enable(renderer, method="mlaa", preset=None, **options)`` installs a pass on a renderer
+  (``vtkmlaa.enable(plotter.renderer)`` for PyVista-style plotters); ``disable(renderer)``
+  removes it;
+- ``antialias_array(array, method="mlaa", preset=None, **options)`` antialiases a numpy array.
+"""
+
+import warnings
+
+# VTK's modules first: the wrapped classes derive from theirs, and importing
+# vtkRenderingOpenGL2 registers the OpenGL overrides of the rendering classes (without it,
+# vtkRenderWindow() would not make an OpenGL window, and the passes would have nothing to run in).
+from vtkmodules import vtkCommonCore as _vtkCommonCore
+from vtkmodules import vtkCommonDataModel as _vtkCommonDataModel
+from vtkmodules import vtkRenderingCore as _vtkRenderingCore
+from vtkmodules import vtkRenderingOpenGL2 as _vtkRenderingOpenGL2
+
+from . import vtkFiltersMLAA
+from . import vtkRenderingMLAA
+# The classes the functions below use (every class is exported below).
+from .vtkFiltersMLAA import vtkDLAAOptions, vtkImageDLAA, vtkImageMLAA, vtkMLAAOptions
+from .vtkRenderingMLAA import vtkOpenGLAntialiasingPass, vtkOpenGLDLAAPass, vtkOpenGLMLAAPass
+
+__all__ = []
+
+
+def _export(module):
+    """Every class of an extension module as an attribute of the package, and in __all__."""
+    for name in dir(module):
+        if name.startswith("vtk"):
+            globals()[name] = getattr(module, name)
+            __all__.append(name)
+
+
+_export(vtkFiltersMLAA)
+_export(vtkRenderingMLAA)
+del _export
+
+__all__ += ["enable", "disable", "antialias_array", "METHODS", "PRESETS"]
+
+#: The methods that enable() and antialias_array() accept.
+METHODS = ("mlaa", "dlaa")
+
+#: The names of the MLAA presets, as vtkMLAAOptions spells them (GetPresetAsString).
+PRESETS = tuple(
+    vtkMLAAOptions.GetPresetAsString(preset)
+    for preset in (vtkMLAAOptions.LOW, vtkMLAAOptions.MEDIUM, vtkMLAAOptions.HIGH,
+                   vtkMLAAOptions.ULTRA))
+
+
+def _method_classes(method):
+    """The (filter, pass, options) classes of a method name."""
+    key = str(method).lower()
+    if key == "mlaa":
+        return vtkImageMLAA, vtkOpenGLMLAAPass, vtkMLAAOptions
+    if key == "dlaa":
+        return vtkImageDLAA, vtkOpenGLDLAAPass, vtkDLAAOptions
+    raise ValueError("unknown antialiasing method %r: expected one of %s"
+                     % (method, ", ".join(METHODS)))
+
+
+def _camel_case(name):
+    """'max_search_steps' -> 'MaxSearchSteps'; a name already in CamelCase is kept."""
+    if "_" not in name and name[:1].isupper():
+        return name
+    return "".join(part[:1].upper() + part[1:] for part in name.split("_") if part)
+
+
+def _settable(obj, name):
+    """Whether obj has a Set<name>/Get<name> pair (a setting), as VTK's macros make them."""
+    return callable(getattr(obj, "Set" + name, None)) and \
+        callable(getattr(obj, "Get" + name, None))
+
+
+def _setting_names(obj, exclude=()):
+    """The settings of a VTK object, for error messages."""
+    names = sorted(
+        attr[3:] for attr in dir(obj)
+        if attr.startswith("Set") and _settable(obj, attr[3:]) and attr[3:] not in exclude)
+    return names
+
+
+# Settings that are not options: the preset (an argument of its own), the objects a pass or a
+# filter is built from, and what every vtkObject has (Debug, GlobalWarningDisplay, ...).
+_NOT_OPTIONS = frozenset(["Preset", "Options", "DelegatePass"] + _setting_names(
+    _vtkCommonCore.vtkObject()))
+
+
+def _apply_options(options, targets, method):
+    """Set each keyword option on the first of targets that has it. Values of enumerated
+    settings may be given by name (edge_detection="luma"): the options class parses them with
+    its own Get<Name>FromString, so the names are those of the C++ classes and the mlaa tool."""
+    for key, value in options.items():
+        name = _camel_case(key)
+        for target in targets:
+            if name in _NOT_OPTIONS or not _settable(target, name):
+                continue
+            if isinstance(value, str):
+                parse = getattr(target, "Get%sFromString" % name, None)
+                if parse is None:
+                    raise ValueError("option %r takes a number, not %r" % (key, value))
+                parsed = parse(value)
+                if parsed < 0:
+                    raise ValueError("unknown value %r for option %r" % (value, key))
+                value = parsed
+            setter = getattr(target, "Set" + name)
+            setter(value)
+            got = getattr(target, "Get" + name)()
+            if isinstance(value, (int, float)) and not isinstance(value, bool) and \
+                    got != value:
+                raise ValueError("option %r: %r is out of range (clamped to %r)"
+                                 % (key, value, got))
+            break
+        else:
+            known = []
+            for target in targets:
+                known += _setting_names(target, exclude=_NOT_OPTIONS)
+            raise ValueError("unknown %s option %r; the options are: %s"
+                             % (method, key, ", ".join(sorted(set(known)))))
+
+
+def _configure(options_object, method, preset, options, extra_targets=()):
+    """Apply a preset name and keyword options to an options object (and, for a pass, to the
+    pass's own settings such as KeepAlpha and AntialiasOverlays)."""
+    if str(method).lower() == "mlaa":
+        name = "high" if preset is None else preset
+        value = vtkMLAAOptions.GetPresetFromString(str(name).lower())
+        if value < 0:
+            raise ValueError("unknown MLAA preset %r: expected one of %s"
+                             % (preset, ", ".join(PRESETS)))
+        options_object.SetPreset(value)
+    elif preset is not None:
+        raise ValueError("DLAA has no presets (got preset=%r); set its options instead"
+                         % (preset,))
+    _apply_options(options, (options_object,) + tuple(extra_targets), method)
+
+
+def enable(renderer, method="mlaa", preset=None, **options):
+    """Antialias everything a renderer draws, with a render pass; returns the pass.
+
+    Installs a vtkRenderStepsPass (VTK's usual steps: lights, opaque and translucent geometry,
+    volumes, overlays) wrapped in a vtkOpenGLMLAAPass (method="mlaa") or vtkOpenGLDLAAPass
+    (method="dlaa") as the renderer's pass, and turns multisampling off on the renderer's
+    render window (the pass replaces it). Call it once the renderer is in its window; a
+    renderer without a window gets the pass, and its window's multisampling must then be
+    turned off by hand (SetMultiSamples(0)).
+
+    preset: for MLAA, one of "low", "medium", "high" (the default) and "ultra"; DLAA has none.
+    options: settings of the options object (vtkMLAAOptions or vtkDLAAOptions) or of the pass,
+    by their VTK name in snake_case or CamelCase, e.g. threshold=0.05, max_search_steps=8,
+    edge_detection="luma", keep_alpha=True, antialias_overlays=True; they are applied after
+    the preset. Unknown methods, presets and options raise ValueError.
+
+    With a PyVista-style plotter: vtkmlaa.enable(plotter.renderer).
+    """
+    if not isinstance(renderer, _vtkRenderingCore.vtkRenderer):
+        raise TypeError("enable() needs a vtkRenderer, not %s" % type(renderer).__name__)
+    _, pass_class, _ = _method_classes(method)
+    aa_pass = pass_class()
+    _configure(aa_pass.GetOptions(), method, preset, options, extra_targets=(aa_pass,))
+    steps = _vtkRenderingOpenGL2.vtkRenderStepsPass()
+    aa_pass.SetDelegatePass(steps)
+    renderer.SetPass(aa_pass)
+    window = renderer.GetRenderWindow()
+    if window is not None:
+        window.SetMultiSamples(0)
+    else:
+        warnings.warn("vtkmlaa.enable(): the renderer has no render window yet; call "
+                      "SetMultiSamples(0) on the window it goes into (or call enable() after "
+                      "AddRenderer)", stacklevel=2)
+    return aa_pass
+
+
+def disable(renderer):
+    """Remove the antialiasing pass that enable() installed (any vtkOpenGLAntialiasingPass) from
+    a renderer; returns True if there was one. Multisampling stays off."""
+    current = renderer.GetPass()
+    if not isinstance(current, vtkOpenGLAntialiasingPass):
+        return False
+    window = renderer.GetRenderWindow()
+    if window is not None:
+        # The pass's textures and shaders belong to the window's context: free them now, while
+        # the pass is still known (the renderer frees only its current pass's resources).
+        current.ReleaseGraphicsResources(window)
+    renderer.SetPass(None)
+    return True
+
+
+def antialias_array(array, method="mlaa", preset=None, **options):
+    """Antialias an image held in a numpy array; returns a new array of the same shape and type.
+
+    array: shape (rows, columns) for one component, or (rows, columns, components) with 1 to 4
+    components (grey, grey + alpha, RGB, RGBA), any numeric type. Row i is image row y = i (the
+    result has the same layout). Integer types are normalised by their whole range, floating
+    point by [0, 1] (value_range=(lo, hi) sets another range, as SetValueRange does).
+    preset and options: as for enable(). Errors of the filter raise RuntimeError.
+    """
+    import numpy
+    from vtkmodules.util import numpy_support
+
+    filter_class, _, _ = _method_classes(method)
+    data = numpy.asarray(array)
+    if data.ndim == 2:
+        rows, columns, components = data.shape[0], data.shape[1], 1
+    elif data.ndim == 3:
+        rows, columns, components = data.shape
+    else:
+        raise ValueError("expected an array of shape (rows, columns[, components]), got %s"
+                         % (data.shape,))
+    if not 1 <= components <= 4:
+        raise ValueError("expected 1 to 4 components, got %d" % components)
+    if data.dtype.kind not in "biuf":
+        raise ValueError("expected a numeric array, got dtype %s" % data.dtype)
+    if data.dtype.kind == "b":
+        raise ValueError("boolean arrays are not images; convert to uint8 first")
+
+    value_range = options.pop("value_range", None)
+    image = _vtkCommonDataModel.vtkImageData()
+    image.SetDimensions(columns, rows, 1)
+    flat = numpy.ascontiguousarray(data).reshape(rows * columns, components)
+    scalars = numpy_support.numpy_to_vtk(flat, deep=True)
+    scalars.SetName("pixels")
+    image.GetPointData().SetScalars(scalars)
+
+    aa = filter_class()
+    _configure(aa.GetOptions(), method, preset, options)
+    if value_range is not None:
+        lo, hi = value_range
+        aa.SetValueRange(float(lo), float(hi))
+    errors = []
+
+    def on_error(caller, event, message=None):
+        # "ERROR: In FILE, line N\nvtkImageMLAA (0x...): what went wrong": keep what went wrong.
+        lines = [line for line in str(message).splitlines() if line.strip()]
+        text = lines[-1] if lines else str(message)
+        errors.append(text.split("): ", 1)[-1].strip())
+    on_error.CallDataType = _vtkCommonCore.VTK_STRING
+    aa.AddObserver("ErrorEvent", on_error)
+    # The executive then reports that the request failed; the filter's message says why, and
+    # the exception carries it, so the executive's is kept off the console.
+    aa.GetExecutive().AddObserver("ErrorEvent", lambda caller, event: None)
+    aa.SetInputData(image)
+    aa.Update()
+
+    out = aa.GetOutput().GetPointData().GetScalars()
+    if errors or out is None:
+        raise RuntimeError("%s failed: %s" % (filter_class.__name__,
+                                              "; ".join(str(e) for e in errors) or "no output"))
+    result = numpy_support.vtk_to_numpy(out).reshape(data.shape).astype(data.dtype, copy=True)
+    return result
