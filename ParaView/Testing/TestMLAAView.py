@@ -1,0 +1,82 @@
+"""The MLAA render view: with UseMLAA on, the screenshot is antialiased (edge pixels change,
+flat regions do not) and equals, within 2/255, vtkImageMLAA run outside ParaView (the `mlaa`
+tool, which the project's tests hold equal to the GPU pass within 2/255) on the screenshot with
+UseMLAA off; UseMLAA off gives the plain image; FXAA never stacks with MLAA. The screenshots are
+kept in the output directory for TestMLAARanks.py, which compares one rank with two."""
+
+import os
+
+import numpy as np
+
+import mlaa_pvtest as t
+
+args = t.parse_arguments()
+
+from paraview.simple import *  # noqa: E402,F403
+
+t.load_plugin(args.plugin, globals())
+t.check(t.number_of_ranks() == args.ranks, "pvbatch runs on %d rank(s)" % args.ranks)
+
+view = CreateView("MLAARenderView")
+t.check(view.UseMLAA == 1, "UseMLAA is on by default")
+size = [400, 300]
+view.ViewSize = size
+view.OrientationAxesVisibility = 0
+# A background that is neither black nor white: under IceT the pass works on the composited
+# image, whose background is transparent, and a wrong alpha convention would leave halos of the
+# wrong colour around the silhouettes.
+view.UseColorPaletteForBackground = 0
+view.Background = [0.32, 0.34, 0.43]
+
+# Flat-shaded objects (no lighting: each is one colour), so flat regions are truly flat. The
+# sphere and the cone are split across the ranks.
+for source, colour in ((Sphere(ThetaResolution=64, PhiResolution=64, Radius=0.5), [0.9, 0.6, 0.1]),
+                       (Cone(Resolution=7, Center=[0.7, 0.2, 0.0], Radius=0.35), [0.2, 0.8, 0.3]),
+                       (Box(Center=[-0.6, -0.4, 0.2], XLength=0.5, YLength=0.3), [0.95, 0.95, 0.95])):
+    display = Show(source, view)
+    ColorBy(display, None)
+    display.AmbientColor = colour
+    display.DiffuseColor = colour
+    display.Ambient = 1.0
+    display.Diffuse = 0.0
+view.CameraPosition = [0.4, 0.5, 4.0]
+view.CameraFocalPoint = [0.0, 0.0, 0.0]
+view.CameraViewUp = [0.2, 1.0, 0.0]
+view.CameraParallelProjection = 0
+view.CameraViewAngle = 30
+
+
+def screenshot(name):
+    path = os.path.join(args.output_dir, name)
+    SaveScreenshot(path, view, ImageResolution=size, TransparentBackground=0)
+    rows = t.read_png(path)
+    return path, rows[:, :, :3]
+
+
+view.UseMLAA = 0
+off_path, off = screenshot("mlaa-off.png")
+view.UseMLAA = 1
+on_path, on = screenshot("mlaa-on.png")
+
+changed = np.any(on != off, axis=2)
+flat = t.uniform_neighbourhoods(off)
+t.check(changed.sum() > 200, "%d edge pixels are antialiased" % changed.sum())
+t.check(t.max_difference(on[flat], off[flat]) == 0, "flat regions are unchanged")
+
+reference = t.run_tool(args.tool, [], off_path, os.path.join(args.output_dir, "reference.png"))
+difference = t.max_difference(on, reference[:, :, :3])
+t.check(difference <= 2,
+        "the view's image equals vtkImageMLAA's on the plain screenshot within 2/255 "
+        "(max difference %d)" % difference)
+
+# FXAA asked for while MLAA is on does not stack: the image stays the MLAA one.
+view.UseFXAA = 1
+_, with_fxaa = screenshot("mlaa-on-fxaa-asked.png")
+t.check(np.array_equal(with_fxaa, on), "FXAA does not stack with MLAA")
+# ... and applies again once MLAA is off.
+view.UseMLAA = 0
+_, fxaa_only = screenshot("fxaa-only.png")
+t.check(np.any(fxaa_only != off), "FXAA applies when MLAA is off")
+view.UseFXAA = 0
+_, plain_again = screenshot("mlaa-off-again.png")
+t.check(np.array_equal(plain_again, off), "UseMLAA off gives the plain image again")
