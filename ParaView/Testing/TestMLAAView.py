@@ -30,15 +30,21 @@ view.Background = [0.32, 0.34, 0.43]
 
 # Flat-shaded objects (no lighting: each is one colour), so flat regions are truly flat. The
 # sphere and the cone are split across the ranks.
-for source, colour in ((Sphere(ThetaResolution=64, PhiResolution=64, Radius=0.5), [0.9, 0.6, 0.1]),
+sphere = Sphere(ThetaResolution=64, PhiResolution=64, Radius=0.5)
+for source, colour in ((sphere, [0.9, 0.6, 0.1]),
                        (Cone(Resolution=7, Center=[0.7, 0.2, 0.0], Radius=0.35), [0.2, 0.8, 0.3]),
                        (Box(Center=[-0.6, -0.4, 0.2], XLength=0.5, YLength=0.3), [0.95, 0.95, 0.95])):
     display = Show(source, view)
-    ColorBy(display, None)
+    display.ColorArrayName = ['POINTS', '']
     display.AmbientColor = colour
     display.DiffuseColor = colour
     display.Ambient = 1.0
     display.Diffuse = 0.0
+if args.ranks > 1:
+    from paraview import servermanager as sm
+    owners = sm.Fetch(ProcessIdScalars(Input=sphere)).GetPointData().GetArray("ProcessId").GetRange()
+    t.check(owners == (0.0, args.ranks - 1.0),
+            "the sphere is split across the ranks (process ids %s), so IceT composites" % (owners,))
 view.CameraPosition = [0.4, 0.5, 4.0]
 view.CameraFocalPoint = [0.0, 0.0, 0.0]
 view.CameraViewUp = [0.2, 1.0, 0.0]
@@ -53,6 +59,9 @@ def screenshot(name):
     return path, rows[:, :, :3]
 
 
+# ParaView's settings may turn FXAA on for every render view (in this view it only applies while
+# UseMLAA is off): the plain image has none.
+view.UseFXAA = 0
 view.UseMLAA = 0
 off_path, off = screenshot("mlaa-off.png")
 view.UseMLAA = 1
