@@ -1,7 +1,8 @@
-"""The properties of the MLAAAntialiasing filter and the MLAA render view: their defaults are
-vtkMLAAOptions's own (read back from the server objects through the options proxy's information
-properties), and QualityPreset replaces the quality settings while it is chosen, whatever order
-the properties are set in, and gives them back under Custom."""
+"""The properties of the MLAAAntialiasing filter, the MLAA render view and the DLAAAntialiasing
+filter: their defaults are vtkMLAAOptions's and vtkDLAAOptions's own (read back from the server
+objects through the options proxies' information properties), and QualityPreset replaces the
+quality settings while it is chosen, whatever order the properties are set in, and gives them
+back under Custom."""
 
 import mlaa_pvtest as t
 
@@ -80,3 +81,20 @@ for label, proxy, options, prefix in (
     t.check(all(close(in_effect[n], v) for n, v in preset_values("Ultra").items()) and
             in_effect["DebugOutput"] == 1,
             "%s: Ultra and DebugOutput apply together (%s)" % (label, in_effect))
+
+# The DLAA filter's settings: its properties' defaults are vtkDLAAOptions's.
+dlaa = DLAAAntialiasing(Input=image)
+dlaa_options = dlaa.GetProperty("Epsilon").SMProperty.GetParent()
+dlaa_options.UpdatePropertyInformation()
+dlaa_settings = ["Epsilon", "Lambda", "LumaFunction", "LongEdges"]
+defaults = {n: dlaa_options.GetProperty(n).GetElement(0) for n in dlaa_settings}
+in_effect = {n: dlaa_options.GetProperty(n + "Info").GetElement(0) for n in dlaa_settings}
+t.check(all(close(defaults[n], in_effect[n]) for n in dlaa_settings),
+        "DLAA filter: the properties' defaults are vtkDLAAOptions's (%s)" % in_effect)
+dlaa.Lambda = 7.5
+dlaa.LumaFunction = "Green"
+dlaa.UpdatePipeline()
+dlaa_options.UpdatePropertyInformation()
+t.check(close(dlaa_options.GetProperty("LambdaInfo").GetElement(0), 7.5) and
+        dlaa_options.GetProperty("LumaFunctionInfo").GetElement(0) == 1,
+        "DLAA filter: the properties reach vtkImageDLAA's options")

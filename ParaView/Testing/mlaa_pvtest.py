@@ -117,18 +117,21 @@ def run_tool(tool, arguments, source, target):
     return read_png(target)
 
 
-def uniform_neighbourhoods(rows):
-    """True where a pixel and its eight neighbours all hold the same value (image border
-    excluded): pixels MLAA must leave alone."""
+def uniform_neighbourhoods(rows, radius=1):
+    """True where every pixel within `radius` (a square) holds the pixel's own value (image border
+    excluded): pixels an antialiasing filter that reads no farther must leave alone. MLAA
+    blends a pixel with its four neighbours only across an edge: radius 1. DLAA reads the
+    5-pixel crosses of pixels up to 8 away along x and y: radius 10."""
     height, width, _ = rows.shape
-    centre = rows[1:-1, 1:-1]
-    same = np.ones((height - 2, width - 2), dtype=bool)
-    for dy in (-1, 0, 1):
-        for dx in (-1, 0, 1):
-            neighbour = rows[1 + dy:height - 1 + dy, 1 + dx:width - 1 + dx]
+    r = radius
+    centre = rows[r:height - r, r:width - r]
+    same = np.ones(centre.shape[:2], dtype=bool)
+    for dy in range(-r, r + 1):
+        for dx in range(-r, r + 1):
+            neighbour = rows[r + dy:height - r + dy, r + dx:width - r + dx]
             same &= np.all(neighbour == centre, axis=2)
     mask = np.zeros((height, width), dtype=bool)
-    mask[1:-1, 1:-1] = same
+    mask[r:height - r, r:width - r] = same
     return mask
 
 
