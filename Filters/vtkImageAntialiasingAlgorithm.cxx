@@ -1,9 +1,11 @@
 #include "vtkImageAntialiasingAlgorithm.h"
 
 #include "vtkDataArray.h"
+#include "vtkExtentTranslator.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkNew.h"
 #include "vtkMLAAStages.h"
 #include "vtkPointData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -52,12 +54,52 @@ void vtkImageAntialiasingAlgorithm::GetEffectiveValueRange(int scalarType, doubl
 }
 
 //------------------------------------------------------------------------------
+void vtkImageAntialiasingAlgorithm::GetRequestedOutputExtent(vtkInformation* outInfo, int extent[6])
+{
+  outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
+  const int pieces = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+    : 1;
+  if (pieces <= 1 || !outInfo->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+  {
+    return;
+  }
+  // A request by piece: distributed pipelines (ParaView's, vtkXMLPImageDataWriter) ask each
+  // process for piece p of n and leave the whole extent as the update extent. Structured sources
+  // split such requests themselves, so the filter must too, or it would get the source's piece
+  // without the padding (and seams at the pieces' borders): it takes the piece's extent as VTK's
+  // extent translator splits the whole extent, within the requested one.
+  int whole[6];
+  outInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
+  const int piece = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER());
+  const int ghosts =
+    outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS())
+    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS())
+    : 0;
+  vtkNew<vtkExtentTranslator> translator;
+  int pieceExtent[6];
+  if (!translator->PieceToExtentThreadSafe(
+        piece, pieces, ghosts, whole, pieceExtent, translator->GetSplitMode(), 0))
+  {
+    // More pieces than the image has cells to split: this one is empty.
+    const int empty[6] = { 0, -1, 0, -1, 0, -1 };
+    std::copy(empty, empty + 6, extent);
+    return;
+  }
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    extent[2 * axis] = std::max(extent[2 * axis], pieceExtent[2 * axis]);
+    extent[2 * axis + 1] = std::min(extent[2 * axis + 1], pieceExtent[2 * axis + 1]);
+  }
+}
+
+//------------------------------------------------------------------------------
 int vtkImageAntialiasingAlgorithm::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   int extent[6];
-  outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
+  GetRequestedOutputExtent(outInfo, extent);
   const int pad = this->GetInputPadding();
 
   for (int port = 0; port < this->GetNumberOfInputPorts(); ++port)
@@ -83,6 +125,10 @@ int vtkImageAntialiasingAlgorithm::RequestUpdateExtent(
       }
     }
     inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), padded, 6);
+    // The padded extent is the whole request: upstream must not split it into pieces again.
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
   }
   return 1;
 }
@@ -158,7 +204,7 @@ bool vtkImageAntialiasingAlgorithm::PrepareRequest(
   int* outExt = r.OutputExtent;
   int* inExt = r.InputExtent;
   int* whole = r.WholeExtent;
-  outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), outExt);
+  GetRequestedOutputExtent(outInfo, outExt);
   input->GetExtent(inExt);
   inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
   const bool emptyWhole = whole[0] > whole[1] || whole[2] > whole[3] || whole[4] > whole[5];

@@ -7,7 +7,10 @@
  * An abstract vtkImageAlgorithm. A subclass says how far an output pixel reaches into its input
  * (GetInputPadding); this class then asks every connected input for the requested extent padded
  * by that much in x and y (z slices are independent), so that a streamed image gives the same
- * pixels as a whole one. In RequestData a subclass calls PrepareRequest, which checks the input
+ * pixels as a whole one. A request by piece (piece p of n, as ParaView and other distributed
+ * pipelines make) is first turned into that piece's extent (GetRequestedOutputExtent), and the
+ * padded extent is asked for as one piece, so distributed images get the same pixels too.
+ * In RequestData a subclass calls PrepareRequest, which checks the input
  * (point scalars of a numeric type with 1 to 4 components, as many tuples as points, a finite
  * value range, a non-empty image that covers the request), reports what is wrong with
  * vtkErrorMacro and empties the output; an empty request is not an error. ForEachSlice then runs
@@ -75,6 +78,13 @@ protected:
 
   int RequestUpdateExtent(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
+
+  /**
+   * The extent the output is asked for: the update extent or, for a request by piece (piece p
+   * of n, as distributed pipelines ask), that piece's part of it, split as vtkExtentTranslator
+   * splits the whole extent. RequestUpdateExtent pads it and asks for it as one piece.
+   */
+  static void GetRequestedOutputExtent(vtkInformation* outInfo, int extent[6]);
 
   /**
    * For RequestInformation: give the output the scalar type and component count of the

@@ -158,7 +158,10 @@ bool vtkOpenGLMLAAPass::PrepareMethodTargets(const Frame& frame)
 void vtkOpenGLMLAAPass::SetEdgeUniforms(vtkShaderProgram* program)
 {
   program->SetUniformi("colorTexture", this->GetSourceTexture()->GetTextureUnit());
-  program->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
+  if (this->DepthTexture->GetHandle())
+  {
+    program->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
+  }
   program->SetUniformf("threshold", static_cast<float>(this->Options->GetThreshold()));
   program->SetUniformf(
     "localContrastFactor", static_cast<float>(this->Options->GetLocalContrastFactor()));
@@ -191,7 +194,14 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   vtkShaderProgram* program = this->EdgesQuad.Quad->Program;
   vtkTextureObject* source = this->GetSourceTexture();
   source->Activate();
-  this->DepthTexture->Activate();
+  // The depth copy exists only when the delegate renders into the pass's textures; the shaders
+  // read it in depth mode only, which always has it. (Activating a texture that was never
+  // allocated fails an assertion in VTK builds that keep them, as ParaView's does.)
+  const bool hasDepth = this->DepthTexture->GetHandle() != 0;
+  if (hasDepth)
+  {
+    this->DepthTexture->Activate();
+  }
   this->SetEdgeUniforms(program);
   this->EdgesQuad.Quad->Render();
 
@@ -210,7 +220,10 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
     this->SetEdgeUniforms(program);
     this->LocalContrastQuad.Quad->Render();
   }
-  this->DepthTexture->Deactivate();
+  if (hasDepth)
+  {
+    this->DepthTexture->Deactivate();
+  }
   source->Deactivate();
 
   // Line lengths by recursive doubling (LineLengths), on the same pixels.

@@ -1,12 +1,15 @@
 // Streaming and threading invariance: vtkImageMLAA pads its input request by the search
 // distance, so processing an image in pieces (vtkImageDataStreamer, or explicit update extents)
 // gives exactly the pixels of processing it whole; and the result does not depend on the number
-// of threads. Also at 128 steps, on lines longer than a piece and its padding.
+// of threads. Also at 128 steps, on lines longer than a piece and its padding, and for requests
+// by piece (piece p of n, as ParaView asks each MPI rank) from a source that splits them itself.
 #include "vtkMLAATestUtilities.h"
 
 #include "vtkExtentTranslator.h"
 #include "vtkImageDataStreamer.h"
+#include "vtkImageThreshold.h"
 #include "vtkMath.h"
+#include "vtkRTAnalyticSource.h"
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTrivialProducer.h"
@@ -173,6 +176,58 @@ int TestImageMLAAStreaming(int, char*[])
       SetSplitMode(streamer->GetExtentTranslator(), mode);
       streamer->Update();
       MLAA_CHECK(Compare(whole, streamer->GetOutput()).Count == 0);
+    }
+  }
+
+  // Requests by piece: a distributed pipeline asks for piece p of n and leaves the whole extent
+  // as the update extent. vtkRTAnalyticSource splits such a request itself; the filter must
+  // take the piece's extent (as vtkExtentTranslator splits the whole extent), pad it, and ask
+  // for the padded extent as one piece, or it gets the source's piece without padding.
+  {
+    vtkNew<vtkRTAnalyticSource> source;
+    source->SetWholeExtent(-60, 59, -45, 44, 0, 0);
+    vtkNew<vtkImageThreshold> shapes; // curved shapes with aliased edges, 0 or 255
+    shapes->SetInputConnection(source->GetOutputPort());
+    shapes->ThresholdByUpper(150.0);
+    shapes->SetInValue(255.0);
+    shapes->SetOutValue(0.0);
+    shapes->SetOutputScalarTypeToUnsignedChar();
+    vtkNew<vtkImageMLAA> reference;
+    reference->SetInputConnection(shapes->GetOutputPort());
+    reference->Update();
+    vtkNew<vtkImageData> whole;
+    whole->DeepCopy(reference->GetOutput());
+    shapes->Update();
+    MLAA_CHECK(Compare(shapes->GetOutput(), whole).Count > 50);
+    int wholeExtent[6];
+    whole->GetExtent(wholeExtent);
+    for (int pieces : { 2, 3, 7 })
+    {
+      for (int piece = 0; piece < pieces; ++piece)
+      {
+        vtkNew<vtkImageMLAA> filter;
+        filter->SetInputConnection(shapes->GetOutputPort());
+        filter->UpdatePiece(piece, pieces, 0);
+        vtkNew<vtkExtentTranslator> translator;
+        int expected[6], got[6];
+        translator->PieceToExtentThreadSafe(
+          piece, pieces, 0, wholeExtent, expected, translator->GetSplitMode(), 0);
+        filter->GetOutput()->GetExtent(got);
+        bool same = std::equal(expected, expected + 6, got);
+        for (int y = expected[2]; same && y <= expected[3]; ++y)
+        {
+          for (int x = expected[0]; same && x <= expected[1]; ++x)
+          {
+            same = whole->GetScalarComponentAsDouble(x, y, 0, 0) ==
+              filter->GetOutput()->GetScalarComponentAsDouble(x, y, 0, 0);
+          }
+        }
+        if (!MLAA_CHECK(same))
+        {
+          std::cerr << "piece " << piece << " of " << pieces << " differs from the whole result"
+                    << std::endl;
+        }
+      }
     }
   }
 

@@ -1,0 +1,43 @@
+/**
+ * @class   vtkPVImageMLAA
+ * @brief   vtkImageMLAA on a chosen point array, for ParaView's MLAAAntialiasing filter.
+ *
+ * vtkImageMLAA antialiases the active point scalars of its input. ParaView's pipelines often
+ * carry the array to antialias as a non-active one (a Calculator's result, a reader's second
+ * array), and users pick arrays by name, so this subclass antialiases the point array chosen by
+ * SetInputArrayToProcess(0, ...) (by default the active scalars, as vtkImageMLAA): it hands the
+ * superclass a shallow copy of the input whose active scalars are that array, and announces the
+ * array's type and components as the output's in RequestInformation. Everything else, options,
+ * padding of the requested extent and checks included, is vtkImageMLAA's.
+ *
+ * @sa vtkImageMLAA vtkPVMLAAOptions
+ */
+
+#ifndef vtkPVImageMLAA_h
+#define vtkPVImageMLAA_h
+
+#include "vtkImageMLAA.h"
+#include "vtkParaViewMLAAModule.h" // For export macro
+
+class VTKPARAVIEWMLAA_EXPORT vtkPVImageMLAA : public vtkImageMLAA
+{
+public:
+  static vtkPVImageMLAA* New();
+  vtkTypeMacro(vtkPVImageMLAA, vtkImageMLAA);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+protected:
+  vtkPVImageMLAA() = default;
+  ~vtkPVImageMLAA() override = default;
+
+  int RequestInformation(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+private:
+  vtkPVImageMLAA(const vtkPVImageMLAA&) = delete;
+  void operator=(const vtkPVImageMLAA&) = delete;
+};
+
+#endif

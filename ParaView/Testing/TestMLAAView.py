@@ -1,0 +1,121 @@
+"""The MLAA render view: with UseMLAA on, the screenshot is antialiased (edge pixels change,
+flat regions do not) and equals, within 2/255, vtkImageMLAA run outside ParaView (the `mlaa`
+tool, which the project's tests hold equal to the GPU pass within 2/255) on the screenshot with
+UseMLAA off; the same for UseDLAA and vtkImageDLAA; UseMLAA off gives the plain image; FXAA
+never stacks with MLAA. The screenshots are
+kept in the output directory for TestMLAARanks.py, which compares one rank with two."""
+
+import os
+
+import numpy as np
+
+import mlaa_pvtest as t
+
+args = t.parse_arguments()
+
+from paraview.simple import *  # noqa: E402,F403
+
+t.load_plugin(args.plugin, globals())
+t.check(t.number_of_ranks() == args.ranks, "pvbatch runs on %d rank(s)" % args.ranks)
+
+view = CreateView("MLAARenderView")
+t.check(view.UseMLAA == 1, "UseMLAA is on by default")
+size = [400, 300]
+view.ViewSize = size
+view.OrientationAxesVisibility = 0
+# A background that is neither black nor white: under IceT the pass works on the composited
+# image, whose background is transparent, and a wrong alpha convention would leave halos of the
+# wrong colour around the silhouettes.
+view.UseColorPaletteForBackground = 0
+view.Background = [0.32, 0.34, 0.43]
+
+# Flat-shaded objects (no lighting: each is one colour), so flat regions are truly flat. The
+# sphere and the cone are split across the ranks.
+sphere = Sphere(ThetaResolution=64, PhiResolution=64, Radius=0.5)
+for source, colour in ((sphere, [0.9, 0.6, 0.1]),
+                       (Cone(Resolution=7, Center=[0.7, 0.2, 0.0], Radius=0.35), [0.2, 0.8, 0.3]),
+                       (Box(Center=[-0.6, -0.4, 0.2], XLength=0.5, YLength=0.3), [0.95, 0.95, 0.95]),
+                       # Nearly black: against the transparent black that IceT composites over,
+                       # it would have no edges at all.
+                       (Sphere(Center=[-0.55, 0.45, 0.0], Radius=0.2), [0.03, 0.03, 0.04])):
+    display = Show(source, view)
+    display.ColorArrayName = ['POINTS', '']
+    display.AmbientColor = colour
+    display.DiffuseColor = colour
+    display.Ambient = 1.0
+    display.Diffuse = 0.0
+if args.ranks > 1:
+    from paraview import servermanager as sm
+    owners = sm.Fetch(ProcessIdScalars(Input=sphere)).GetPointData().GetArray("ProcessId").GetRange()
+    t.check(owners == (0.0, args.ranks - 1.0),
+            "the sphere is split across the ranks (process ids %s), so IceT composites" % (owners,))
+view.CameraPosition = [0.4, 0.5, 4.0]
+view.CameraFocalPoint = [0.0, 0.0, 0.0]
+view.CameraViewUp = [0.2, 1.0, 0.0]
+view.CameraParallelProjection = 0
+view.CameraViewAngle = 30
+
+
+def screenshot(name):
+    path = os.path.join(args.output_dir, name)
+    SaveScreenshot(path, view, ImageResolution=size, TransparentBackground=0)
+    rows = t.read_png(path)
+    return path, rows[:, :, :3]
+
+
+# ParaView's settings may turn FXAA on for every render view (in this view it only applies while
+# UseMLAA is off): the plain image has none.
+view.UseFXAA = 0
+view.UseMLAA = 0
+off_path, off = screenshot("mlaa-off.png")
+view.UseMLAA = 1
+on_path, on = screenshot("mlaa-on.png")
+
+changed = np.any(on != off, axis=2)
+flat = t.uniform_neighbourhoods(off)
+t.check(changed.sum() > 200, "%d edge pixels are antialiased" % changed.sum())
+t.check(t.max_difference(on[flat], off[flat]) == 0, "flat regions are unchanged")
+
+reference = t.run_tool(args.tool, [], off_path, os.path.join(args.output_dir, "reference.png"))
+difference = t.max_difference(on, reference[:, :, :3])
+t.check(difference <= 2,
+        "the view's image equals vtkImageMLAA's on the plain screenshot within 2/255 "
+        "(max difference %d)" % difference)
+
+# DLAA, with UseMLAA off: the same checks against the tool's --method dlaa (DLAA reads up to 10
+# pixels away, so "flat" is wider).
+view.UseMLAA = 0
+view.UseDLAA = 1
+_, dlaa = screenshot("dlaa-on.png")
+changed = np.any(dlaa != off, axis=2)
+t.check(changed.sum() > 200, "DLAA: %d edge pixels are antialiased" % changed.sum())
+wide_flat = t.uniform_neighbourhoods(off, 10)
+t.check(t.max_difference(dlaa[wide_flat], off[wide_flat]) == 0, "DLAA: flat regions are unchanged")
+reference = t.run_tool(args.tool, ["--method", "dlaa"], off_path,
+                       os.path.join(args.output_dir, "reference-dlaa.png"))
+difference = t.max_difference(dlaa, reference[:, :, :3])
+differing = np.sum(np.abs(dlaa.astype(np.int32) - reference[:, :, :3]).max(axis=2) > 2)
+if args.ranks == 1:
+    t.check(difference <= 2,
+            "DLAA: the view's image equals vtkImageDLAA's on the plain screenshot within 2/255 "
+            "(max difference %d)" % difference)
+else:
+    # A known difference under IceT (README, limits): measured, not held to 2/255.
+    print("DLAA on %d ranks against vtkImageDLAA on the plain screenshot: max difference %d, "
+          "%d pixels differ by more than 2/255" % (args.ranks, difference, differing))
+view.UseMLAA = 1
+_, both = screenshot("mlaa-and-dlaa-on.png")
+t.check(np.array_equal(both, on), "with UseMLAA and UseDLAA on, MLAA is used")
+view.UseDLAA = 0
+
+# FXAA asked for while MLAA is on does not stack: the image stays the MLAA one.
+view.UseFXAA = 1
+_, with_fxaa = screenshot("mlaa-on-fxaa-asked.png")
+t.check(np.array_equal(with_fxaa, on), "FXAA does not stack with MLAA")
+# ... and applies again once MLAA is off.
+view.UseMLAA = 0
+_, fxaa_only = screenshot("fxaa-only.png")
+t.check(np.any(fxaa_only != off), "FXAA applies when MLAA is off")
+view.UseFXAA = 0
+_, plain_again = screenshot("mlaa-off-again.png")
+t.check(np.array_equal(plain_again, off), "UseMLAA off gives the plain image again")
