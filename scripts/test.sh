@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Installs what is needed, builds vtkMLAA with its tests, and runs every test (rendering tests
-# offscreen under Xvfb). Then, unless --quick, the same with AddressSanitizer and
-# LeakSanitizer (build-asan/): memory errors and leaks fail the run.
+# offscreen under Xvfb; the Python package's tests with /usr/bin/python3). Then builds the
+# ParaView plugin against Debian's ParaView 5.11 and runs its pvbatch tests on one and two MPI
+# ranks (scripts/test-paraview.sh). Then, unless --quick, the main tests again with
+# AddressSanitizer and LeakSanitizer (build-asan/): memory errors and leaks fail the run.
 #   scripts/test.sh [--quick]
 set -euo pipefail
 source_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -14,6 +16,9 @@ jobs="$(nproc)"
 "$source_dir/scripts/build.sh" "$source_dir/build" -DBUILD_TESTING=ON
 (cd "$source_dir/build" &&
   "$source_dir/scripts/with-xvfb.sh" ctest --output-on-failure --parallel "$jobs")
+
+# The ParaView plugin (its own project; installs ParaView and unpacks its Python privately).
+"$source_dir/scripts/test-paraview.sh" "$source_dir/build"
 
 if ((quick == 0)); then
   "$source_dir/scripts/build.sh" "$source_dir/build-asan" -DBUILD_TESTING=ON \
