@@ -511,12 +511,23 @@ const char* ChannelWord(int channels)
 }
 
 // For tests only: MLAA_TEST_CRASH_WHILE_WRITING=abort|segv|exit makes the tool fail as a library
-// would, after a library message, while it writes, so that the tests can see a crash reported.
-void SimulateLibraryCrashForTests()
+// would, after a library message, while it writes `path`, so that the tests can see a crash
+// reported; =sleep makes it wait there (up to a minute) for a signal. With
+// MLAA_TEST_CRASH_ONLY=TEXT, only outputs whose name contains TEXT (one file of a batch).
+void SimulateLibraryCrashForTests(const std::string& path)
 {
   const char* crash = std::getenv("MLAA_TEST_CRASH_WHILE_WRITING");
-  if (!crash || !*crash)
+  const char* only = std::getenv("MLAA_TEST_CRASH_ONLY");
+  if (!crash || !*crash || (only && *only && path.find(only) == std::string::npos))
   {
+    return;
+  }
+  if (std::strcmp(crash, "sleep") == 0)
+  {
+    for (int second = 0; second < 60; ++second)
+    {
+      sleep(1);
+    }
     return;
   }
   std::fprintf(stderr, "simulated library message before a crash\n");
@@ -733,7 +744,7 @@ std::string WriteImageFile(vtkImageData* image, const std::string& path,
     throw Error(what + OneLine(error + "\n" + messages.Finish()));
   }
   const OIIO::TypeDesc writtenType = output->spec().format;
-  SimulateLibraryCrashForTests();
+  SimulateLibraryCrashForTests(path);
 
   // Floating-point pixels in an integer format: OpenImageIO maps [0, 1] to the whole integer
   // range; map the value range there instead.
