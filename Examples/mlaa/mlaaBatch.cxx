@@ -139,9 +139,9 @@ public:
   /** File number `number` (from 1), in input order: its messages, then its line. */
   void Report(size_t number, const BatchFile& file, bool failed, const std::string& messages)
   {
-    this->Clear();
     if (!messages.empty())
     {
+      this->Clear();
       WriteStderr(messages.back() == '\n' ? messages : messages + "\n");
     }
     if (!failed && !this->Quiet && !this->Terminal)
