@@ -407,8 +407,8 @@ void PrintUsage(std::ostream& os)
   os << "\n";
   PrintWrapped(os, "", 0,
     "Exit status: 0 on success; 1 if reading, antialiasing or writing failed (in a batch: "
-    "any file); 2 for a bad command line. Errors are one line on stderr, \"mlaa: FILE: what went wrong\". If a "
-    "library crashes, a line saying so and what the library printed are shown, and no "
+    "any file); 2 for a bad command line. Errors are one line on stderr, \"mlaa: FILE: what "
+    "went wrong\". If a library crashes, a line saying so and what the library printed are shown, and no "
     "temporary file is left behind.");
 }
 
