@@ -348,7 +348,8 @@ void PrintUsage(std::ostream& os)
   text << "The largest image, in pixels (width x height), that INPUT and the depth image may "
           "be; checked from the file's header before anything is allocated. Default: what "
           "fits in half of the memory available now (about "
-       << mlaa::DefaultMaxPixels(4, OIIO::TypeDesc::UINT8) << " RGBA 8-bit pixels).";
+       << mlaa::DefaultMaxPixels(4, OIIO::TypeDesc::UINT8)
+       << " RGBA 8-bit pixels), shared by the files a batch processes at the same time.";
   option("--max-pixels N", text);
 
   text.str("");
@@ -1209,6 +1210,7 @@ int AntialiasBatch(const CommandLine& cl)
   settings.Quiet = cl.Quiet;
   // The processors shared out between the files in flight, for VTK's and OpenImageIO's threads.
   const int threads = std::max(1, processors / settings.Jobs);
+  mlaa::SetImagesInFlight(settings.Jobs);
   std::string backend;
   PrepareBatch(cl, backend);
   settings.ProcessFile = [&](const mlaa::BatchFile& file)

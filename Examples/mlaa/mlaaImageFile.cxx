@@ -333,6 +333,17 @@ std::string Printable(const std::string& text, size_t maxLength, bool joinLines)
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+int ImagesInFlight = 1; // SetImagesInFlight
+}
+
+void SetImagesInFlight(int count)
+{
+  ImagesInFlight = std::max(1, count);
+}
+
+//------------------------------------------------------------------------------
 std::uint64_t DefaultMaxPixels(int channels, OIIO::TypeDesc type)
 {
   // Bytes per pixel: the input and the output images, a double copy of floating-point values
@@ -356,7 +367,7 @@ std::uint64_t DefaultMaxPixels(int channels, OIIO::TypeDesc type)
   {
     return std::uint64_t(1) << 28;
   }
-  return kilobytes * 1024 / 2 / perPixel;
+  return kilobytes * 1024 / 2 / static_cast<std::uint64_t>(ImagesInFlight) / perPixel;
 }
 
 //------------------------------------------------------------------------------
@@ -610,8 +621,11 @@ ImageFile ReadImageFile(const std::string& path, std::uint64_t maxPixels)
       std::to_string(spec.height) + " = " + std::to_string(pixels) + " pixels, more than " +
       (pixels > hardLimit ? "the tool can hold (" + std::to_string(hardLimit) + ")"
                           : defaultLimit
-            ? "the " + std::to_string(limit) +
-              " that fit in half of the available memory (--max-pixels N raises the limit)"
+            ? "the " + std::to_string(limit) + " that fit in half of the available memory" +
+              (ImagesInFlight > 1
+                  ? " shared by " + std::to_string(ImagesInFlight) + " files at a time"
+                  : std::string()) +
+              " (--max-pixels N raises the limit)"
             : "--max-pixels " + std::to_string(limit)));
   }
 

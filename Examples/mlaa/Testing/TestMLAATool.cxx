@@ -32,6 +32,7 @@
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
@@ -2157,6 +2158,56 @@ void BatchFailuresReported()
   }
 }
 
+// The default size limit is shared by the files in flight: an image header that one file alone
+// may claim is refused when --jobs files are read at once, so that as many hostile headers
+// cannot take more memory than one could.
+void BatchMemoryShared()
+{
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key;
+  double kilobytes = 0;
+  while (meminfo >> key && !(key == "MemAvailable:" && meminfo >> kilobytes))
+  {
+    meminfo.ignore(1 << 20, '\n');
+  }
+  if (kilobytes <= 0)
+  {
+    std::cout << "  no MemAvailable: nothing to test" << std::endl;
+    return;
+  }
+  // The tool's limit for 8-bit RGB alone (mlaa::DefaultMaxPixels: 46 bytes a pixel), a claim
+  // below it and below the tool's hard limit, and enough jobs to bring the share well under it.
+  const double limit = kilobytes * 1024 / 2 / 46;
+  const double hardLimit = std::numeric_limits<int>::max() / 4;
+  const double claim = std::min(0.75 * limit, 0.5 * hardLimit);
+  int jobs = 2;
+  while (limit / jobs > 0.8 * claim)
+  {
+    ++jobs;
+  }
+  const fs::path in = WorkFile("in");
+  fs::create_directories(in);
+  const int width = 20000;
+  const int height = static_cast<int>(claim / width);
+  WriteText(in / "claim.ppm", "P6 " + std::to_string(width) + " " + std::to_string(height) +
+      " 255\n"); // a header without pixels
+  std::vector<std::string> args = { "--quiet", "--jobs", std::to_string(jobs), "--output-dir",
+    WorkFile("out").string(), (in / "claim.ppm").string() };
+  for (int k = 1; k < jobs; ++k)
+  {
+    const fs::path small = in / ("small" + std::to_string(k) + ".png");
+    WriteFile(StaircaseImage(VTK_UNSIGNED_CHAR, { 0 }, { 255 }), small, OIIO::TypeDesc::UINT8);
+    args.push_back(small.string());
+  }
+  fs::create_directory(WorkFile("out"));
+  const Run run = RunTool(args);
+  MLAA_CHECK(run.Status == Failure);
+  const std::vector<std::string> lines = Lines(run.Err);
+  MLAA_CHECK(lines.size() == 2 && lines[0].find("mlaa: " + (in / "claim.ppm").string()) == 0 &&
+    lines[0].find("shared by " + std::to_string(jobs) + " files at a time") != std::string::npos);
+  MLAA_CHECK(Listing(WorkFile("out")).size() == static_cast<size_t>(jobs - 1));
+}
+
 // Command lines that would overwrite an input, or make no sense, are refused before any file
 // is touched.
 void BatchRefusals()
@@ -2393,6 +2444,7 @@ int main(int argc, char* argv[])
     { "batch-progress-lines", BatchProgressLines },
     { "batch-failures-reported", BatchFailuresReported },
     { "batch-refusals", BatchRefusals },
+    { "batch-memory-shared", BatchMemoryShared },
     { "batch-sequence", BatchSequence },
     { "batch-interrupted", BatchInterrupted },
   };
