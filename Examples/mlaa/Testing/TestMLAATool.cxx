@@ -18,6 +18,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <fcntl.h>
+#include <poll.h>
 #include <spawn.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
@@ -2092,6 +2093,89 @@ void BatchProgressLines()
   }
 }
 
+// On a terminal, one line updated in place: "[====>   ] 2/3  1.5 files/s  ETA 0:01", redrawn
+// with a carriage return, ending with a line break, and no per-file lines.
+void BatchProgressBar()
+{
+  const std::vector<fs::path> inputs = BatchInputs(WorkFile("in"));
+  const fs::path out = WorkFile("out");
+  fs::create_directory(out);
+  const int master = posix_openpt(O_RDWR | O_NOCTTY);
+  if (!MLAA_CHECK(master >= 0 && grantpt(master) == 0 && unlockpt(master) == 0))
+  {
+    return;
+  }
+  const std::string terminal = ptsname(master);
+  std::vector<std::string> command = { Where().Tool, "--jobs", "2", "--output-dir", out.string() };
+  const std::vector<std::string> names = Strings(inputs);
+  command.insert(command.end(), names.begin(), names.end());
+  command.push_back((WorkFile("in") / "missing.png").string());
+  std::vector<char*> argv;
+  for (std::string& arg : command)
+  {
+    argv.push_back(&arg[0]);
+  }
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 2, terminal.c_str(), O_RDWR | O_NOCTTY, 0);
+  std::cout << "$ mlaa --jobs 2 --output-dir ... (stderr on a terminal)" << std::endl;
+  pid_t pid;
+  const int spawned = posix_spawn(&pid, command[0].c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (!MLAA_CHECK(spawned == 0))
+  {
+    close(master);
+    return;
+  }
+  // Read as it comes (the terminal's buffer is small), until the tool is gone.
+  std::string text;
+  int status = 0;
+  for (;;)
+  {
+    char buffer[4096];
+    const pid_t done = waitpid(pid, &status, WNOHANG);
+    struct pollfd ready = { master, POLLIN, 0 };
+    while (poll(&ready, 1, done == pid ? 0 : 20) > 0 && (ready.revents & POLLIN))
+    {
+      const ssize_t n = read(master, buffer, sizeof(buffer));
+      if (n <= 0)
+      {
+        break;
+      }
+      text.append(buffer, static_cast<size_t>(n));
+    }
+    if (done == pid)
+    {
+      break;
+    }
+  }
+  close(master);
+  std::string shown;
+  for (const char c : text)
+  {
+    char hex[8];
+    std::snprintf(hex, sizeof(hex), "\\x%02x", static_cast<unsigned char>(c));
+    shown += (c >= 0x20 && c < 0x7f) ? std::string(1, c) : std::string(hex);
+  }
+  std::cout << "  stderr: " << shown << std::endl;
+  MLAA_CHECK(WIFEXITED(status) && WEXITSTATUS(status) == Failure);
+  const std::string total = "/" + std::to_string(inputs.size() + 1);
+  MLAA_CHECK(text.compare(0, 2, "\r[") == 0);
+  MLAA_CHECK(text.find("] 0" + total) != std::string::npos);
+  MLAA_CHECK(text.find("] " + std::to_string(inputs.size() + 1) + total) != std::string::npos);
+  MLAA_CHECK(text.find(" files/s  ETA ") != std::string::npos);
+  MLAA_CHECK(text.find("\x1b[K") != std::string::npos);
+  // The error pushes the bar up: cleared, printed on its own line, bar redrawn.
+  MLAA_CHECK(text.find("\r\x1b[Kmlaa: " + (WorkFile("in") / "missing.png").string() + ": ") !=
+    std::string::npos);
+  MLAA_CHECK(text.find("mlaa: 1 of 6 files failed") != std::string::npos);
+  MLAA_CHECK(text.find("mlaa: [") == std::string::npos);
+  MLAA_CHECK(Listing(out).size() == inputs.size());
+}
+
 // Files that cannot be read or written are reported by name; the others are done; the exit
 // status is 1; no temporary file is left; a library that crashes on one file fails only it.
 void BatchFailuresReported()
@@ -2442,6 +2526,7 @@ int main(int argc, char* argv[])
     { "crash-surfaced", CrashSurfaced },
     { "batch-same-as-single-files", BatchSameAsSingleFiles },
     { "batch-progress-lines", BatchProgressLines },
+    { "batch-progress-bar", BatchProgressBar },
     { "batch-failures-reported", BatchFailuresReported },
     { "batch-refusals", BatchRefusals },
     { "batch-memory-shared", BatchMemoryShared },
