@@ -13,13 +13,11 @@
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
-#include <climits>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <map>
 #include <set>
-#include <sstream>
 #include <thread>
 #include <utility>
 
@@ -284,7 +282,7 @@ std::vector<std::string> ExpandInputs(
       std::vector<int> numbers;
       std::vector<std::string> found;
       OIIO::Filesystem::scan_for_matching_filenames(pattern, numbers, found);
-      std::vector<std::pair<int, std::string>> frames_found;
+      std::vector<std::pair<int, std::string>> framesFound;
       for (size_t k = 0; k < found.size() && k < numbers.size(); ++k)
       {
         std::string name = found[k];
@@ -293,10 +291,10 @@ std::vector<std::string> ExpandInputs(
         {
           name = name.substr(2);
         }
-        frames_found.emplace_back(numbers[k], name);
+        framesFound.emplace_back(numbers[k], name);
       }
-      std::sort(frames_found.begin(), frames_found.end());
-      for (const auto& frame : frames_found)
+      std::sort(framesFound.begin(), framesFound.end());
+      for (const auto& frame : framesFound)
       {
         names.push_back(frame.second);
       }
