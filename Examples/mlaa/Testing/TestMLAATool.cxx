@@ -2215,6 +2215,22 @@ void BatchFailuresReported()
     MLAA_CHECK(line.compare(0, 6, "mlaa: ") == 0 && line.size() < 600);
   }
 
+  // DIR without write permission: every file fails, by name (root may write anywhere: not
+  // tried as root).
+  if (geteuid() != 0)
+  {
+    const fs::path readOnly = WorkFile("read-only");
+    fs::create_directory(readOnly);
+    fs::permissions(
+      readOnly, fs::perms::owner_read | fs::perms::owner_exec, fs::perm_options::replace);
+    const Run denied = RunTool({ "--output-dir", readOnly.string(), inputs[0].string(),
+      inputs[1].string() });
+    fs::permissions(readOnly, fs::perms::owner_all, fs::perm_options::replace);
+    MLAA_CHECK(denied.Status == Failure && Listing(readOnly).empty());
+    const std::vector<std::string> deniedLines = Lines(denied.Err);
+    MLAA_CHECK(deniedLines.size() == 3 && deniedLines.back() == "mlaa: 2 of 2 files failed");
+  }
+
   // A library that aborts, crashes or calls exit() on one file: that file is reported, the
   // others are written, and the tool does not hang.
   for (const char* how : { "abort", "segv", "exit" })
