@@ -2,6 +2,7 @@
  * mlaa: morphological antialiasing of image files.
  *
  *   mlaa [options] INPUT OUTPUT
+ *   mlaa [options] --output-dir DIR INPUT...
  *   mlaa --area-texture D OUTPUT
  *
  * Reads INPUT with OpenImageIO, antialiases it with vtkImageMLAA (Jimenez et al., "Practical
@@ -12,9 +13,11 @@
  * GetLumaFunctionFromString), with their defaults and ranges. `mlaa --help` says everything.
  *
  * Errors are reported as one line on stderr starting with "mlaa: ", with exit status 1 (2 for a
- * bad command line); OUTPUT is then left as it was (see WriteImageFile).
+ * bad command line); OUTPUT is then left as it was (see WriteImageFile). With --output-dir, each
+ * INPUT is processed as if alone, in a process of its own (mlaaBatch.h).
  */
 
+#include "mlaaBatch.h"
 #include "mlaaCrashReport.h"
 #include "mlaaImageFile.h"
 
@@ -31,6 +34,7 @@
 #include "vtkMLAAOptions.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkStringOutputWindow.h"
 
@@ -50,11 +54,7 @@ constexpr int ExitFailure = 1;
 constexpr int ExitUsage = 2;
 
 /** A bad command line: reported like any error, with exit status 2. */
-class UsageError : public mlaa::Error
-{
-public:
-  using mlaa::Error::Error;
-};
+using UsageError = mlaa::UsageError;
 
 //------------------------------------------------------------------------------
 // Option names and help
@@ -181,6 +181,7 @@ void PrintUsage(std::ostream& os)
   { PrintWrapped(os, "  " + name, column, text.str()); };
 
   os << "Usage: mlaa [options] INPUT OUTPUT\n"
+        "       mlaa [options] --output-dir DIR INPUT...\n"
         "       mlaa --area-texture D OUTPUT\n"
         "\n";
   PrintWrapped(os, "", 0,
@@ -347,8 +348,36 @@ void PrintUsage(std::ostream& os)
   text << "The largest image, in pixels (width x height), that INPUT and the depth image may "
           "be; checked from the file's header before anything is allocated. Default: what "
           "fits in half of the memory available now (about "
-       << mlaa::DefaultMaxPixels(4, OIIO::TypeDesc::UINT8) << " RGBA 8-bit pixels).";
+       << mlaa::DefaultMaxPixels(4, OIIO::TypeDesc::UINT8)
+       << " RGBA 8-bit pixels), shared by the files a batch processes at the same time.";
   option("--max-pixels N", text);
+
+  text.str("");
+  text << "Batch: antialias every INPUT into the existing directory DIR, each output with its "
+          "input's file name and format. Files are processed side by side on every core, each "
+          "exactly as alone; one that fails is reported and the others go on. Refused if an "
+          "output would replace an input, or two inputs have the same name. Default: off "
+          "(INPUT OUTPUT).";
+  option("--output-dir DIR", text);
+
+  text.str("");
+  text << "Batch: the frames of a numbered-sequence INPUT, in OpenImageIO's notation: 1-100, "
+          "1-100x2 (every second), 1,5,9. A sequence INPUT is a name that is not an existing "
+          "file and has a frame number pattern: %04d, # (four digits) or @ (one digit per @), "
+          "as in frame.%04d.png or frame.#.png; the range may also be part of the name "
+          "(frame.1-100#.png). Default: every existing file of the sequence.";
+  option("--frames RANGE", text);
+
+  text.str("");
+  text << "Batch: files processed at the same time. Default: the number of processors this "
+          "process may use ("
+       << mlaa::CountProcessors() << " here).";
+  option("--jobs N", text);
+
+  text.str("");
+  text << "Batch: no progress display (a bar on a terminal, else one line per file done); "
+          "warnings and errors still show. Default: off.";
+  option("-q, --quiet", text);
 
   text.str("");
   text << "Write the area texture of section 4.3.3 (Figure 4.2) to OUTPUT instead, for cells "
@@ -378,9 +407,9 @@ void PrintUsage(std::ostream& os)
     "channels) before it replaces OUTPUT.");
   os << "\n";
   PrintWrapped(os, "", 0,
-    "Exit status: 0 on success; 1 if reading, antialiasing or writing failed; 2 for a bad "
-    "command line. Errors are one line on stderr, \"mlaa: FILE: what went wrong\". If a "
-    "library crashes, a line saying so and what the library printed are shown, and no "
+    "Exit status: 0 on success; 1 if reading, antialiasing or writing failed (in a batch: "
+    "any file); 2 for a bad command line. Errors are one line on stderr, \"mlaa: FILE: what "
+    "went wrong\". If a library crashes, a line saying so and what the library printed are shown, and no "
     "temporary file is left behind.");
 }
 
@@ -428,6 +457,13 @@ struct CommandLine
   std::vector<std::string> MLAAOnly;      // of those, the ones only MLAA takes
   std::vector<std::string> DLAAOnly;      // of those, the ones only DLAA takes
   std::vector<std::string> Files;
+  // Batch mode (--output-dir).
+  bool Batch = false;
+  std::string OutputDirectory;
+  std::string Frames;
+  int Jobs = 0; // 0: one per processor
+  bool Quiet = false;
+  std::vector<std::string> BatchOnly; // the batch options given
 };
 
 bool ParseDouble(const std::string& text, double& value)
@@ -737,6 +773,48 @@ void ParseCommandLine(const std::vector<std::string>& args, CommandLine& cl)
       cl.MaxPixels = value;
       continue; // not a filter option
     }
+    else if (name == "--output-dir")
+    {
+      cl.OutputDirectory = takeValues(1)[0];
+      if (cl.OutputDirectory.empty())
+      {
+        throw UsageError("--output-dir needs a directory name");
+      }
+      cl.Batch = true;
+      continue; // not a filter option
+    }
+    else if (name == "--frames")
+    {
+      cl.Frames = takeValues(1)[0];
+      if (cl.Frames.empty())
+      {
+        throw UsageError("--frames needs a frame range");
+      }
+      cl.BatchOnly.push_back(name);
+      continue;
+    }
+    else if (name == "--jobs")
+    {
+      const std::string text = takeValues(1)[0];
+      long value;
+      if (!ParseInt(text, value) || value < 1 || value > 1024)
+      {
+        throw UsageError("--jobs: '" + text + "' is not an integer in [1, 1024]");
+      }
+      cl.Jobs = static_cast<int>(value);
+      cl.BatchOnly.push_back(name);
+      continue;
+    }
+    else if (name == "--quiet" || name == "-q")
+    {
+      if (hasInlineValue)
+      {
+        throw UsageError(name + " takes no value");
+      }
+      cl.Quiet = true;
+      cl.BatchOnly.push_back(name);
+      continue;
+    }
     else if (name == "--area-texture")
     {
       const std::string text = takeValues(1)[0];
@@ -769,8 +847,16 @@ void ParseCommandLine(const std::vector<std::string>& args, CommandLine& cl)
   }
 
   // What goes with what.
+  if (!cl.Batch && !cl.BatchOnly.empty())
+  {
+    throw UsageError(cl.BatchOnly.front() + " is an option of batches: add --output-dir DIR");
+  }
   if (cl.AreaTextureCellSize)
   {
+    if (cl.Batch)
+    {
+      throw UsageError("--area-texture cannot be combined with --output-dir");
+    }
     if (!cl.FilterOptions.empty())
     {
       throw UsageError("--area-texture cannot be combined with " + cl.FilterOptions.front());
@@ -782,15 +868,27 @@ void ParseCommandLine(const std::vector<std::string>& args, CommandLine& cl)
     }
     return;
   }
-  if (cl.Files.empty())
+  if (cl.Batch)
+  {
+    if (cl.Files.empty())
+    {
+      throw UsageError("missing INPUT: --output-dir needs at least one");
+    }
+    if (!cl.DepthImage.empty())
+    {
+      throw UsageError("--depth-image cannot be used with --output-dir (one depth image "
+                       "cannot belong to several inputs)");
+    }
+  }
+  else if (cl.Files.empty())
   {
     throw UsageError("missing INPUT and OUTPUT");
   }
-  if (cl.Files.size() == 1)
+  else if (cl.Files.size() == 1)
   {
     throw UsageError("missing OUTPUT");
   }
-  if (cl.Files.size() > 2)
+  else if (cl.Files.size() > 2)
   {
     throw UsageError("unexpected argument '" + cl.Files[2] + "'");
   }
@@ -958,10 +1056,8 @@ bool MeasureValueRange(vtkImageData* image, double range[2])
   return true;
 }
 
-void Antialias(const CommandLine& cl)
+void Antialias(const CommandLine& cl, const std::string& inputPath, const std::string& outputPath)
 {
-  const std::string& inputPath = cl.Files[0];
-  const std::string& outputPath = cl.Files[1];
   const mlaa::ImageFile input = mlaa::ReadImageFile(inputPath, cl.MaxPixels);
   if (!input.Warning.empty())
   {
@@ -1069,6 +1165,73 @@ void Antialias(const CommandLine& cl)
     std::cerr << "mlaa: warning: " << mlaa::Printable(note, 600) << std::endl;
   }
 }
+
+/**
+ * Builds, once, what every file of a batch shares, so that the processes forked for the files
+ * find it made: vtkImageMLAA's area tables (built on first use and cached for the process) by
+ * antialiasing a small staircase with the batch's options, and OpenImageIO's catalogue of
+ * formats. The filter runs on VTK's Sequential backend: no thread may exist when the batch
+ * forks (the TBB backend starts worker threads, which a child would not have); the children
+ * return to `backend`.
+ */
+void PrepareBatch(const CommandLine& cl, std::string& backend)
+{
+  backend = vtkSMPTools::GetBackend();
+  vtkSMPTools::SetBackend("Sequential");
+  if (cl.Method == MethodMLAA)
+  {
+    vtkNew<vtkImageData> staircase;
+    staircase->SetDimensions(16, 16, 1);
+    staircase->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+    auto* pixels = static_cast<unsigned char*>(staircase->GetScalarPointer());
+    for (int y = 0; y < 16; ++y)
+    {
+      for (int x = 0; x < 16; ++x)
+      {
+        std::fill_n(pixels + 3 * (16 * y + x), 3, static_cast<unsigned char>(3 * y < x ? 255 : 0));
+      }
+    }
+    vtkNew<vtkImageMLAA> filter;
+    filter->SetOptions(cl.Options);
+    filter->SetInputData(staircase);
+    VTKMessages messages(filter); // keeps anything it says off the terminal
+    filter->Update();
+  }
+  OIIO::get_string_attribute("extension_list");
+}
+
+int AntialiasBatch(const CommandLine& cl)
+{
+  const std::vector<mlaa::BatchFile> files =
+    mlaa::PlanBatch(mlaa::ExpandInputs(cl.Files, cl.Frames), cl.OutputDirectory);
+  const int processors = mlaa::CountProcessors();
+  mlaa::BatchSettings settings;
+  settings.Jobs = std::min<long>(cl.Jobs > 0 ? cl.Jobs : processors, files.size());
+  settings.Quiet = cl.Quiet;
+  // The processors shared out between the files in flight, for VTK's and OpenImageIO's threads.
+  const int threads = std::max(1, processors / settings.Jobs);
+  mlaa::SetImagesInFlight(settings.Jobs);
+  std::string backend;
+  PrepareBatch(cl, backend);
+  settings.ProcessFile = [&](const mlaa::BatchFile& file)
+  {
+    vtkSMPTools::SetBackend(backend.c_str());
+    vtkSMPTools::Initialize(threads);
+    OIIO::attribute("threads", threads);
+    try
+    {
+      Antialias(cl, file.Input, file.Output);
+      return EXIT_SUCCESS;
+    }
+    catch (const std::exception& e)
+    {
+      std::cerr << "mlaa: " << mlaa::Printable(e.what(), 400) << std::endl;
+      OIIO::geterror();
+      return ExitFailure;
+    }
+  };
+  return mlaa::RunBatch(files, settings) > 0 ? ExitFailure : EXIT_SUCCESS;
+}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -1089,9 +1252,13 @@ int main(int argc, char* argv[])
     {
       WriteAreaTexture(cl.AreaTextureCellSize, cl.Files[0]);
     }
+    else if (cl.Batch)
+    {
+      status = AntialiasBatch(cl);
+    }
     else
     {
-      Antialias(cl);
+      Antialias(cl, cl.Files[0], cl.Files[1]);
     }
   }
   catch (const UsageError& e)

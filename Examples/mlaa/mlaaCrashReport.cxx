@@ -2,6 +2,8 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -22,6 +24,10 @@ volatile sig_atomic_t ActiveCaptureFd = -1; // the file stderr goes to while cap
 char Doing[1024];                     // "mlaa: FILE: crashed while DOING", or ""
 char TemporaryOutput[4096];           // the temporary output to remove, or ""
 volatile sig_atomic_t Reported = 0;
+// The processes a batch runs files in (0: a free slot), stopped and waited for on Ctrl-C.
+constexpr int MaxChildren = 1024;
+volatile sig_atomic_t Children[MaxChildren];
+volatile sig_atomic_t InChildProcess = 0; // a process forked for one file of a batch
 
 const int FatalSignals[] = { SIGABRT, SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGSYS };
 const int CleanupSignals[] = { SIGINT, SIGTERM, SIGHUP, SIGQUIT };
@@ -173,6 +179,25 @@ void OnFatalSignal(int sig, siginfo_t* info, void*)
 
 void OnCleanupSignal(int sig)
 {
+  // A batch's children get the signal too and remove their own temporary outputs; waiting for
+  // them means none is left once this process is gone.
+  for (int i = 0; i < MaxChildren; ++i)
+  {
+    if (Children[i] > 0)
+    {
+      kill(static_cast<pid_t>(Children[i]), sig);
+    }
+  }
+  for (int i = 0; i < MaxChildren; ++i)
+  {
+    if (Children[i] > 0)
+    {
+      while (waitpid(static_cast<pid_t>(Children[i]), nullptr, 0) < 0 && errno == EINTR)
+      {
+      }
+      Children[i] = 0;
+    }
+  }
   if (TemporaryOutput[0])
   {
     unlink(TemporaryOutput);
@@ -198,6 +223,13 @@ void OnExit()
   {
     unlink(TemporaryOutput);
     TemporaryOutput[0] = '\0';
+  }
+  // In a batch's child, what exit() would run next belongs to the parent: the destructors of
+  // its static objects, among them a logging library's that joins threads only the parent has
+  // (log4cplus, loaded with OpenImageIO's DICOM support), which would wait forever.
+  if (InChildProcess)
+  {
+    _exit(1);
   }
 }
 
@@ -256,24 +288,77 @@ void SetTemporaryOutput(const char* path)
   CopyInto(TemporaryOutput, sizeof(TemporaryOutput), path ? path : "");
 }
 
-//------------------------------------------------------------------------------
-CapturedStderr::CapturedStderr(const std::string& file, const std::string& doing)
+void AddChildProcess(int pid)
 {
-  std::fflush(stderr);
-  CopyInto(Doing, sizeof(Doing), "mlaa: " + file + ": crashed while " + doing);
+  for (int i = 0; i < MaxChildren; ++i)
+  {
+    if (Children[i] == 0)
+    {
+      Children[i] = pid;
+      return;
+    }
+  }
+}
+
+void RemoveChildProcess(int pid)
+{
+  for (int i = 0; i < MaxChildren; ++i)
+  {
+    if (Children[i] == pid)
+    {
+      Children[i] = 0;
+    }
+  }
+}
+
+void BeginChildProcess(int stderrFd, int parentPid)
+{
+  InChildProcess = 1;
+  for (int i = 0; i < MaxChildren; ++i)
+  {
+    Children[i] = 0;
+  }
+  // Stopped with SIGTERM (whose handler removes the temporary output) if the parent dies
+  // first, however it dies; and if it is already gone, stop now.
+  prctl(PR_SET_PDEATHSIG, SIGTERM);
+  if (getppid() != parentPid)
+  {
+    raise(SIGTERM);
+  }
+  if (stderrFd >= 0 && dup2(stderrFd, STDERR_FILENO) >= 0)
+  {
+    close(stderrFd);
+    if (RealStderr >= 0)
+    {
+      close(RealStderr);
+    }
+    RealStderr = fcntl(STDERR_FILENO, F_DUPFD_CLOEXEC, 3);
+  }
+}
+
+int CreateAnonymousFile()
+{
   // O_TMPFILE: a file without a name, gone with the process whatever happens.
   const char* directory = std::getenv("TMPDIR");
-  this->CaptureFd = open(directory && *directory ? directory : "/tmp",
-    O_TMPFILE | O_RDWR | O_CLOEXEC, 0600);
-  if (this->CaptureFd < 0)
+  int fd = open(directory && *directory ? directory : "/tmp", O_TMPFILE | O_RDWR | O_CLOEXEC, 0600);
+  if (fd < 0)
   {
     std::FILE* file = std::tmpfile();
-    this->CaptureFd = file ? fcntl(fileno(file), F_DUPFD_CLOEXEC, 3) : -1;
+    fd = file ? fcntl(fileno(file), F_DUPFD_CLOEXEC, 3) : -1;
     if (file)
     {
       std::fclose(file);
     }
   }
+  return fd;
+}
+
+//------------------------------------------------------------------------------
+CapturedStderr::CapturedStderr(const std::string& file, const std::string& doing)
+{
+  std::fflush(stderr);
+  CopyInto(Doing, sizeof(Doing), "mlaa: " + file + ": crashed while " + doing);
+  this->CaptureFd = CreateAnonymousFile();
   this->SavedStderr = this->CaptureFd >= 0 ? fcntl(STDERR_FILENO, F_DUPFD_CLOEXEC, 3) : -1;
   if (this->SavedStderr < 0 || dup2(this->CaptureFd, STDERR_FILENO) < 0)
   {

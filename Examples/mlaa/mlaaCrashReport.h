@@ -17,7 +17,9 @@
  *   callback, which does the same (the report itself is then part of what was captured);
  * - exit() called by a library (libjpeg's default error handler does that) runs an atexit
  *   handler that does the same;
- * - SIGINT, SIGTERM, SIGHUP and SIGQUIT remove the temporary output before the default action.
+ * - SIGINT, SIGTERM, SIGHUP and SIGQUIT remove the temporary output before the default action;
+ *   in a batch (mlaaBatch.h), the parent first passes the signal on to the processes it runs the
+ *   files in, which remove their own, and waits for them.
  *
  * A file rather than a pipe holds the messages because nothing has to drain it: a pipe needs a
  * reader thread, which dies with the process at the very moment its buffer matters, and a full
@@ -59,6 +61,26 @@ private:
 
 /** The temporary output file to remove if the process dies ("" or nullptr: none). */
 void SetTemporaryOutput(const char* path);
+
+///@{
+/**
+ * A batch's child processes: a cleanup signal (SIGINT, SIGTERM, SIGHUP, SIGQUIT) that reaches
+ * this process is sent on to each of them and waited for before this process goes (up to 1024
+ * at a time). Block those signals from before fork() until the child is added.
+ */
+void AddChildProcess(int pid);
+void RemoveChildProcess(int pid);
+///@}
+
+/**
+ * In a child process just forked for one file of a batch: forgets the parent's children, makes
+ * `stderrFd` the process's stderr (also for crash reports) and asks for SIGTERM should the
+ * parent (`parentPid`) die first, so that nothing goes on writing after it.
+ */
+void BeginChildProcess(int stderrFd, int parentPid);
+
+/** A new read-write file without a name in $TMPDIR or /tmp (close-on-exec), or -1. */
+int CreateAnonymousFile();
 } // namespace mlaa
 
 #endif

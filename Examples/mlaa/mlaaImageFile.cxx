@@ -333,6 +333,17 @@ std::string Printable(const std::string& text, size_t maxLength, bool joinLines)
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+int ImagesInFlight = 1; // SetImagesInFlight
+}
+
+void SetImagesInFlight(int count)
+{
+  ImagesInFlight = std::max(1, count);
+}
+
+//------------------------------------------------------------------------------
 std::uint64_t DefaultMaxPixels(int channels, OIIO::TypeDesc type)
 {
   // Bytes per pixel: the input and the output images, a double copy of floating-point values
@@ -356,7 +367,7 @@ std::uint64_t DefaultMaxPixels(int channels, OIIO::TypeDesc type)
   {
     return std::uint64_t(1) << 28;
   }
-  return kilobytes * 1024 / 2 / perPixel;
+  return kilobytes * 1024 / 2 / static_cast<std::uint64_t>(ImagesInFlight) / perPixel;
 }
 
 //------------------------------------------------------------------------------
@@ -511,12 +522,23 @@ const char* ChannelWord(int channels)
 }
 
 // For tests only: MLAA_TEST_CRASH_WHILE_WRITING=abort|segv|exit makes the tool fail as a library
-// would, after a library message, while it writes, so that the tests can see a crash reported.
-void SimulateLibraryCrashForTests()
+// would, after a library message, while it writes `path`, so that the tests can see a crash
+// reported; =sleep makes it wait there (up to a minute) for a signal. With
+// MLAA_TEST_CRASH_ONLY=TEXT, only outputs whose name contains TEXT (one file of a batch).
+void SimulateLibraryCrashForTests(const std::string& path)
 {
   const char* crash = std::getenv("MLAA_TEST_CRASH_WHILE_WRITING");
-  if (!crash || !*crash)
+  const char* only = std::getenv("MLAA_TEST_CRASH_ONLY");
+  if (!crash || !*crash || (only && *only && path.find(only) == std::string::npos))
   {
+    return;
+  }
+  if (std::strcmp(crash, "sleep") == 0)
+  {
+    for (int second = 0; second < 60; ++second)
+    {
+      sleep(1);
+    }
     return;
   }
   std::fprintf(stderr, "simulated library message before a crash\n");
@@ -599,8 +621,11 @@ ImageFile ReadImageFile(const std::string& path, std::uint64_t maxPixels)
       std::to_string(spec.height) + " = " + std::to_string(pixels) + " pixels, more than " +
       (pixels > hardLimit ? "the tool can hold (" + std::to_string(hardLimit) + ")"
                           : defaultLimit
-            ? "the " + std::to_string(limit) +
-              " that fit in half of the available memory (--max-pixels N raises the limit)"
+            ? "the " + std::to_string(limit) + " that fit in half of the available memory" +
+              (ImagesInFlight > 1
+                  ? " shared by " + std::to_string(ImagesInFlight) + " files at a time"
+                  : std::string()) +
+              " (--max-pixels N raises the limit)"
             : "--max-pixels " + std::to_string(limit)));
   }
 
@@ -733,7 +758,7 @@ std::string WriteImageFile(vtkImageData* image, const std::string& path,
     throw Error(what + OneLine(error + "\n" + messages.Finish()));
   }
   const OIIO::TypeDesc writtenType = output->spec().format;
-  SimulateLibraryCrashForTests();
+  SimulateLibraryCrashForTests(path);
 
   // Floating-point pixels in an integer format: OpenImageIO maps [0, 1] to the whole integer
   // range; map the value range there instead.

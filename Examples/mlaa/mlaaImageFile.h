@@ -56,9 +56,17 @@ std::string Printable(const std::string& text, size_t maxLength = 300, bool join
 /**
  * The largest image, in pixels, that reading `channels` channels of `type` may allocate by
  * default: what the tool would hold of it (input, output, the filter's buffers) must fit in half
- * of the memory the kernel says is available (MemAvailable); 2^28 pixels if that is unknown.
+ * of the memory the kernel says is available (MemAvailable), divided between the images in
+ * flight (SetImagesInFlight); 2^28 pixels if that is unknown.
  */
 std::uint64_t DefaultMaxPixels(int channels, OIIO::TypeDesc type);
+
+/**
+ * How many images are read at the same time (a batch's --jobs; default 1): the default size
+ * limit gives each its share of the memory, so that as many hostile headers at once cannot
+ * take more than one could.
+ */
+void SetImagesInFlight(int count);
 
 /** An image read from a file. */
 struct ImageFile
