@@ -38,6 +38,7 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 extern char** environ;
@@ -210,6 +211,36 @@ int FileTexel(const fs::path& path, int column, int row, int channel)
 //------------------------------------------------------------------------------
 // Running the tool
 
+// The argv and envp arrays of posix_spawn: a command, and the given variables ahead of this
+// process's own environment. The arrays point into the object's strings, so it is not copied.
+struct SpawnVectors
+{
+  SpawnVectors(std::vector<std::string> command, std::vector<std::string> variables)
+    : Command(std::move(command))
+    , Variables(std::move(variables))
+  {
+    for (std::string& arg : this->Command)
+    {
+      this->Argv.push_back(&arg[0]);
+    }
+    this->Argv.push_back(nullptr);
+    for (std::string& variable : this->Variables)
+    {
+      this->Envp.push_back(&variable[0]);
+    }
+    for (char** e = environ; *e; ++e)
+    {
+      this->Envp.push_back(*e);
+    }
+    this->Envp.push_back(nullptr);
+  }
+  SpawnVectors(const SpawnVectors&) = delete;
+  SpawnVectors& operator=(const SpawnVectors&) = delete;
+
+  std::vector<std::string> Command, Variables;
+  std::vector<char*> Argv, Envp;
+};
+
 struct Run
 {
   int Status = -1;
@@ -236,23 +267,7 @@ Run RunTool(const std::vector<std::string>& args,
     &actions, 2, errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   std::vector<std::string> command = { Where().Tool };
   command.insert(command.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (std::string& arg : command)
-  {
-    argv.push_back(&arg[0]);
-  }
-  argv.push_back(nullptr);
-  std::vector<std::string> variables = environment;
-  std::vector<char*> envp;
-  for (std::string& variable : variables)
-  {
-    envp.push_back(&variable[0]);
-  }
-  for (char** e = environ; *e; ++e)
-  {
-    envp.push_back(*e);
-  }
-  envp.push_back(nullptr);
+  const SpawnVectors spawn(command, environment);
 
   if (!quiet)
   {
@@ -266,7 +281,8 @@ Run RunTool(const std::vector<std::string>& args,
 
   Run run;
   pid_t pid;
-  if (posix_spawn(&pid, command[0].c_str(), &actions, nullptr, argv.data(), envp.data()) != 0)
+  if (posix_spawn(&pid, command[0].c_str(), &actions, nullptr, spawn.Argv.data(),
+        spawn.Envp.data()) != 0)
   {
     posix_spawn_file_actions_destroy(&actions);
     throw std::runtime_error("cannot run " + command[0]);
@@ -2419,23 +2435,7 @@ void BatchInterrupted()
       out.string() };
     const std::vector<std::string> names = Strings(inputs);
     command.insert(command.end(), names.begin(), names.end());
-    std::vector<char*> argv;
-    for (std::string& arg : command)
-    {
-      argv.push_back(&arg[0]);
-    }
-    argv.push_back(nullptr);
-    std::vector<std::string> variables = { "MLAA_TEST_CRASH_WHILE_WRITING=sleep" };
-    std::vector<char*> envp;
-    for (std::string& variable : variables)
-    {
-      envp.push_back(&variable[0]);
-    }
-    for (char** e = environ; *e; ++e)
-    {
-      envp.push_back(*e);
-    }
-    envp.push_back(nullptr);
+    const SpawnVectors spawn(command, { "MLAA_TEST_CRASH_WHILE_WRITING=sleep" });
     posix_spawnattr_t attributes;
     posix_spawnattr_init(&attributes);
     if (group)
@@ -2448,7 +2448,8 @@ void BatchInterrupted()
               << (sig == SIGINT ? "SIGINT" : "SIGTERM") << (group ? " to its group" : "")
               << std::endl;
     const int spawned =
-      posix_spawn(&pid, command[0].c_str(), nullptr, &attributes, argv.data(), envp.data());
+      posix_spawn(&pid, command[0].c_str(), nullptr, &attributes, spawn.Argv.data(),
+        spawn.Envp.data());
     posix_spawnattr_destroy(&attributes);
     if (!MLAA_CHECK(spawned == 0))
     {
