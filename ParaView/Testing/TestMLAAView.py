@@ -119,3 +119,29 @@ t.check(np.any(fxaa_only != off), "FXAA applies when MLAA is off")
 view.UseFXAA = 0
 _, plain_again = screenshot("mlaa-off-again.png")
 t.check(np.array_equal(plain_again, off), "UseMLAA off gives the plain image again")
+
+# A screenshot with a transparent background (under IceT the pass sees the composited image over
+# transparent black): the background stays transparent, and the antialiased silhouette has no
+# halo. Composited over black and over white, every partly transparent pixel lies between the
+# object's colour and that backdrop (within 2/255): no fringe of the background colour or of
+# black. Only the orange sphere: its colour alone borders the background.
+for source in list(GetSources().values()):
+    Hide(source, view)
+alone = Show(sphere, view)
+view.UseMLAA = 1
+path = os.path.join(args.output_dir, "mlaa-transparent.png")
+SaveScreenshot(path, view, ImageResolution=size, TransparentBackground=1)
+rgba = t.read_png(path).astype(np.float64)
+t.check(rgba.shape[2] == 4 and rgba[0, 0, 3] == 0 and rgba[-1, -1, 3] == 0,
+        "the background stays transparent with MLAA on")
+alpha = rgba[:, :, 3:4] / 255.0
+partial = (alpha[:, :, 0] > 0) & (alpha[:, :, 0] < 1)
+t.check(partial.sum() > 100, "%d silhouette pixels are partly transparent" % partial.sum())
+colour = np.array([0.9, 0.6, 0.1]) * 255.0
+for backdrop in (0.0, 255.0):
+    composite = rgba[:, :, :3] * alpha + backdrop * (1.0 - alpha)
+    low = np.minimum(colour, backdrop) - 2.0
+    high = np.maximum(colour, backdrop) + 2.0
+    outside = np.any((composite < low) | (composite > high), axis=2) & partial
+    t.check(not outside.any(), "over %s, no halo: %d pixels outside the object's colour and the "
+            "backdrop" % ("black" if backdrop == 0 else "white", outside.sum()))
