@@ -67,7 +67,11 @@ download_dir="$(mktemp -d)"
 trap 'rm -rf "$download_dir"' EXIT
 # apt-get download drops its rights to the _apt user, which must be able to write there.
 chmod 777 "$download_dir"
-(cd "$download_dir" && apt-get download "python3-paraview=$version")
+# (With package lists older than the installed paraview, the download fails: update them once.)
+if ! (cd "$download_dir" && apt-get download "python3-paraview=$version"); then
+  "${sudo[@]}" apt-get update
+  (cd "$download_dir" && apt-get download "python3-paraview=$version")
+fi
 dpkg-deb -x "$download_dir"/python3-paraview_*.deb "$private_dir"
 python_dir="$(cd "$private_dir/usr/lib/python3/dist-packages" && pwd)"
 
