@@ -37,15 +37,9 @@ int main(int argc, char* argv[])
   // 2. Antialias. The defaults are the `high` preset; a preset sets every quality option.
   vtkNew<vtkImageMLAA> mlaa;
   mlaa->SetInputConnection(reader->GetOutputPort());
-  if (argc == 5)
+  if (argc == 5 && !gallery::SetPreset(mlaa->GetOptions(), argv[4]))
   {
-    const int preset = vtkMLAAOptions::GetPresetFromString(argv[4]);
-    if (preset < 0)
-    {
-      std::cerr << argv[4] << ": not a preset (low, medium, high, ultra)\n";
-      return 2;
-    }
-    mlaa->GetOptions()->SetPreset(preset);
+    return 2;
   }
 
   // 3. Write, in the format the output's extension names (GalleryImageFiles.h: through a

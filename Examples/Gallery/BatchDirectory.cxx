@@ -51,15 +51,9 @@ int main(int argc, char* argv[])
 
   // One filter for all files: its options (and the area texture they select) are set up once.
   vtkNew<vtkImageMLAA> mlaa;
-  if (argc == 5)
+  if (argc == 5 && !gallery::SetPreset(mlaa->GetOptions(), argv[4]))
   {
-    const int preset = vtkMLAAOptions::GetPresetFromString(argv[4]);
-    if (preset < 0)
-    {
-      std::cerr << argv[4] << ": not a preset (low, medium, high, ultra)\n";
-      return 2;
-    }
-    mlaa->GetOptions()->SetPreset(preset);
+    return 2;
   }
   gallery::ErrorCounter errors;
   errors.Watch(mlaa);

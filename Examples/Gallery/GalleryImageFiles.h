@@ -1,6 +1,7 @@
-// Reading and writing image files with VTK's own readers and writers, for the gallery examples
-// that antialias files (AntialiasImage.cxx, BatchDirectory.cxx). The `mlaa` tool does this with
-// OpenImageIO instead, for more formats and hostile files.
+// What the gallery examples that antialias files share (AntialiasImage.cxx, BatchDirectory.cxx):
+// reading and writing image files with VTK's own readers and writers, and the --preset
+// argument. The `mlaa` tool reads and writes with OpenImageIO instead, for more formats and
+// hostile files.
 #ifndef GalleryImageFiles_h
 #define GalleryImageFiles_h
 
@@ -12,6 +13,7 @@
 #include "vtkImageReader2Factory.h"
 #include "vtkImageWriter.h"
 #include "vtkJPEGWriter.h"
+#include "vtkMLAAOptions.h"
 #include "vtkPNGWriter.h"
 #include "vtkPNMWriter.h"
 #include "vtkSmartPointer.h"
@@ -23,6 +25,20 @@
 
 namespace gallery
 {
+// Applies the preset `name` (low, medium, high, ultra) to `options`; false (and a message) for
+// an unknown name.
+inline bool SetPreset(vtkMLAAOptions* options, const char* name)
+{
+  const int preset = vtkMLAAOptions::GetPresetFromString(name);
+  if (preset < 0)
+  {
+    std::cerr << name << ": not a preset (low, medium, high, ultra)\n";
+    return false;
+  }
+  options->SetPreset(preset);
+  return true;
+}
+
 // The reader that recognises the file's contents (PNG, JPEG, BMP, PNM, ...) and its extension,
 // or null. Both, because some readers cannot tell their format from the contents (a TGA file
 // has no signature, so VTK's TGA reader claims any file).
