@@ -162,22 +162,12 @@ inline vtkSmartPointer<vtkMLAAOptions> MediumOptions()
   return options;
 }
 
-// vtkImageDLAA on `input` with `options`, or with the default vtkDLAAOptions.
-inline vtkSmartPointer<vtkImageData> RunDLAA(vtkImageData* input, vtkDLAAOptions* options = nullptr)
+// A new `Filter` (vtkImageMLAA or vtkImageDLAA) on `input` with `options`, or with the
+// library's defaults when null: a copy of its output.
+template <class Filter, class Options>
+vtkSmartPointer<vtkImageData> RunFilter(vtkImageData* input, Options* options)
 {
-  vtkNew<vtkImageDLAA> filter;
-  filter->SetOptions(options);
-  filter->SetInputData(input);
-  filter->Update();
-  auto output = vtkSmartPointer<vtkImageData>::New();
-  output->DeepCopy(filter->GetOutput());
-  return output;
-}
-
-// vtkImageMLAA on `input` with `options`, or with the library's defaults.
-inline vtkSmartPointer<vtkImageData> RunMLAA(vtkImageData* input, vtkMLAAOptions* options = nullptr)
-{
-  vtkNew<vtkImageMLAA> filter;
+  vtkNew<Filter> filter;
   if (options)
   {
     filter->SetOptions(options);
@@ -187,6 +177,18 @@ inline vtkSmartPointer<vtkImageData> RunMLAA(vtkImageData* input, vtkMLAAOptions
   auto output = vtkSmartPointer<vtkImageData>::New();
   output->DeepCopy(filter->GetOutput());
   return output;
+}
+
+// vtkImageDLAA on `input` with `options`, or with the default vtkDLAAOptions.
+inline vtkSmartPointer<vtkImageData> RunDLAA(vtkImageData* input, vtkDLAAOptions* options = nullptr)
+{
+  return RunFilter<vtkImageDLAA>(input, options);
+}
+
+// vtkImageMLAA on `input` with `options`, or with the library's defaults.
+inline vtkSmartPointer<vtkImageData> RunMLAA(vtkImageData* input, vtkMLAAOptions* options = nullptr)
+{
+  return RunFilter<vtkImageMLAA>(input, options);
 }
 
 // Strict comparison: the number of values (all components) whose absolute difference exceeds

@@ -124,15 +124,7 @@ void NonFinite()
         const bool inside = y < 10 + x / 20 || (x > 60 && y < 2 * x - 100);
         return k == 3 ? 1.0 : (inside ? 0.9 - 0.2 * k : 0.1 + 0.1 * k);
       });
-      const auto cleanOut = [&]() {
-        vtkNew<vtkImageDLAA> filter;
-        filter->SetOptions(options);
-        filter->SetInputData(clean);
-        filter->Update();
-        auto out = vtkSmartPointer<vtkImageData>::New();
-        out->DeepCopy(filter->GetOutput());
-        return out;
-      }();
+      const auto cleanOut = RunDLAA(clean, options);
       for (int b = 0; b < 3; ++b)
       {
         // One non-finite pixel on the ramp of the long edge (row 11 near x = 40), in one

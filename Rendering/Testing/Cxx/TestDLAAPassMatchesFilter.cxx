@@ -16,17 +16,6 @@ using namespace vtkMLAATest;
 
 namespace
 {
-vtkSmartPointer<vtkImageData> RunDLAA(vtkImageData* input, vtkDLAAOptions* options)
-{
-  vtkNew<vtkImageDLAA> filter;
-  filter->SetOptions(options);
-  filter->SetInputData(input);
-  filter->Update();
-  auto output = vtkSmartPointer<vtkImageData>::New();
-  output->DeepCopy(filter->GetOutput());
-  return output;
-}
-
 double worstShare = 1.0;
 std::string worstCase;
 
