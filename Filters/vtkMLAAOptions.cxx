@@ -117,14 +117,24 @@ void vtkMLAAOptions::DeepCopy(vtkMLAAOptions* other)
   {
     return;
   }
+  this->CopyQualitySettings(other);
+  this->SetDebugOutput(other->DebugOutput);
+  this->SetPremultipliedAlpha(other->PremultipliedAlpha);
+}
+
+//------------------------------------------------------------------------------
+void vtkMLAAOptions::CopyQualitySettings(vtkMLAAOptions* other)
+{
+  if (!other || other == this)
+  {
+    return;
+  }
   this->SetThreshold(other->Threshold);
   this->SetLocalContrastFactor(other->LocalContrastFactor);
   this->SetEdgeDetection(other->EdgeDetection);
   this->SetMaxSearchSteps(other->MaxSearchSteps);
-  this->SetDebugOutput(other->DebugOutput);
   this->SetDiagonalDetection(other->DiagonalDetection);
   this->SetDominantDirectionBlending(other->DominantDirectionBlending);
-  this->SetPremultipliedAlpha(other->PremultipliedAlpha);
   this->SetReconstruction(other->Reconstruction);
 }
 

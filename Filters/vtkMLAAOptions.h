@@ -286,6 +286,13 @@ public:
   void DeepCopy(vtkMLAAOptions* other);
 
   /**
+   * Copy the quality settings of another instance, the ones a preset sets (Threshold,
+   * LocalContrastFactor, EdgeDetection, MaxSearchSteps, DiagonalDetection,
+   * DominantDirectionBlending, Reconstruction), and leave PremultipliedAlpha and DebugOutput.
+   */
+  void CopyQualitySettings(vtkMLAAOptions* other);
+
+  /**
    * For the classes that own options (vtkImageMLAA, vtkOpenGLMLAAPass), whose options are never
    * null: make `member` refer to `options` (registered to `owner`), or to a fresh default object
    * when `options` is null, releasing the previous one. Returns true when `member` changed.

@@ -91,6 +91,18 @@ int TestMLAAOptions(int, char*[])
   copy->DeepCopy(options);
   CHECK(copy->GetReconstruction());
 
+  // CopyQualitySettings copies what a preset sets and leaves alpha and debug output alone.
+  vtkNew<vtkMLAAOptions> quality;
+  quality->PremultipliedAlphaOn();
+  quality->CopyQualitySettings(options);
+  CHECK(quality->GetThreshold() == 0.25 && quality->GetLocalContrastFactor() == 3.5);
+  CHECK(quality->GetEdgeDetection() == options->GetEdgeDetection());
+  CHECK(quality->GetMaxSearchSteps() == options->GetMaxSearchSteps());
+  CHECK(!quality->GetDiagonalDetection() && !quality->GetDominantDirectionBlending());
+  CHECK(quality->GetReconstruction());
+  CHECK(quality->GetPremultipliedAlpha() && !options->GetPremultipliedAlpha());
+  CHECK(quality->GetDebugOutput() == vtkMLAAOptions::NO_DEBUG_OUTPUT);
+
   // Presets set every quality setting and leave the data's settings alone; later settings
   // override them; the current settings are recognised as a preset or as custom.
   vtkNew<vtkMLAAOptions> preset;

@@ -83,13 +83,7 @@ void vtkPVMLAAOptions::UpdateEffectiveSettings()
 {
   // The setters only call Modified() when a value changes, so an update that changes nothing
   // leaves the filter's and the pass's results valid.
-  this->SetThreshold(this->Custom->GetThreshold());
-  this->SetLocalContrastFactor(this->Custom->GetLocalContrastFactor());
-  this->SetEdgeDetection(this->Custom->GetEdgeDetection());
-  this->SetMaxSearchSteps(this->Custom->GetMaxSearchSteps());
-  this->SetDiagonalDetection(this->Custom->GetDiagonalDetection());
-  this->SetDominantDirectionBlending(this->Custom->GetDominantDirectionBlending());
-  this->SetReconstruction(this->Custom->GetReconstruction());
+  this->CopyQualitySettings(this->Custom);
   if (this->QualityPreset != CUSTOM)
   {
     this->SetPreset(this->QualityPreset);
