@@ -96,12 +96,12 @@
  * Presets set every quality setting at once (Threshold, LocalContrastFactor, EdgeDetection,
  * MaxSearchSteps, DiagonalDetection, DominantDirectionBlending, Reconstruction), as SMAA's
  * quality presets do; PremultipliedAlpha and DebugOutput describe the data and the output and
- * are left as they are. Settings changed after a preset override it. The README lists what
- * each preset costs and gains, as measured by the project's benchmarks.
+ * are left as they are. Settings changed after a preset override it. docs/measurements.md lists
+ * what each preset costs and gains, as measured by the project's benchmarks.
  * - Low: luma, threshold 0.15, 4 steps, no diagonals.
  * - Medium: luma, threshold 0.1, 8 steps, diagonals (the chapter's edges and search length).
  * - High: Lab, threshold 0.1, 16 steps, diagonals: the defaults, which measured best for their
- *   cost (README).
+ *   cost.
  * - Ultra: Lab, threshold 0.05, 32 steps, diagonals.
  * Every preset leaves Reconstruction off (see above).
  *

@@ -23,8 +23,8 @@
  *
  * Our additions. The paper's rule as it stands (8-adjacency among the neighbours) also selects
  * the background pixels between two lines that pass within a pixel of each other (a dense
- * wireframe, converging iso-lines) and fills them: on the project's wireframe scene that took
- * the aliasing removed by MLAA from 65 % to 6 %. It selects the corner pixel of a one-pixel-wide
+ * wireframe, converging iso-lines) and fills them, which undoes most of what MLAA gains on a
+ * dense wireframe. It selects the corner pixel of a one-pixel-wide
  * L (which then takes the background's colour and cuts the corner), and the two pixels beside a
  * gap in a horizontal or vertical one-pixel line (which take the line's colour), while the gap
  * itself stays open (its like neighbours are two pieces). So a pixel is selected when:
