@@ -26,6 +26,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstring>
@@ -54,6 +55,9 @@ namespace
 struct Context
 {
   std::string Tool; // the mlaa executable
+  // The same tool with the test hooks compiled in (mlaa-test-hooks): runs whose environment
+  // asks for a simulated crash (MLAA_TEST_CRASH_WHILE_WRITING) use it.
+  std::string HookedTool;
   fs::path Work;    // input and output images
   fs::path Logs;    // the tool's stdout and stderr
   int RandomCases = 100; // cases of each random test
@@ -265,7 +269,9 @@ Run RunTool(const std::vector<std::string>& args,
     &actions, 1, outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawn_file_actions_addopen(
     &actions, 2, errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  std::vector<std::string> command = { Where().Tool };
+  const bool hooked = std::any_of(environment.begin(), environment.end(),
+    [](const std::string& variable) { return variable.rfind("MLAA_TEST_CRASH", 0) == 0; });
+  std::vector<std::string> command = { hooked ? Where().HookedTool : Where().Tool };
   command.insert(command.end(), args.begin(), args.end());
   const SpawnVectors spawn(command, environment);
 
@@ -2431,7 +2437,7 @@ void BatchInterrupted()
   {
     const int sig = how == 2 ? SIGTERM : SIGINT;
     const bool group = how == 1;
-    std::vector<std::string> command = { Where().Tool, "--quiet", "--jobs", "3", "--output-dir",
+    std::vector<std::string> command = { Where().HookedTool, "--quiet", "--jobs", "3", "--output-dir",
       out.string() };
     const std::vector<std::string> names = Strings(inputs);
     command.insert(command.end(), names.begin(), names.end());
@@ -2477,9 +2483,10 @@ void BatchInterrupted()
 //------------------------------------------------------------------------------
 int main(int argc, char* argv[])
 {
-  if (argc != 4 && argc != 5)
+  if (argc != 6)
   {
-    std::cerr << "Usage: " << argv[0] << " CASE MLAA_EXECUTABLE SCRATCH_DIRECTORY [RANDOM_CASES]"
+    std::cerr << "Usage: " << argv[0]
+              << " CASE MLAA_EXECUTABLE SCRATCH_DIRECTORY RANDOM_CASES MLAA_TEST_HOOKS_EXECUTABLE"
               << std::endl;
     return EXIT_FAILURE;
   }
@@ -2558,7 +2565,8 @@ int main(int argc, char* argv[])
   }
 
   Where().Tool = argv[2];
-  Where().RandomCases = argc == 5 ? std::atoi(argv[4]) : 100;
+  Where().RandomCases = std::atoi(argv[4]);
+  Where().HookedTool = argv[5];
   const fs::path scratch = argv[3];
   Where().Work = scratch / "work";
   Where().Logs = scratch / "logs";
