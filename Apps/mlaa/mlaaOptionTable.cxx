@@ -605,6 +605,17 @@ std::string BadNameMessage(
     (two ? "neither " + names[0] + " nor " + names[1] : "not one of " + Join(names, ", "));
 }
 
+// `text` in a Markdown table cell: '|' (even in code spans) escaped.
+std::string EscapeCell(const std::string& text)
+{
+  std::string escaped;
+  for (char c : text)
+  {
+    escaped += c == '|' ? std::string("\\|") : std::string(1, c);
+  }
+  return escaped;
+}
+
 // The label of an option in the usage: "-q, --quiet", "--threshold T", "--diagonals on|off".
 std::string Label(const Option& option)
 {
@@ -1032,8 +1043,8 @@ void PrintOptionsMarkdown(std::ostream& os)
     const char* methods[] = { "the tool", "mlaa", "dlaa", "both" };
     std::string label = option.ShortName ? std::string("`") + option.ShortName + "`, " : "";
     label += std::string("`") + option.Name + (option.Value ? std::string(" ") + option.Value : "") + "`";
-    os << "| " << label << " | " << value << " | " << methods[option.Methods] << " | "
-       << option.Default(defaults) << " |\n";
+    os << "| " << EscapeCell(label) << " | " << EscapeCell(value) << " | "
+       << methods[option.Methods] << " | " << EscapeCell(option.Default(defaults)) << " |\n";
   }
 }
 } // namespace mlaa
