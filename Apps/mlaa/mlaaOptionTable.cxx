@@ -162,7 +162,8 @@ std::string DescribePreset(const std::string& name)
   options->SetPreset(vtkMLAAOptions::GetPresetFromString(name.c_str()));
   return Text(vtkMLAAOptions::GetEdgeDetectionAsString(options->GetEdgeDetection()),
     ", threshold ", options->GetThreshold(), ", local contrast ",
-    options->GetLocalContrastFactor(), ", ", options->GetMaxSearchSteps(), " search steps, diagonals ",
+    options->GetLocalContrastFactor(), ", ", options->GetMaxSearchSteps(),
+    " search steps, diagonals ",
     OnOff(options->GetDiagonalDetection()), ", dominant blending ",
     OnOff(options->GetDominantDirectionBlending()), ", reconstruction ",
     OnOff(options->GetReconstruction()));
@@ -255,7 +256,10 @@ const std::vector<Option> OptionTable = {
     [](CommandLine& cl, const OptionValue& v)
     { cl.Options->SetEdgeDetection(vtkMLAAOptions::GetEdgeDetectionFromString(v.Text.c_str())); },
     [](const CommandLine& d)
-    { return std::string(vtkMLAAOptions::GetEdgeDetectionAsString(d.Options->GetEdgeDetection())); },
+    {
+      return std::string(
+        vtkMLAAOptions::GetEdgeDetectionAsString(d.Options->GetEdgeDetection()));
+    },
     [](const CommandLine& d, const UsageFacts&, const std::string&)
     {
       return Text("What edge detection compares (section 4.2). Default: ",
@@ -310,7 +314,8 @@ const std::vector<Option> OptionTable = {
     [](CommandLine& cl, const OptionValue& v)
     {
       const std::vector<std::string> names = AlphaNames();
-      cl.AlphaMode = static_cast<int>(std::find(names.begin(), names.end(), v.Text) - names.begin());
+      cl.AlphaMode =
+        static_cast<int>(std::find(names.begin(), names.end(), v.Text) - names.begin());
     },
     [](const CommandLine& d) { return AlphaNames()[d.AlphaMode]; },
     [](const CommandLine& d, const UsageFacts&, const std::string&)
@@ -417,7 +422,10 @@ const std::vector<Option> OptionTable = {
     [](CommandLine& cl, const OptionValue& v)
     { cl.DLAAOptions->SetLumaFunction(vtkDLAAOptions::GetLumaFunctionFromString(v.Text.c_str())); },
     [](const CommandLine& d)
-    { return std::string(vtkDLAAOptions::GetLumaFunctionAsString(d.DLAAOptions->GetLumaFunction())); },
+    {
+      return std::string(
+        vtkDLAAOptions::GetLumaFunctionAsString(d.DLAAOptions->GetLumaFunction()));
+    },
     [](const CommandLine& d, const UsageFacts&, const std::string&)
     {
       return Text("DLAA: the luminosity function, ",
@@ -974,7 +982,8 @@ void PrintUsage(std::ostream& os, const UsageFacts& facts)
 
   for (const Option& option : OptionTable)
   {
-    PrintWrapped(os, "  " + Label(option), column, option.Help(defaults, facts, GetRangeText(option)));
+    PrintWrapped(
+      os, "  " + Label(option), column, option.Help(defaults, facts, GetRangeText(option)));
     if (option.DescribeName)
     {
       for (const std::string& name : option.Names())
@@ -1042,7 +1051,8 @@ void PrintOptionsMarkdown(std::ostream& os)
     }
     const char* methods[] = { "the tool", "mlaa", "dlaa", "both" };
     std::string label = option.ShortName ? std::string("`") + option.ShortName + "`, " : "";
-    label += std::string("`") + option.Name + (option.Value ? std::string(" ") + option.Value : "") + "`";
+    label += std::string("`") + option.Name +
+      (option.Value ? std::string(" ") + option.Value : std::string()) + "`";
     os << "| " << EscapeCell(label) << " | " << EscapeCell(value) << " | "
        << methods[option.Methods] << " | " << EscapeCell(option.Default(defaults)) << " |\n";
   }

@@ -104,7 +104,8 @@ inline std::string MLAAOptionsUsage()
         values += IsDepthEdges(option.Name, name) ? "" : (values.empty() ? "" : "|") + name;
       }
     }
-    std::string line = std::string("  ") + option.Name + " " + (option.Value ? option.Value : values);
+    std::string line =
+      std::string("  ") + option.Name + " " + (option.Value ? option.Value : values);
     std::string about = option.Range ? "in " + mlaa::GetRangeText(option)
       : option.Value                 ? "one of " + values
                                      : std::string();
