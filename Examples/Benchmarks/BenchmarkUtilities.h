@@ -3,6 +3,8 @@
 #ifndef BenchmarkUtilities_h
 #define BenchmarkUtilities_h
 
+#include "mlaaOptionTable.h"
+
 #include "vtkMLAAOptions.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderWindow.h"
@@ -68,18 +70,56 @@ inline bool ParseNumber(const std::string& text, double lo, double hi, double& v
   return true;
 }
 
-// The MLAA settings the benchmarks take (vtkMLAAOptions), for their usage text.
-inline const char* MLAAOptionsUsage()
+// The MLAA settings the benchmarks take: the options of the `mlaa` tool that --preset sets, and
+// --preset, from the tool's option table (Apps/mlaa/mlaaOptionTable.h), with the same values,
+// ranges and defaults. Not --edges depth: the benchmarks have no depth image.
+inline bool IsBenchmarkOption(const mlaa::Option& option)
 {
-  return "MLAA settings (vtkMLAAOptions; default: the library's defaults):\n"
-         "  --preset low|medium|high|ultra  every setting below at once (put it first)\n"
-         "  --threshold T          edge threshold in [0, 1]\n"
-         "  --edges luma|color|lab what edge detection compares\n"
-         "  --max-search-steps N   search steps in [1, 128]\n"
-         "  --diagonals on|off     diagonal detection\n"
-         "  --local-contrast F     local contrast factor in [0, 100]\n"
-         "  --dominant-blending on|off  dominant-direction blending\n"
-         "  --reconstruction on|off     topological reconstruction\n";
+  return (option.Flags & (mlaa::SetByPreset | mlaa::IsPreset)) != 0;
+}
+
+inline bool IsDepthEdges(const std::string& name, const std::string& value)
+{
+  return name == "--edges" &&
+    value == vtkMLAAOptions::GetEdgeDetectionAsString(vtkMLAAOptions::DEPTH);
+}
+
+// Those settings, for the benchmarks' usage text.
+inline std::string MLAAOptionsUsage()
+{
+  std::ostringstream usage;
+  usage << "MLAA settings (vtkMLAAOptions; default: the library's defaults; mlaa --help says "
+           "more):\n";
+  for (const mlaa::Option& option : mlaa::GetOptions())
+  {
+    if (!IsBenchmarkOption(option))
+    {
+      continue;
+    }
+    std::string values;
+    if (option.Names)
+    {
+      for (const std::string& name : option.Names())
+      {
+        values += IsDepthEdges(option.Name, name) ? "" : (values.empty() ? "" : "|") + name;
+      }
+    }
+    std::string line =
+      std::string("  ") + option.Name + " " + (option.Value ? option.Value : values);
+    std::string about = option.Range ? "in " + mlaa::GetRangeText(option)
+      : option.Value                 ? "one of " + values
+                                     : std::string();
+    if (option.Flags & mlaa::IsPreset)
+    {
+      about += "; every other setting at once (put it first)";
+    }
+    if (!about.empty())
+    {
+      line.resize(std::max<std::size_t>(line.size() + 1, 28), ' ');
+    }
+    usage << line << about << "\n";
+  }
+  return usage.str();
 }
 
 // If argv[i] is one of the MLAA settings above with a valid value, applies it to `options`,
@@ -92,42 +132,18 @@ inline bool ParseMLAAOption(int argc, char* argv[], int& i, vtkMLAAOptions* opti
   }
   const std::string name = argv[i];
   const std::string value = argv[i + 1];
-  double number = 0.0;
-  int steps = 0;
-  if (name == "--threshold" && ParseNumber(value, 0.0, 1.0, number))
+  const mlaa::Option* option = mlaa::FindOption(name);
+  if (!option || !IsBenchmarkOption(*option) || IsDepthEdges(name, value))
   {
-    options->SetThreshold(number);
+    return false;
   }
-  else if (name == "--edges" && (value == "luma" || value == "color" || value == "lab"))
+  mlaa::CommandLine settings;
+  settings.Options = options;
+  try
   {
-    options->SetEdgeDetection(vtkMLAAOptions::GetEdgeDetectionFromString(value.c_str()));
+    mlaa::ApplyOption(*option, name, { value }, settings);
   }
-  else if (name == "--preset" && vtkMLAAOptions::GetPresetFromString(value.c_str()) >= 0)
-  {
-    options->SetPreset(vtkMLAAOptions::GetPresetFromString(value.c_str()));
-  }
-  else if (name == "--reconstruction" && (value == "on" || value == "off"))
-  {
-    options->SetReconstruction(value == "on");
-  }
-  else if (name == "--max-search-steps" && ParsePositive(value, steps) &&
-    steps <= options->GetMaxSearchStepsMaxValue())
-  {
-    options->SetMaxSearchSteps(steps);
-  }
-  else if (name == "--diagonals" && (value == "on" || value == "off"))
-  {
-    options->SetDiagonalDetection(value == "on");
-  }
-  else if (name == "--local-contrast" && ParseNumber(value, 0.0, 100.0, number))
-  {
-    options->SetLocalContrastFactor(number);
-  }
-  else if (name == "--dominant-blending" && (value == "on" || value == "off"))
-  {
-    options->SetDominantDirectionBlending(value == "on");
-  }
-  else
+  catch (const mlaa::UsageError&)
   {
     return false;
   }

@@ -521,7 +521,9 @@ const char* ChannelWord(int channels)
   }
 }
 
-// For tests only: MLAA_TEST_CRASH_WHILE_WRITING=abort|segv|exit makes the tool fail as a library
+#ifdef MLAA_TEST_HOOKS
+// For tests only (compiled into mlaa-test-hooks, never into the installed mlaa):
+// MLAA_TEST_CRASH_WHILE_WRITING=abort|segv|exit makes the tool fail as a library
 // would, after a library message, while it writes `path`, so that the tests can see a crash
 // reported; =sleep makes it wait there (up to a minute) for a signal. With
 // MLAA_TEST_CRASH_ONLY=TEXT, only outputs whose name contains TEXT (one file of a batch).
@@ -555,6 +557,7 @@ void SimulateLibraryCrashForTests(const std::string& path)
     std::exit(3);
   }
 }
+#endif
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -758,7 +761,9 @@ std::string WriteImageFile(vtkImageData* image, const std::string& path,
     throw Error(what + OneLine(error + "\n" + messages.Finish()));
   }
   const OIIO::TypeDesc writtenType = output->spec().format;
+#ifdef MLAA_TEST_HOOKS
   SimulateLibraryCrashForTests(path);
+#endif
 
   // Floating-point pixels in an integer format: OpenImageIO maps [0, 1] to the whole integer
   // range; map the value range there instead.

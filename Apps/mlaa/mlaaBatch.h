@@ -16,7 +16,7 @@
 #ifndef mlaaBatch_h
 #define mlaaBatch_h
 
-#include "mlaaImageFile.h" // For mlaa::Error
+#include "mlaaError.h" // For mlaa::UsageError
 
 #include <functional> // For std::function
 #include <string>     // For std::string
@@ -24,13 +24,6 @@
 
 namespace mlaa
 {
-/** A bad command line (exit status 2). */
-class UsageError : public Error
-{
-public:
-  using Error::Error;
-};
-
 /** One file of a batch. */
 struct BatchFile
 {

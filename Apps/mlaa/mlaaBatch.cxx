@@ -1,6 +1,7 @@
 #include "mlaaBatch.h"
 
 #include "mlaaCrashReport.h"
+#include "mlaaImageFile.h"
 
 #include <OpenImageIO/filesystem.h>
 

@@ -25,25 +25,19 @@
 #ifndef mlaaImageFile_h
 #define mlaaImageFile_h
 
+#include "mlaaError.h" // For mlaa::Error
+
 #include "vtkSmartPointer.h" // For vtkSmartPointer
 
 #include <OpenImageIO/imageio.h> // For OIIO::ImageSpec, OIIO::TypeDesc
 
 #include <cstdint>   // For std::uint64_t
-#include <stdexcept> // For std::runtime_error
 #include <string>    // For std::string
 
 class vtkImageData;
 
 namespace mlaa
 {
-/** A failure to report: one line, without the "mlaa: " prefix. */
-class Error : public std::runtime_error
-{
-public:
-  using std::runtime_error::runtime_error;
-};
-
 /**
  * `text` made safe for one line of a terminal: lines joined with "; ", lines repeated (or the
  * same but for their numbers, as libraries report one per scanline) given once with a count,
