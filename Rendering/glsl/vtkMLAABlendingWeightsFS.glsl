@@ -33,7 +33,7 @@
 // used there; the staircase is followed one unit per step (vtkImageMLAA counts the same lengths
 // as run lengths along the diagonals, WeightsComputer::ComputeDiagonalLengths).
 //
-// Must match vtkImageMLAA's blending weights (ComputeBlendingWeights in Filters/vtkMLAAStages.cxx);
+// Must match vtkImageMLAA's blending weights (ComputeBlendingWeights in Filters/vtkMLAABlendingWeights.cxx);
 // the distances of searchTopEdges/searchLeftEdges must equal the line lengths of
 // ComputeRowLineLengths/ComputeColumnLineLengths there and of vtkMLAALineLengthsFS.glsl.
 

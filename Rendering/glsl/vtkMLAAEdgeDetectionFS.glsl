@@ -27,7 +27,7 @@
 // keeps its extra reads off the pixels without edges (the depth test rejects them before the
 // shader runs), which matters on rasterisers that run both sides of every branch.
 //
-// Must match vtkImageMLAA's edge detection (DetectEdges in Filters/vtkMLAAStages.cxx).
+// Must match vtkImageMLAA's edge detection (DetectEdges in Filters/vtkMLAAEdgeDetection.cxx).
 
 in vec2 texCoord;
 

@@ -24,7 +24,7 @@
 // initialisation reads its edgels clamped too).
 //
 // Must match the line lengths of vtkImageMLAA (ComputeRowLineLengths and
-// ComputeColumnLineLengths in Filters/vtkMLAAStages.cxx).
+// ComputeColumnLineLengths in Filters/vtkMLAALineLengths.cxx).
 
 in vec2 texCoord;
 

@@ -22,7 +22,7 @@
 // cleared to 0.
 //
 // Must match the line lengths of vtkImageMLAA (ComputeRowLineLengths and
-// ComputeColumnLineLengths in Filters/vtkMLAAStages.cxx) and searchTopEdges/searchLeftEdges in
+// ComputeColumnLineLengths in Filters/vtkMLAALineLengths.cxx) and searchTopEdges/searchLeftEdges in
 // vtkMLAABlendingWeightsFS.glsl.
 
 in vec2 texCoord;

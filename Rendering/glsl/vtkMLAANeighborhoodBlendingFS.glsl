@@ -36,7 +36,7 @@
 //                            no depth is written. Otherwise every pixel and its depth are
 //                            written.
 //
-// Must match vtkImageMLAA's blending (BlendRow in Filters/vtkMLAAStages.h).
+// Must match vtkImageMLAA's blending (BlendRow in Filters/vtkMLAANeighborhoodBlending.h).
 
 in vec2 texCoord;
 

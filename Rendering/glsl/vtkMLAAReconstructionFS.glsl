@@ -24,7 +24,7 @@
 //                      discarded): the pass draws this into the target when the blending works
 //                      in place and writes back only the pixels it blends.
 //
-// Must match Reconstruct and Unlike in Filters/vtkMLAAStages.h (vtkImageMLAA), and the
+// Must match Reconstruct and Unlike in Filters/vtkMLAAReconstruction.h (vtkImageMLAA), and the
 // neighbour order of vtkMLAATopology.
 
 in vec2 texCoord;
