@@ -1,6 +1,6 @@
 #include "vtkDLAAOptions.h"
 
-#include "vtkMLAAOptionsHelpers.h"
+#include "vtkAntialiasingOptionsHelpers.h"
 #include "vtkObjectFactory.h"
 
 vtkStandardNewMacro(vtkDLAAOptions);
@@ -19,7 +19,7 @@ const char* vtkDLAAOptions::GetLumaFunctionAsString(int function)
 //------------------------------------------------------------------------------
 int vtkDLAAOptions::GetLumaFunctionFromString(const char* name)
 {
-  return vtkMLAAInternal::IndexOfName(LumaFunctionNames, name);
+  return vtkAntialiasingInternal::IndexOfName(LumaFunctionNames, name);
 }
 
 //------------------------------------------------------------------------------
@@ -38,7 +38,7 @@ void vtkDLAAOptions::DeepCopy(vtkDLAAOptions* other)
 //------------------------------------------------------------------------------
 bool vtkDLAAOptions::Assign(vtkObject* owner, vtkDLAAOptions*& member, vtkDLAAOptions* options)
 {
-  return vtkMLAAInternal::AssignOwned(owner, member, options);
+  return vtkAntialiasingInternal::AssignOwned(owner, member, options);
 }
 
 //------------------------------------------------------------------------------

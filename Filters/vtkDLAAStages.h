@@ -5,7 +5,7 @@
  * Directionally localized antialiasing as vtkDLAAOptions describes it, on one z slice, in
  * bands of rows run by vtkSMPTools. Each task reads the rows it needs (its band and a halo of
  * Halo() rows each side, clamped to the image) once, with MLAA's typed row reader
- * (vtkMLAAStages::FeatureReader in COLOR mode: normalised channels, NaN for non-finite
+ * (vtkAntialiasingKit::FeatureReader in COLOR mode: normalised channels, NaN for non-finite
  * pixels), into per-task planes padded by Halo() columns each side, so that no inner loop
  * clamps. On those rows it computes, as the talk's slides do in Photoshop layers:
  * - the luminosity of every pixel (slide 43: REC709 or the green channel);
@@ -29,7 +29,8 @@
 
 #include "vtkDLAAOptions.h"
 #include "vtkFiltersMLAAModule.h" // For export macro
-#include "vtkMLAAStages.h"
+#include "vtkAntialiasingKit.h"
+#include "vtkSMPTools.h"
 
 #include <algorithm>
 #include <cmath>
@@ -39,8 +40,8 @@
 
 namespace vtkDLAAStages
 {
-using vtkMLAAStages::Progress;
-using vtkMLAAStages::Rect;
+using vtkAntialiasingKit::Progress;
+using vtkAntialiasingKit::Rect;
 
 /** Pixels each way of the short-edge high-pass filters and blurs (5-pixel kernels). */
 constexpr int ShortEdgeRadius = 2;
@@ -129,7 +130,7 @@ template <typename T>
 void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride, T* output,
   Progress& progress)
 {
-  using Acc = vtkMLAAStages::AccumulatorType<T>;
+  using Acc = vtkAntialiasingKit::AccumulatorType<T>;
   const Rect& in = setup.Input;
   const Rect& out = setup.Output;
   if (out.Empty() || in.Empty())
@@ -158,8 +159,8 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
       lumaWeights[lumaCount++] = static_cast<Acc>(s.LumaWeights[k]);
     }
   }
-  const vtkMLAAStages::FeatureReader<T, Acc> reader(
-    vtkMLAAStages::MakeFeatureLayout(vtkMLAAOptions::COLOR, c), lo,
+  const vtkAntialiasingKit::FeatureReader<T, Acc> reader(
+    vtkAntialiasingKit::MakeFeatureLayout(vtkMLAAOptions::COLOR, c), lo,
     static_cast<Acc>(1.0 / (s.Hi - s.Lo)));
   // The columns of the input that the padded rows hold (the rest are clamped copies).
   const int readX0 = std::max(out.X0 - halo, in.X0);
@@ -473,7 +474,7 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
         }
         for (int k = 0; k < c; ++k)
         {
-          target[x * c + k] = vtkMLAAStages::ConvertBlended<T>(lo + result[k] * range);
+          target[x * c + k] = vtkAntialiasingKit::ConvertBlended<T>(lo + result[k] * range);
         }
       }
     }

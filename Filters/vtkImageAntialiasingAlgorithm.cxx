@@ -6,7 +6,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
-#include "vtkMLAAStages.h"
+#include "vtkAntialiasingKit.h"
 #include "vtkPointData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
@@ -235,13 +235,13 @@ bool vtkImageAntialiasingAlgorithm::PrepareRequest(
 
 //------------------------------------------------------------------------------
 void vtkImageAntialiasingAlgorithm::ForEachSlice(const Request& r, vtkIdType rowsPerSlice,
-  const std::function<void(int, vtkMLAAStages::Progress&)>& slice)
+  const std::function<void(int, vtkAntialiasingKit::Progress&)>& slice)
 {
   // Progress counts the rows of every slice; it is reported and AbortExecute is polled between
   // tasks, from this thread.
   const int* outExt = r.OutputExtent;
   const int slices = outExt[5] - outExt[4] + 1;
-  vtkMLAAStages::Progress progress([this](double fraction) { this->UpdateProgress(fraction); },
+  vtkAntialiasingKit::Progress progress([this](double fraction) { this->UpdateProgress(fraction); },
     [this]() { return this->GetAbortExecute() != 0; }, slices * rowsPerSlice);
   for (int z = outExt[4]; z <= outExt[5] && !progress.CheckAbort(); ++z)
   {

@@ -32,7 +32,7 @@
 #include <functional> // For ForEachSlice
 
 class vtkDataArray;
-namespace vtkMLAAStages
+namespace vtkAntialiasingKit
 {
 class Progress;
 }
@@ -122,7 +122,7 @@ protected:
    * the output is emptied. `slice` counts its rows with progress.RowsDone.
    */
   void ForEachSlice(const Request& request, vtkIdType rowsPerSlice,
-    const std::function<void(int, vtkMLAAStages::Progress&)>& slice);
+    const std::function<void(int, vtkAntialiasingKit::Progress&)>& slice);
 
   double ValueRange[2] = { 0.0, 1.0 };
   bool ValueRangeIsTypeDefault = true;

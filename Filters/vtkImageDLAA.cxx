@@ -93,7 +93,7 @@ int vtkImageDLAA::RequestData(
   const vtkIdType outSliceValues = static_cast<vtkIdType>(setup.Output.Width()) *
     setup.Output.Height() * request.Components;
   this->ForEachSlice(
-    request, setup.Output.Height(), [&](int z, vtkMLAAStages::Progress& progress) {
+    request, setup.Output.Height(), [&](int z, vtkAntialiasingKit::Progress& progress) {
       void* inPtr = input->GetScalarPointer(setup.Input.X0, setup.Input.Y0, z);
       void* outPtr = static_cast<char*>(output->GetScalarPointer()) +
         (z - outExt[4]) * outSliceValues * output->GetScalarSize();

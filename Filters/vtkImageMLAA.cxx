@@ -220,7 +220,7 @@ int vtkImageMLAA::RequestData(
     output->GetPointData()->GetScalars()->GetNumberOfComponents();
 
   vtkMLAAStages::SliceBuffers& buffers = *this->Buffers;
-  this->ForEachSlice(request, setup.RowsOfWork(), [&](int z, vtkMLAAStages::Progress& progress) {
+  this->ForEachSlice(request, setup.RowsOfWork(), [&](int z, vtkAntialiasingKit::Progress& progress) {
     vtkMLAAStages::DepthRows depthRows;
     if (depth)
     {

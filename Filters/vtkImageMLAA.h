@@ -51,7 +51,7 @@
  * search distance, so processing an image in pieces gives the same pixels as processing it whole.
  * It is multithreaded with vtkSMPTools and deterministic.
  *
- * Stages (vtkMLAAStages.h): the work mirrors the GPU pass's shaders: with Reconstruction, a
+ * Stages (vtkMLAAStages.h lists their files): the work mirrors the GPU pass's shaders: with Reconstruction, a
  * typed reconstruction of the slice's pixels into a copy (one more full-size buffer, in the
  * input's type; none without it), features (the only other typed step on the way in: each row
  * read into a few rows of normalised luma, colour, CIELAB, depth and alpha), edges (a buffer laid out as the pass's RG8 edges texture), blending weights (as its

@@ -65,7 +65,8 @@ public:
   ///@{
   /**
    * Longest distance to an end of a line that the table covers, in pixels: D - 1. Default 16
-   * (vtkMLAAOptions' default of 8 search steps), range [1, 1023].
+   * (the distance of the chapter's 8 search steps), range [1, 1023]. The filter and the pass use
+   * vtkMLAAOptions::GetMaxDistance() of their options.
    */
   vtkSetClampMacro(MaxDistance, int, 1, 1023);
   vtkGetMacro(MaxDistance, int);

@@ -1,6 +1,6 @@
 #include "vtkMLAAOptions.h"
 
-#include "vtkMLAAOptionsHelpers.h"
+#include "vtkAntialiasingOptionsHelpers.h"
 
 #include "vtkObjectFactory.h"
 
@@ -42,7 +42,7 @@ const char* vtkMLAAOptions::GetEdgeDetectionAsString(int mode)
 //------------------------------------------------------------------------------
 int vtkMLAAOptions::GetEdgeDetectionFromString(const char* name)
 {
-  return vtkMLAAInternal::IndexOfName(EdgeDetectionNames, name);
+  return vtkAntialiasingInternal::IndexOfName(EdgeDetectionNames, name);
 }
 
 //------------------------------------------------------------------------------
@@ -55,7 +55,7 @@ const char* vtkMLAAOptions::GetDebugOutputAsString(int output)
 //------------------------------------------------------------------------------
 int vtkMLAAOptions::GetDebugOutputFromString(const char* name)
 {
-  return vtkMLAAInternal::IndexOfName(DebugOutputNames, name);
+  return vtkAntialiasingInternal::IndexOfName(DebugOutputNames, name);
 }
 
 //------------------------------------------------------------------------------
@@ -71,7 +71,7 @@ const char* vtkMLAAOptions::GetPresetAsString(int preset)
 //------------------------------------------------------------------------------
 int vtkMLAAOptions::GetPresetFromString(const char* name)
 {
-  return vtkMLAAInternal::IndexOfName(PresetNames, name);
+  return vtkAntialiasingInternal::IndexOfName(PresetNames, name);
 }
 
 //------------------------------------------------------------------------------
@@ -141,7 +141,7 @@ void vtkMLAAOptions::CopyQualitySettings(vtkMLAAOptions* other)
 //------------------------------------------------------------------------------
 bool vtkMLAAOptions::Assign(vtkObject* owner, vtkMLAAOptions*& member, vtkMLAAOptions* options)
 {
-  return vtkMLAAInternal::AssignOwned(owner, member, options);
+  return vtkAntialiasingInternal::AssignOwned(owner, member, options);
 }
 
 //------------------------------------------------------------------------------

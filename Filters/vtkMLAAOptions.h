@@ -191,9 +191,37 @@ public:
 
   /**
    * Longest distance, in pixels, from a pixel to either end of its line that the search
-   * reports: 2 * MaxSearchSteps. The area texture has MaxDistance + 1 texels per cell side.
+   * reports: 2 * MaxSearchSteps.
    */
   int GetMaxDistance() const { return 2 * this->MaxSearchSteps; }
+
+  /**
+   * How far, in pixels, the search reads from a pixel along its line: the MaxDistance pixels of
+   * the line and the crossing edge one further (section 4.3.2), 2 * MaxSearchSteps + 1. It is
+   * also D, the side in texels of one cell of the area texture for this distance
+   * (vtkMLAAAreaTexture::GetCellSize), and the reach of the filter's halo along a line. This is
+   * the one place that computes it.
+   */
+  int GetSearchReach() const { return this->GetMaxDistance() + 1; }
+
+  /**
+   * The search length from which both back ends count line lengths exactly over the whole image
+   * beforehand instead of searching from every pixel with an edge: vtkImageMLAA by run lengths
+   * (one scan per row and per column), vtkOpenGLMLAAPass by recursive doubling (with its
+   * LineLengths AUTOMATIC). Either way the distances, and so the images, are the same; only the
+   * cost differs. A search stops at the end of each line, so it costs little where lines are
+   * short, but its cost grows with the length of the lines up to MaxSearchSteps reads each way;
+   * counting costs a few reads of every pixel (and, on the CPU, a buffer of line lengths the
+   * size of the image) whatever the lines, and bounds the cost that long lines add. Below this
+   * length the search's reach is short enough that searching wins on both back ends.
+   */
+  static constexpr int ExactLineLengthsSteps = 32;
+
+  /** Whether MaxSearchSteps is long enough to count line lengths exactly (above). */
+  bool GetCountsExactLineLengths() const
+  {
+    return this->MaxSearchSteps >= ExactLineLengthsSteps;
+  }
 
   ///@{
   /**

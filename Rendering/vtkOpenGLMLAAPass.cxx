@@ -566,7 +566,7 @@ bool vtkOpenGLMLAAPass::GetUsesRecursiveDoubling()
     case RECURSIVE_DOUBLING:
       return true;
     default:
-      return this->Options->GetMaxSearchSteps() >= AutomaticDoublingSteps;
+      return this->Options->GetCountsExactLineLengths();
   }
 }
 

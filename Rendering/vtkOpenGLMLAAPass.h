@@ -160,13 +160,9 @@ public:
    *   three fetches per direction over the edge pixels, into two RGBA16F textures (16 bytes per
    *   pixel together), which the weights pass reads once. Its cost grows with the logarithm of
    *   the maximum distance, not with the lines.
-   * - AUTOMATIC (default): RECURSIVE_DOUBLING when MaxSearchSteps is at least
-   *   AutomaticDoublingSteps (32), SEARCH_LOOP below. Measured with mlaa-benchmark-gpu (overhead
-   *   relative to vtkOpenGLFXAAPass's, llvmpipe, 1920 x 1080): on the "mixed" scene, whose lines
-   *   are short, the loop stops early and costs 0.9 (8 steps) and 0.7 (32, 128) against 1.2,
-   *   1.0 and 1.1 for doubling; on a screen of long 0.3-degree stripes the loop costs 2.5, 2.8
-   *   and 4.5 against 2.4, 0.6 and 1.3. From 32 steps on, doubling bounds the cost that long
-   *   lines would otherwise add; at 8 steps the loop is as cheap or cheaper everywhere.
+   * - AUTOMATIC (default): the rule both back ends share,
+   *   vtkMLAAOptions::GetCountsExactLineLengths(): RECURSIVE_DOUBLING from
+   *   vtkMLAAOptions::ExactLineLengthsSteps search steps on, SEARCH_LOOP below.
    */
   enum LineLengthMethods
   {
@@ -174,7 +170,6 @@ public:
     SEARCH_LOOP = 1,
     RECURSIVE_DOUBLING = 2
   };
-  static constexpr int AutomaticDoublingSteps = 32;
   vtkSetClampMacro(LineLengths, int, AUTOMATIC, RECURSIVE_DOUBLING);
   vtkGetMacro(LineLengths, int);
   void SetLineLengthsToAutomatic() { this->SetLineLengths(AUTOMATIC); }

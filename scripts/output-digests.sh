@@ -73,7 +73,7 @@ done
 
 # The GPU pass, through the demo (each picture holds the plain render and the pass's result).
 if [ -x "$demo" ]; then
-  for scene in $("$demo" --list 2>/dev/null | awk '{print $1}'); do
+  for scene in $("$demo" --list 2>/dev/null | awk -F: '{print $1}'); do
     out="$work/demo-$scene.png"
     if "$source_dir/scripts/with-xvfb.sh" "$demo" --scene "$scene" --output "$out" \
       >/dev/null 2>&1; then

@@ -1,6 +1,6 @@
 //VTK::System::Dec
 //VTK::Output::Dec
-//VTK::MLAA::Dec
+//VTK::Antialiasing::Dec
 
 // MLAA pass 2 of 3: blending weights (Jimenez et al., "Practical Morphological Antialiasing",
 // GPU Pro 2, section 4.3, Listing 4.2).
@@ -17,7 +17,7 @@
 // the left neighbour. GL's y grows upwards, so "above" is y + 1 and the published shader's -0.25
 // offset towards the upper row becomes +0.25 here.
 //
-// Compile-time variants (#defines prepended by vtkOpenGLMLAAPass in place of //VTK::MLAA::Dec;
+// Compile-time variants (#defines prepended by vtkOpenGLMLAAPass in place of //VTK::Antialiasing::Dec;
 // the program is rebuilt when the options change):
 //   MLAA_MAX_SEARCH_STEPS         vtkMLAAOptions::MaxSearchSteps (a constant loop bound)
 //   MLAA_DIAGONAL_DETECTION       defined: vtkMLAAOptions::DiagonalDetection
@@ -33,7 +33,7 @@
 // used there; the staircase is followed one unit per step (vtkImageMLAA counts the same lengths
 // as run lengths along the diagonals, WeightsComputer::ComputeDiagonalLengths).
 //
-// Must match vtkImageMLAA's blending weights (ComputeBlendingWeights in Filters/vtkMLAAStages.cxx);
+// Must match vtkImageMLAA's blending weights (ComputeBlendingWeights in Filters/vtkMLAABlendingWeights.cxx);
 // the distances of searchTopEdges/searchLeftEdges must equal the line lengths of
 // ComputeRowLineLengths/ComputeColumnLineLengths there and of vtkMLAALineLengthsFS.glsl.
 

@@ -7,7 +7,7 @@
 // the features are L/100, a/100 and b/100, so that their Euclidean distance is Delta E
 // (CIE 1976) / 100.
 //
-// Must match namespace Lab in Filters/vtkMLAAStages.h (vtkImageMLAA).
+// Must match namespace Lab in Filters/vtkMLAALab.h (vtkImageMLAA).
 
 // The sRGB transfer function inverted: a channel (clamped at 0) to linear light.
 float labLinear(float c)

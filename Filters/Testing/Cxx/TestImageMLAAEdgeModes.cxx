@@ -8,7 +8,7 @@
 // without alpha).
 #include "vtkMLAATestUtilities.h"
 
-#include "vtkMLAAStages.h"
+#include "vtkMLAALab.h"
 
 using namespace vtkMLAATest;
 
@@ -253,17 +253,17 @@ void Lab()
       if (precision == 0)
       {
         float l, a, b;
-        vtkMLAAStages::Lab::FromLinear(vtkMLAAStages::Lab::Linearise(float(known.Rgb[0])),
-          vtkMLAAStages::Lab::Linearise(float(known.Rgb[1])),
-          vtkMLAAStages::Lab::Linearise(float(known.Rgb[2])), l, a, b);
+        vtkAntialiasingKit::Lab::FromLinear(vtkAntialiasingKit::Lab::Linearise(float(known.Rgb[0])),
+          vtkAntialiasingKit::Lab::Linearise(float(known.Rgb[1])),
+          vtkAntialiasingKit::Lab::Linearise(float(known.Rgb[2])), l, a, b);
         lab[0] = l;
         lab[1] = a;
         lab[2] = b;
       }
       else
       {
-        vtkMLAAStages::Lab::FromLinear(vtkMLAAStages::Lab::Linearise(known.Rgb[0]),
-          vtkMLAAStages::Lab::Linearise(known.Rgb[1]), vtkMLAAStages::Lab::Linearise(known.Rgb[2]),
+        vtkAntialiasingKit::Lab::FromLinear(vtkAntialiasingKit::Lab::Linearise(known.Rgb[0]),
+          vtkAntialiasingKit::Lab::Linearise(known.Rgb[1]), vtkAntialiasingKit::Lab::Linearise(known.Rgb[2]),
           lab[0], lab[1], lab[2]);
       }
       for (int k = 0; k < 3; ++k)
@@ -281,8 +281,8 @@ void Lab()
   {
     const double exact = std::cbrt(x);
     worstFloat = std::max(worstFloat,
-      std::abs(vtkMLAAStages::Lab::FastCbrt(static_cast<float>(x)) - exact) / exact);
-    worstDouble = std::max(worstDouble, std::abs(vtkMLAAStages::Lab::FastCbrt(x) - exact) / exact);
+      std::abs(vtkAntialiasingKit::Lab::FastCbrt(static_cast<float>(x)) - exact) / exact);
+    worstDouble = std::max(worstDouble, std::abs(vtkAntialiasingKit::Lab::FastCbrt(x) - exact) / exact);
   }
   MLAA_CHECK(worstFloat < 1e-6);
   MLAA_CHECK(worstDouble < 1e-12);

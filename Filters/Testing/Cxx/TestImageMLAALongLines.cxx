@@ -12,7 +12,7 @@
 #include "vtkMLAATestUtilities.h"
 
 #include "vtkMLAAAreaTexture.h"
-#include "vtkMLAAStages.h"
+#include "vtkMLAABlendingWeights.h"
 #include "vtkMath.h"
 
 #include <cmath>

@@ -44,7 +44,7 @@ vtkSmartPointer<vtkImageData> ReconstructOnly(vtkImageData* input, double thresh
   auto output = vtkSmartPointer<vtkImageData>::New();
   output->DeepCopy(input);
   vtkMLAAStages::Progress progress;
-  vtkMLAAStages::Reconstruct<T>(setup, static_cast<const T*>(input->GetScalarPointer()),
+  vtkMLAAStages::Reconstruct<T>(setup.GetReconstruction(), static_cast<const T*>(input->GetScalarPointer()),
     increments[1], static_cast<T*>(output->GetScalarPointer()), progress);
   return output;
 }

@@ -211,9 +211,9 @@ void AutomaticAndResources()
 {
   vtkNew<vtkOpenGLMLAAPass> pass;
   MLAA_CHECK(pass->GetLineLengths() == vtkOpenGLMLAAPass::AUTOMATIC);
-  pass->GetOptions()->SetMaxSearchSteps(vtkOpenGLMLAAPass::AutomaticDoublingSteps - 1);
+  pass->GetOptions()->SetMaxSearchSteps(vtkMLAAOptions::ExactLineLengthsSteps - 1);
   MLAA_CHECK(!pass->GetUsesRecursiveDoubling());
-  pass->GetOptions()->SetMaxSearchSteps(vtkOpenGLMLAAPass::AutomaticDoublingSteps);
+  pass->GetOptions()->SetMaxSearchSteps(vtkMLAAOptions::ExactLineLengthsSteps);
   MLAA_CHECK(pass->GetUsesRecursiveDoubling());
   pass->SetLineLengthsToSearchLoop();
   MLAA_CHECK(!pass->GetUsesRecursiveDoubling());

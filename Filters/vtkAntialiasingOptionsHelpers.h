@@ -1,5 +1,5 @@
 /**
- * @file   vtkMLAAOptionsHelpers.h
+ * @file   vtkAntialiasingOptionsHelpers.h
  * @brief  Helpers shared by the option classes vtkMLAAOptions and vtkDLAAOptions (internal).
  *
  * IndexOfName finds a name in a table of names (-1 if absent or null).
@@ -9,14 +9,14 @@
  * `owner`), or to a fresh default object when `options` is null, releasing the previous one, and
  * returns true when `member` changed. Not installed.
  */
-#ifndef vtkMLAAOptionsHelpers_h
-#define vtkMLAAOptionsHelpers_h
+#ifndef vtkAntialiasingOptionsHelpers_h
+#define vtkAntialiasingOptionsHelpers_h
 
 #include "vtkObject.h"
 
 #include <cstring>
 
-namespace vtkMLAAInternal
+namespace vtkAntialiasingInternal
 {
 template <int N>
 int IndexOfName(const char* const (&names)[N], const char* name)

@@ -1,0 +1,60 @@
+#include "vtkAntialiasingKit.h"
+
+#include <thread>
+
+namespace vtkAntialiasingKit
+{
+//------------------------------------------------------------------------------
+Progress::Progress(
+  std::function<void(double)> report, std::function<bool()> aborted, vtkIdType totalRows)
+  : Report(std::move(report))
+  , AbortQuery(std::move(aborted))
+  , Total(totalRows > 0 ? totalRows : 1)
+  , Owner(std::this_thread::get_id())
+{
+}
+
+Progress::Progress()
+  : Owner(std::this_thread::get_id())
+{
+}
+
+void Progress::RowsDone(vtkIdType rows)
+{
+  const vtkIdType done = this->Done.fetch_add(rows, std::memory_order_relaxed) + rows;
+  if (std::this_thread::get_id() != this->Owner)
+  {
+    return;
+  }
+  const double fraction = std::min(1.0, static_cast<double>(done) / this->Total);
+  if (this->Report && fraction - this->LastReported >= 0.01)
+  {
+    this->LastReported = fraction;
+    this->Report(fraction);
+  }
+  this->CheckAbort();
+}
+
+bool Progress::CheckAbort()
+{
+  if (std::this_thread::get_id() == this->Owner && this->AbortQuery && this->AbortQuery())
+  {
+    this->AbortFlag.store(true, std::memory_order_relaxed);
+  }
+  return this->Aborted();
+}
+
+//------------------------------------------------------------------------------
+FeatureLayout MakeFeatureLayout(int mode, int components)
+{
+  FeatureLayout layout;
+  layout.Mode = mode;
+  layout.Components = components;
+  layout.HasAlpha = components == 2 || components == 4;
+  layout.Count = mode == vtkMLAAOptions::COLOR
+    ? components
+    : (mode == vtkMLAAOptions::LAB ? 3 : 1) + (layout.HasAlpha ? 1 : 0);
+  return layout;
+}
+
+}

@@ -1,0 +1,463 @@
+/**
+ * @file   vtkAntialiasingKit.h
+ * @brief  What the CPU stages of both methods (MLAA and DLAA) are built from (internal header).
+ *
+ * - Rect: a rectangle of pixels of one slice; RowsPerTask: the rows of one threaded task.
+ * - Progress: rows done, counted from every thread, reported and polled for abort on the calling
+ *   thread only (vtkImageAntialiasingAlgorithm makes one per update).
+ * - AccumulatorType: the floating-point type the typed stages compute in for a scalar type.
+ * - FeatureLayout, FeatureReader: the only typed step on the way in. One row of pixels of any
+ *   scalar type into planes of normalised features (luma, colour, CIELAB, depth, alpha), in
+ *   [0, 1] over the image's value range, NaN for non-finite values. MLAA's edge detection and
+ *   reconstruction read them; DLAA reads the colour features.
+ * - ByteBuffer: an uninitialised, reusable full-size buffer.
+ * - ConvertBlended: a blended value back to the scalar type, rounded and clamped.
+ *
+ * Rows and columns follow VTK's image layout: y grows towards the top of the displayed image,
+ * so "top" is the next row. All coordinates are those of the image's extent.
+ *
+ * Internal to MLAA::FiltersMLAA (tests and benchmarks include it); not installed.
+ */
+
+#ifndef vtkAntialiasingKit_h
+#define vtkAntialiasingKit_h
+
+#include "vtkFiltersMLAAModule.h" // For export macro
+#include "vtkMLAALab.h"
+#include "vtkMLAAOptions.h"
+#include "vtkType.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <thread>
+#include <type_traits>
+
+namespace vtkAntialiasingKit
+{
+/** Rows per task of the stages' threaded loops. */
+constexpr int RowsPerTask = 32;
+
+//------------------------------------------------------------------------------
+/** A rectangle of pixels of one slice, bounds included. */
+struct Rect
+{
+  int X0 = 0, X1 = -1, Y0 = 0, Y1 = -1;
+  int Width() const { return this->X1 - this->X0 + 1; }
+  int Height() const { return this->Y1 - this->Y0 + 1; }
+  bool Empty() const { return this->X1 < this->X0 || this->Y1 < this->Y0; }
+  bool Contains(int x, int y) const
+  {
+    return x >= this->X0 && x <= this->X1 && y >= this->Y0 && y <= this->Y1;
+  }
+  Rect Intersect(const Rect& o) const
+  {
+    return { std::max(this->X0, o.X0), std::min(this->X1, o.X1), std::max(this->Y0, o.Y0),
+      std::min(this->Y1, o.Y1) };
+  }
+  Rect Grown(int by) const
+  {
+    return { this->X0 - by, this->X1 + by, this->Y0 - by, this->Y1 + by };
+  }
+};
+
+//------------------------------------------------------------------------------
+/**
+ * Progress and cancellation of the stages' threaded loops. Rows are counted from every thread;
+ * the report callback (vtkAlgorithm::UpdateProgress) and the abort query (GetAbortExecute) are
+ * only called from the thread that created the object, between tasks, so observers of a
+ * ProgressEvent run where they expect to. Once aborted, the remaining tasks return at once.
+ */
+class VTKFILTERSMLAA_EXPORT Progress
+{
+public:
+  Progress(std::function<void(double)> report, std::function<bool()> aborted, vtkIdType totalRows);
+  Progress();
+
+  /** Count rows as done; from the creating thread, report progress and poll for an abort. */
+  void RowsDone(vtkIdType rows);
+  /** Whether the work was aborted (any thread). */
+  bool Aborted() const { return this->AbortFlag.load(std::memory_order_relaxed); }
+  /** Poll the abort query now (creating thread only). */
+  bool CheckAbort();
+
+private:
+  std::function<void(double)> Report;
+  std::function<bool()> AbortQuery;
+  vtkIdType Total = 1;
+  std::atomic<vtkIdType> Done{ 0 };
+  double LastReported = -1.0;
+  std::atomic<bool> AbortFlag{ false };
+  std::thread::id Owner;
+};
+
+//------------------------------------------------------------------------------
+// Features: the values compared across each pixel boundary, normalised so that the value range
+// of the image is [0, 1]. They mirror the texture fetches of the edge detection shader
+// (Rendering/glsl/vtkMLAAEdgeDetectionFS.glsl).
+/** What each pixel contributes to edge detection, from the options and the components. */
+struct FeatureLayout
+{
+  int Mode = vtkMLAAOptions::LUMA; // vtkMLAAOptions::EdgeDetectionModes
+  int Components = 3;              // of the image
+  bool HasAlpha = false;           // 2 or 4 components
+  int Count = 1;                   // features per pixel
+};
+VTKFILTERSMLAA_EXPORT FeatureLayout MakeFeatureLayout(int mode, int components);
+
+/**
+ * Edge detection of 8- and 16-bit and float images is done in float, as on the GPU; wider types
+ * use double.
+ */
+template <typename T>
+using AccumulatorType = typename std::conditional<(sizeof(T) <= 2 ||
+                                                    std::is_same<T, float>::value),
+  float, double>::type;
+
+/**
+ * Reads the features of rows of pixels of type T: normalised as (value - lo) * inverseRange,
+ * luma (Rec. 709, section 4.2.1; the first component of grey images), every channel (COLOR,
+ * alpha included), the depth (given per row, already normalised) or CIELAB (LAB: L/100, a/100,
+ * b/100, namespace Lab), then alpha. A pixel holding
+ * NaN or infinity gets NaN features, which are never an edge. For one-byte types the normalised
+ * values (and their products with the luma weights) come from tables built once, which give the
+ * same floats as the arithmetic.
+ */
+template <typename T, typename Acc>
+class FeatureReader
+{
+public:
+  FeatureReader(const FeatureLayout& layout, Acc lo, Acc inverseRange)
+    : Layout(layout)
+    , Lo(lo)
+    , InverseRange(inverseRange)
+  {
+    if (UseTables)
+    {
+      for (int i = 0; i < 256; ++i)
+      {
+        const Acc v = (static_cast<Acc>(static_cast<T>(i)) - lo) * inverseRange;
+        const unsigned char index = static_cast<unsigned char>(static_cast<T>(i));
+        this->Normalised[index] = v;
+        this->Luma[0][index] = Acc(0.2126) * v;
+        this->Luma[1][index] = Acc(0.7152) * v;
+        this->Luma[2][index] = Acc(0.0722) * v;
+        const Acc linear = Lab::Linearise(v);
+        for (int k = 0; k < 3; ++k)
+        {
+          for (int channel = 0; channel < 3; ++channel)
+          {
+            this->XYZ[k][channel][index] =
+              static_cast<Acc>(Lab::RelativeXYZ(k, channel)) * linear;
+          }
+        }
+      }
+    }
+  }
+
+  /**
+   * The features of `width` pixels at `p` (components interleaved) into `features`, one plane of
+   * `width` values per feature (feature k of pixel x at features[k * width + x]).
+   */
+  void Row(const T* p, int width, const double* depth, Acc* features) const
+  {
+    const int c = this->Layout.Components;
+    if (this->Layout.Mode == vtkMLAAOptions::LAB)
+    {
+      this->LabRow(p, width, features);
+      return;
+    }
+    if (std::is_floating_point<T>::value)
+    {
+      // Non-finite pixels: NaN features.
+      for (int x = 0; x < width; ++x)
+      {
+        bool finite = true;
+        for (int k = 0; k < c; ++k)
+        {
+          finite = finite && std::isfinite(static_cast<double>(p[x * c + k]));
+        }
+        if (finite)
+        {
+          this->Pixel(p + x * c, depth ? depth + x : nullptr, features + x, width);
+        }
+        else
+        {
+          for (int k = 0; k < this->Layout.Count; ++k)
+          {
+            features[k * width + x] = std::numeric_limits<Acc>::quiet_NaN();
+          }
+        }
+      }
+      return;
+    }
+    if (this->Layout.Mode == vtkMLAAOptions::LUMA && c == 3)
+    {
+      // The common cases without per-pixel branches: RGB luma, and every channel.
+      for (int x = 0; x < width; ++x, p += 3)
+      {
+        features[x] = this->LumaOf(p);
+      }
+      return;
+    }
+    if (this->Layout.Mode == vtkMLAAOptions::COLOR)
+    {
+      for (int k = 0; k < c; ++k)
+      {
+        Acc* plane = features + k * width;
+        for (int x = 0; x < width; ++x)
+        {
+          plane[x] = this->Normalise(p[x * c + k]);
+        }
+      }
+      return;
+    }
+    for (int x = 0; x < width; ++x)
+    {
+      this->Pixel(p + x * c, depth ? depth + x : nullptr, features + x, width);
+    }
+  }
+
+private:
+  static constexpr bool UseTables = sizeof(T) == 1;
+
+  // The first pixel of each run of equal pixels (all C components) of a row, in runStart;
+  // returns the number of runs.
+  template <int C>
+  static int FindRuns(const T* p, int width, int* runStart)
+  {
+    int runs = 0;
+    for (int x = 0; x < width; ++x)
+    {
+      const T* q = p + x * C;
+      bool same = x > 0;
+      for (int k = 0; k < C; ++k)
+      {
+        same = same && q[k] == q[k - C];
+      }
+      runStart[runs] = x;
+      runs += same ? 0 : 1;
+    }
+    return runs;
+  }
+
+  // LAB features (section 3.2 of Biri et al.): L/100, a/100, b/100 planes, then alpha. Grey
+  // images are grey sRGB (R = G = B). Plane by plane: XYZ relative to white (from tables for
+  // one-byte types), then f in branch-free loops, which vectorise, then L, a and b.
+  void LabRow(const T* p, int width, Acc* features) const
+  {
+    const int c = this->Layout.Components;
+    Acc* planes[3] = { features, features + width, features + 2 * static_cast<size_t>(width) };
+    const int second = c >= 3 ? 1 : 0; // grey: the one channel is R, G and B
+    const int third = c >= 3 ? 2 : 0;
+    // A pixel equal to the one before it takes its features: only the first pixel of each run
+    // of one colour (most of a rendered image is such runs) is converted, into the first
+    // `runs` entries of the planes, and the rows are expanded at the end. Run i starts at
+    // pixel runStart[i].
+    static thread_local std::vector<int> runStartStorage;
+    runStartStorage.resize(static_cast<size_t>(width) + 1);
+    int* runStart = runStartStorage.data();
+    int runs = 0;
+    switch (c)
+    {
+      case 1:
+        runs = this->FindRuns<1>(p, width, runStart);
+        break;
+      case 2:
+        runs = this->FindRuns<2>(p, width, runStart);
+        break;
+      case 3:
+        runs = this->FindRuns<3>(p, width, runStart);
+        break;
+      default:
+        runs = this->FindRuns<4>(p, width, runStart);
+        break;
+    }
+    runStart[runs] = width;
+    for (int i = 0; i < runs; ++i)
+    {
+      const T* q = p + static_cast<size_t>(runStart[i]) * c;
+      if (UseTables)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          planes[k][i] = this->XYZ[k][0][static_cast<unsigned char>(q[0])] +
+            this->XYZ[k][1][static_cast<unsigned char>(q[second])] +
+            this->XYZ[k][2][static_cast<unsigned char>(q[third])];
+        }
+      }
+      else
+      {
+        const Acc r = Lab::Linearise(this->Normalise(q[0]));
+        const Acc g = c >= 3 ? Lab::Linearise(this->Normalise(q[second])) : r;
+        const Acc b = c >= 3 ? Lab::Linearise(this->Normalise(q[third])) : r;
+        for (int k = 0; k < 3; ++k)
+        {
+          planes[k][i] = static_cast<Acc>(Lab::RelativeXYZ(k, 0)) * r +
+            static_cast<Acc>(Lab::RelativeXYZ(k, 1)) * g +
+            static_cast<Acc>(Lab::RelativeXYZ(k, 2)) * b;
+        }
+      }
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      Acc* plane = planes[k];
+      for (int i = 0; i < runs; ++i)
+      {
+        plane[i] = Lab::F(plane[i]);
+      }
+    }
+    for (int i = 0; i < runs; ++i)
+    {
+      Lab::FinishLab(planes[0][i], planes[1][i], planes[2][i]);
+    }
+    if (runs < width)
+    {
+      // Backwards, so that no run is overwritten before it is read (run i starts at or after
+      // pixel i).
+      for (int k = 0; k < 3; ++k)
+      {
+        Acc* plane = planes[k];
+        for (int i = runs - 1; i >= 0; --i)
+        {
+          std::fill(plane + runStart[i], plane + runStart[i + 1], plane[i]);
+        }
+      }
+    }
+    if (this->Layout.HasAlpha)
+    {
+      Acc* alpha = features + 3 * static_cast<size_t>(width);
+      for (int x = 0; x < width; ++x)
+      {
+        alpha[x] = this->Normalise(p[x * c + c - 1]);
+      }
+    }
+    if (std::is_floating_point<T>::value)
+    {
+      // Non-finite pixels: NaN features, which are never an edge and never unlike anything.
+      for (int x = 0; x < width; ++x)
+      {
+        bool finite = true;
+        for (int k = 0; k < c; ++k)
+        {
+          finite = finite && std::isfinite(static_cast<double>(p[x * c + k]));
+        }
+        if (!finite)
+        {
+          for (int k = 0; k < this->Layout.Count; ++k)
+          {
+            features[k * static_cast<size_t>(width) + x] = std::numeric_limits<Acc>::quiet_NaN();
+          }
+        }
+      }
+    }
+  }
+
+  Acc Normalise(T v) const
+  {
+    if (UseTables)
+    {
+      return this->Normalised[static_cast<unsigned char>(v)];
+    }
+    return (static_cast<Acc>(v) - this->Lo) * this->InverseRange;
+  }
+  Acc LumaOf(const T* p) const
+  {
+    if (UseTables)
+    {
+      return this->Luma[0][static_cast<unsigned char>(p[0])] +
+        this->Luma[1][static_cast<unsigned char>(p[1])] +
+        this->Luma[2][static_cast<unsigned char>(p[2])];
+    }
+    return Acc(0.2126) * this->Normalise(p[0]) + Acc(0.7152) * this->Normalise(p[1]) +
+      Acc(0.0722) * this->Normalise(p[2]);
+  }
+  // The features of one pixel, `plane` values apart.
+  void Pixel(const T* p, const double* depth, Acc* features, int plane) const
+  {
+    const int c = this->Layout.Components;
+    int f = 0;
+    switch (this->Layout.Mode)
+    {
+      case vtkMLAAOptions::COLOR:
+        for (int k = 0; k < c; ++k)
+        {
+          features[plane * f++] = this->Normalise(p[k]);
+        }
+        return; // alpha is one of the channels
+      case vtkMLAAOptions::DEPTH:
+        features[plane * f++] = static_cast<Acc>(*depth);
+        break;
+      default:
+        features[plane * f++] = c >= 3 ? this->LumaOf(p) : this->Normalise(p[0]);
+        break;
+    }
+    if (this->Layout.HasAlpha)
+    {
+      features[plane * f] = this->Normalise(p[c - 1]);
+    }
+  }
+
+  FeatureLayout Layout;
+  Acc Lo;
+  Acc InverseRange;
+  Acc Normalised[UseTables ? 256 : 1];
+  Acc Luma[3][UseTables ? 256 : 1];
+  Acc XYZ[3][3][UseTables ? 256 : 1]; // [XYZ component][channel][value]: contributions
+};
+
+//------------------------------------------------------------------------------
+/**
+ * Bytes that the stages write in full before reading them: allocated without being cleared, and
+ * kept when a later slice or update needs no more.
+ */
+class ByteBuffer
+{
+public:
+  void Reserve(size_t size)
+  {
+    if (size > this->Capacity)
+    {
+      this->Bytes.reset(new unsigned char[size]);
+      this->Capacity = size;
+    }
+    this->Size = size;
+  }
+  unsigned char* Get() { return this->Bytes.get(); }
+  const unsigned char* Get() const { return this->Bytes.get(); }
+  size_t GetSize() const { return this->Size; }
+
+private:
+  std::unique_ptr<unsigned char[]> Bytes;
+  size_t Capacity = 0;
+  size_t Size = 0;
+};
+
+//------------------------------------------------------------------------------
+template <typename T, typename Acc>
+T ConvertBlended(Acc v)
+{
+  if (std::is_floating_point<T>::value)
+  {
+    return static_cast<T>(v);
+  }
+  // Round to nearest and saturate, as a GPU stores a normalised value.
+  const Acc r = std::floor(v + Acc(0.5));
+  if (r <= static_cast<Acc>(std::numeric_limits<T>::lowest()))
+  {
+    return std::numeric_limits<T>::lowest();
+  }
+  if (r >= static_cast<Acc>(std::numeric_limits<T>::max()))
+  {
+    return std::numeric_limits<T>::max();
+  }
+  return static_cast<T>(r);
+}
+}
+
+#endif

@@ -1,0 +1,579 @@
+#include "vtkMLAABlendingWeights.h"
+
+#include "vtkMLAAAreaTexture.h"
+#include "vtkMLAAOptions.h"
+#include "vtkSMPTools.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstring>
+#include <map>
+#include <mutex>
+
+namespace vtkMLAAStages
+{
+void WeightsBuffer::Allocate(const Rect& extent)
+{
+  this->Extent = extent;
+  // Every entry is written by ComputeBlendingWeights.
+  this->Data.Reserve(extent.Empty() ? 0 : 4 * static_cast<size_t>(extent.Width()) * extent.Height());
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+// An area table quantised to 8 bits: blending weights are stored as 8-bit values, as in the
+// chapter's RGBA8 blending-weights texture, so the CPU filter and the GPU pass use the same
+// weights.
+std::vector<unsigned char> Quantised(const std::vector<float>& table)
+{
+  std::vector<unsigned char> quantised(table.size());
+  for (size_t i = 0; i < table.size(); ++i)
+  {
+    quantised[i] = static_cast<unsigned char>(std::nearbyint(table[i] * 255.0f));
+  }
+  return quantised;
+}
+
+// The quantised table of one maximum distance, made once and shared, as vtkMLAAAreaTexture
+// shares its float tables.
+using QuantisedTable = std::shared_ptr<const std::vector<unsigned char>>;
+QuantisedTable SharedQuantised(
+  int maxDistance, bool diagonal, std::shared_ptr<const std::vector<float>> (*table)(int))
+{
+  static std::mutex mutex;
+  static std::map<std::pair<int, bool>, QuantisedTable> cache;
+  std::lock_guard<std::mutex> lock(mutex);
+  QuantisedTable& entry = cache[{ maxDistance, diagonal }];
+  if (!entry)
+  {
+    entry = std::make_shared<const std::vector<unsigned char>>(Quantised(*table(maxDistance)));
+  }
+  return entry;
+}
+}
+
+void MakeWeightSettings(vtkMLAAOptions* options, WeightSettings& settings)
+{
+  const int maxDistance = options->GetMaxDistance();
+  settings.SearchSteps = options->GetMaxSearchSteps();
+  settings.Diagonals = options->GetDiagonalDetection();
+  settings.RunLengths = options->GetCountsExactLineLengths();
+  settings.CellSize = options->GetSearchReach();
+  settings.AreaSize = vtkMLAAAreaTexture::NumberOfCodes * settings.CellSize;
+  settings.DiagonalAreaSize = vtkMLAAAreaTexture::NumberOfDiagonalCodes * settings.CellSize;
+  settings.Area = SharedQuantised(maxDistance, false, &vtkMLAAAreaTexture::GetSharedTable);
+  settings.DiagonalArea = settings.Diagonals
+    ? SharedQuantised(maxDistance, true, &vtkMLAAAreaTexture::GetSharedDiagonalTable)
+    : nullptr;
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+// Section 4.3: the blending weights of one pixel from the edges around it.
+class WeightsComputer
+{
+public:
+  // The lengths of the staircases through the pixels of an extent, in each of their two
+  // directions, as SearchDiagonal counts them (ComputeDiagonalLengths); the entries of pixels
+  // that are not units of that kind of staircase are not written.
+  struct DiagonalLengths
+  {
+    Rect Extent;
+    LineLength* RisingDown = nullptr;  // rising units, towards (-1, -1)
+    LineLength* RisingUp = nullptr;    // rising units, towards (+1, +1)
+    LineLength* FallingUp = nullptr;   // falling units, towards (-1, +1)
+    LineLength* FallingDown = nullptr; // falling units, towards (+1, -1)
+    size_t Index(int x, int y) const
+    {
+      return static_cast<size_t>(y - this->Extent.Y0) * this->Extent.Width() + (x - this->Extent.X0);
+    }
+  };
+
+  WeightsComputer(const EdgesBuffer& edges, const Rect& whole, const WeightSettings& settings,
+    const DiagonalLengths* diagonalLengths = nullptr)
+    : E(edges)
+    , R(edges.Extent)
+    , Whole(whole)
+    , S(settings)
+    , D(diagonalLengths)
+  {
+  }
+
+  // The diagonal lengths of the columns x0..x1 of lengths.Extent, by the run-length recursion
+  // of the orthogonal lines along each diagonal (ComputeRowLineLengths): a unit's count towards
+  // a direction is 0 if the next pixel that way is no unit, else 1 plus that unit's count,
+  // capped at the maximum distance. Rows are scanned upwards for the directions that go down and
+  // downwards for those that go up. Where the next pixel lies outside the extent or the strip of
+  // columns, the count is searched unit by unit instead (SearchDiagonal), so strips are
+  // independent and the reads beyond the extent are those of the search. Must give the counts of
+  // searchDiagonal in Rendering/glsl/vtkMLAABlendingWeightsFS.glsl, which searches from every
+  // unit.
+  void ComputeDiagonalLengths(const DiagonalLengths& lengths, int x0, int x1) const
+  {
+    const Rect& ext = lengths.Extent; // within the edges' extent and the image
+    const int cap = this->S.CellSize - 1;
+    auto rising = [this](int u, int v) { return this->IsRisingUnit(u, v); };
+    auto falling = [this](int u, int v) { return this->IsFallingUnit(u, v); };
+    // Rows upwards for the directions that go down (rising towards (-1, -1), falling towards
+    // (+1, -1)), then downwards for those that go up ((+1, +1) and (-1, +1)).
+    for (const int dy : { -1, +1 })
+    {
+      LineLength* risingOut = dy < 0 ? lengths.RisingDown : lengths.RisingUp;
+      LineLength* fallingOut = dy < 0 ? lengths.FallingDown : lengths.FallingUp;
+      const int risingDx = dy;
+      const int fallingDx = -dy;
+      for (int y = dy < 0 ? ext.Y0 : ext.Y1; dy < 0 ? y <= ext.Y1 : y >= ext.Y0; y -= dy)
+      {
+        const int ny = y + dy;
+        const bool nextRow = ny >= ext.Y0 && ny <= ext.Y1;
+        const unsigned char* e = this->E.At(x0, y);
+        const unsigned char* n = nextRow ? this->E.At(x0, ny) : nullptr;
+        // The count of the unit at (x, y) whose next unit would be at (nx, ny), given whether that
+        // is a unit: from the next unit's count inside the strip, else searched.
+        auto count = [&](int x, int nx, bool isRising, bool nextIsUnit, const LineLength* out) {
+          if (!n || nx < x0 || nx > x1)
+          {
+            bool reachedEnd;
+            return isRising ? this->SearchDiagonal(x, y, risingDx, dy, rising, reachedEnd)
+                            : this->SearchDiagonal(x, y, fallingDx, dy, falling, reachedEnd);
+          }
+          return nextIsUnit ? std::min(cap, 1 + out[lengths.Index(nx, ny)]) : 0;
+        };
+        for (int x = x0; x <= x1; ++x)
+        {
+          const int i = x - x0;
+          // Both kinds of unit have the pixel's top edgel: eight pixels without one are skipped.
+          if (i % 8 == 0 && x + 7 <= x1 && !AnyEdgel<1>(e + 2 * i, 8))
+          {
+            x += 7;
+            continue;
+          }
+          if (!e[2 * i + 1])
+          {
+            continue;
+          }
+          // A rising unit: the pixel's two edgels (inside the image: no clamping).
+          if (e[2 * i])
+          {
+            const int nx = x + risingDx;
+            const int ni = nx - x0;
+            const bool next = n && nx >= x0 && nx <= x1 && n[2 * ni] && n[2 * ni + 1];
+            risingOut[lengths.Index(x, y)] =
+              static_cast<LineLength>(count(x, nx, true, next, risingOut));
+          }
+          // A falling unit: its top edgel and the left edgel of the pixel to its right (read
+          // through the clamped accessors at the strip's last column).
+          if (x < x1 ? e[2 * i + 2] != 0 : falling(x, y))
+          {
+            const int nx = x + fallingDx;
+            const int ni = nx - x0;
+            bool next = false;
+            if (n && nx >= x0 && nx <= x1)
+            {
+              next = nx < x1 ? (n[2 * ni + 1] && n[2 * ni + 2]) : falling(nx, ny);
+            }
+            fallingOut[lengths.Index(x, y)] =
+              static_cast<LineLength>(count(x, nx, false, next, fallingOut));
+          }
+        }
+      }
+    }
+  }
+
+  // The four weights of a pixel with edgels (see WeightsBuffer), given the lengths of its lines
+  // (ComputeRowLineLengths, ComputeColumnLineLengths): leftEnd and rightEnd along its row,
+  // up and down along its column; leftEnd -1: none given, they are searched. With DiagonalDetection, an edgel that is part of a 45-degree
+  // staircase takes its weights from the diagonal line instead (ComputeDiagonalWeights).
+  void Compute(int x, int y, int leftEnd, int rightEnd, int up, int down, unsigned char* w) const
+  {
+    w[0] = w[1] = w[2] = w[3] = 0;
+    bool top = this->E.Top(x, y);
+    bool left = this->E.Left(x, y);
+    if (leftEnd < 0)
+    {
+      // No lengths counted beforehand: search.
+      leftEnd = top ? this->SearchTopEdges(x, y, -1) : 0;
+      rightEnd = top ? this->SearchTopEdges(x, y, +1) : 0;
+      up = left ? this->SearchLeftEdges(x, y, +1) : 0;
+      down = left ? this->SearchLeftEdges(x, y, -1) : 0;
+    }
+    if (this->S.Diagonals)
+    {
+      this->ComputeDiagonalWeights(x, y, top, left, w);
+    }
+    if (top)
+    {
+      // A horizontal line: its ends lie to the left and to the right.
+      const int e1 = this->CrossingLeftEdges(x - leftEnd, y, y + 1);
+      const int e2 = this->CrossingLeftEdges(x + rightEnd + 1, y, y + 1);
+      this->LookUpArea(e1, e2, leftEnd, rightEnd, w);
+    }
+    if (left)
+    {
+      // A vertical line: its first end is the upper one.
+      const int e1 = this->CrossingTopEdges(x, x - 1, y + up);
+      const int e2 = this->CrossingTopEdges(x, x - 1, y - down - 1);
+      this->LookUpArea(e1, e2, up, down, w + 2);
+    }
+  }
+
+private:
+  // The edgels at (x, y) clamped to the available pixels, as a GPU reads a texture with
+  // clamp-to-edge.
+  const unsigned char* Clamped(int x, int y) const
+  {
+    return this->E.At(std::min(std::max(x, this->R.X0), this->R.X1),
+      std::min(std::max(y, this->R.Y0), this->R.Y1));
+  }
+  int TopAt(int x, int y) const { return this->Clamped(x, y)[1] ? 1 : 0; }
+  int LeftAt(int x, int y) const { return this->Clamped(x, y)[0] ? 1 : 0; }
+
+  // Section 4.3.1, searched (below vtkMLAAOptions::ExactLineLengthsSteps; the run lengths give the
+  // same numbers): distance from (x, y) to the end of its line of top edgels in direction dx
+  // (-1 left, +1 right), or of left edgels in direction dy (-1 down, +1 up). Each step looks at
+  // the next two pixels along the line, as the GPU does with two bilinear fetches:
+  // - the two edgels along the line (weighted 3:1, so that each can be told apart);
+  // - the crossing edgels (perpendicular ones, on either side of the line) at the boundary
+  //   before the first pixel and at the boundary between the two.
+  // The line ends before the first pixel without an edgel, or at the first boundary with a
+  // crossing edgel. Stopping at crossing edges (which the chapter's search does not, section
+  // 4.3.1 and 4.6) keeps the top and bottom outlines of one-pixel-wide lines apart.
+  int SearchTopEdges(int x, int y, int dx) const
+  {
+    for (int i = 0; i < this->S.SearchSteps; ++i)
+    {
+      const int first = x + dx * (2 * i + 1);
+      const int second = first + dx;
+      // Left edgels of the pixels right of the two boundaries, on this row and the one above.
+      const int nearOwner = std::max(first, first - dx);
+      const int midOwner = std::max(first, second);
+      if (this->LeftAt(nearOwner, y) || this->LeftAt(nearOwner, y + 1) || !this->TopAt(first, y))
+      {
+        return 2 * i;
+      }
+      if (this->LeftAt(midOwner, y) || this->LeftAt(midOwner, y + 1) || !this->TopAt(second, y))
+      {
+        return 2 * i + 1;
+      }
+    }
+    return 2 * this->S.SearchSteps;
+  }
+  int SearchLeftEdges(int x, int y, int dy) const
+  {
+    for (int i = 0; i < this->S.SearchSteps; ++i)
+    {
+      const int first = y + dy * (2 * i + 1);
+      const int second = first + dy;
+      // Top edgels of the pixels below the two boundaries, in this column and the one left.
+      const int nearOwner = std::min(first, first - dy);
+      const int midOwner = std::min(first, second);
+      if (this->TopAt(x, nearOwner) || this->TopAt(x - 1, nearOwner) || !this->LeftAt(x, first))
+      {
+        return 2 * i;
+      }
+      if (this->TopAt(x, midOwner) || this->TopAt(x - 1, midOwner) || !this->LeftAt(x, second))
+      {
+        return 2 * i + 1;
+      }
+    }
+    return 2 * this->S.SearchSteps;
+  }
+
+  // Section 4.3.2: the crossing-edge code at an end of a line, 3 * (edgel on the owning pixel's
+  // side) + (edgel on the opposite side), as the bilinear fetch a quarter pixel off the edge
+  // reads it. Ends outside the image have no crossing edge.
+  int CrossingLeftEdges(int x, int ownY, int oppositeY) const
+  {
+    if (x < this->Whole.X0 || x > this->Whole.X1)
+    {
+      return 0;
+    }
+    return 3 * this->LeftAt(x, ownY) + this->LeftAt(x, oppositeY);
+  }
+  int CrossingTopEdges(int ownX, int oppositeX, int y) const
+  {
+    if (y < this->Whole.Y0 || y > this->Whole.Y1)
+    {
+      return 0;
+    }
+    return 3 * this->TopAt(ownX, y) + this->TopAt(oppositeX, y);
+  }
+
+  // Edgels for the diagonal search: none outside the image.
+  int DiagonalTopAt(int x, int y) const
+  {
+    return this->Whole.Contains(x, y) ? this->TopAt(x, y) : 0;
+  }
+  int DiagonalLeftAt(int x, int y) const
+  {
+    return this->Whole.Contains(x, y) ? this->LeftAt(x, y) : 0;
+  }
+  // A unit of a rising staircase: a pixel with both edgels. A unit of a falling one, named by its
+  // pixel q: q's top edgel and its right neighbour's left edgel.
+  bool IsRisingUnit(int x, int y) const
+  {
+    return this->DiagonalTopAt(x, y) && this->DiagonalLeftAt(x, y);
+  }
+  bool IsFallingUnit(int x, int y) const
+  {
+    return this->DiagonalTopAt(x, y) && this->DiagonalLeftAt(x + 1, y);
+  }
+
+  // Number of further units of the staircase through the unit at (x, y) in direction
+  // (dx, dy), at most the maximum distance; `reachedEnd` tells whether the staircase ended
+  // within it.
+  template <typename IsUnit>
+  int SearchDiagonal(int x, int y, int dx, int dy, IsUnit isUnit, bool& reachedEnd) const
+  {
+    const int maxDistance = this->S.CellSize - 1;
+    for (int k = 1; k <= maxDistance; ++k)
+    {
+      if (!isUnit(x + k * dx, y + k * dy))
+      {
+        reachedEnd = true;
+        return k - 1;
+      }
+    }
+    reachedEnd = false;
+    return maxDistance;
+  }
+
+  // End code of vtkMLAAAreaTexture::ComputeDiagonalAreas from what the staircase does past its
+  // end: a run along x ("flatter") or along y ("steeper"), each of which shifts the line into or
+  // out of the unit's pixel depending on the end and on the slope. Both or neither: nothing.
+  static int DiagonalEndCode(bool reachedEnd, bool flatter, bool steeper, int flatterCode)
+  {
+    if (!reachedEnd || flatter == steeper)
+    {
+      return 0;
+    }
+    return flatter ? flatterCode : 3 - flatterCode;
+  }
+
+  // Weights of the edgels of (x, y) that belong to a staircase of at least
+  // vtkMLAAOptions::MinimumDiagonalLength units; `top` and `left` are cleared for the edgels
+  // handled here, which the orthogonal search then skips.
+  //
+  // Rising (up and to the right): units (x0 + k, y0 + k); the unit's pixel takes the colour above
+  // and left of it, the pixels above and left of it take its colour. The first end is the
+  // lower-left one.
+  // Falling (down and to the right): units q = (x0 + k, y0 - k) with r = q + (1, 0); q takes the
+  // colour above it (r of the unit before) and right of it (r); r takes q's colour. The first end
+  // is the upper-left one.
+  void ComputeDiagonalWeights(int x, int y, bool& top, bool& left, unsigned char* w) const
+  {
+    constexpr int minLength = vtkMLAAOptions::MinimumDiagonalLength;
+    constexpr int Out = 1;
+    constexpr int In = 2;
+    if (top && left)
+    {
+      auto isUnit = [this](int u, int v) { return this->IsRisingUnit(u, v); };
+      bool end1, end2;
+      const int d1 = this->DiagonalLength(x, y, -1, -1, true, isUnit, end1);
+      const int d2 = this->DiagonalLength(x, y, +1, +1, true, isUnit, end2);
+      if (d1 + d2 + 1 >= minLength)
+      {
+        const int x1 = x - d1, y1 = y - d1; // first unit
+        const int x2 = x + d2, y2 = y + d2; // last unit
+        const int e1 = DiagonalEndCode(end1, this->DiagonalTopAt(x1 - 1, y1 - 1) != 0,
+          this->DiagonalLeftAt(x1, y1 - 1) != 0, Out);
+        const int e2 = DiagonalEndCode(end2, this->DiagonalTopAt(x2 + 1, y2) != 0,
+          this->DiagonalLeftAt(x2 + 1, y2 + 1) != 0, In);
+        const unsigned char* a = this->DiagonalArea(e1, e2, d1, d2);
+        w[0] = w[2] = a[0];
+        w[1] = a[2]; // the pixel above lies after this unit along the line
+        w[3] = a[1]; // the pixel to the left lies before it
+        top = left = false;
+        return;
+      }
+    }
+    auto isFalling = [this](int u, int v) { return this->IsFallingUnit(u, v); };
+    // Falling staircases: this pixel as q (its top edgel) or as r (its left edgel).
+    for (int role = 0; role < 2; ++role)
+    {
+      const bool asQ = role == 0;
+      if (!(asQ ? top : left))
+      {
+        continue;
+      }
+      const int qx = asQ ? x : x - 1;
+      if (!this->IsFallingUnit(qx, y))
+      {
+        continue;
+      }
+      bool end1, end2;
+      const int d1 = this->DiagonalLength(qx, y, -1, +1, false, isFalling, end1);
+      const int d2 = this->DiagonalLength(qx, y, +1, -1, false, isFalling, end2);
+      if (d1 + d2 + 1 < minLength)
+      {
+        continue;
+      }
+      const int x1 = qx - d1, y1 = y + d1; // first unit (upper left)
+      const int x2 = qx + d2, y2 = y - d2; // last unit (lower right)
+      const int e1 = DiagonalEndCode(
+        end1, this->DiagonalTopAt(x1 - 1, y1) != 0, this->DiagonalLeftAt(x1, y1 + 1) != 0, In);
+      const int e2 = DiagonalEndCode(end2, this->DiagonalTopAt(x2 + 1, y2 - 1) != 0,
+        this->DiagonalLeftAt(x2 + 1, y2 - 1) != 0, Out);
+      const unsigned char* a = this->DiagonalArea(e1, e2, d1, d2);
+      if (asQ)
+      {
+        w[0] = a[0]; // q takes the colour above it
+        w[1] = a[1]; // the pixel above q is the r of the unit before
+        top = false;
+      }
+      else
+      {
+        w[2] = a[2]; // r lies after q along the line
+        w[3] = a[0]; // q takes r's colour
+        left = false;
+      }
+    }
+  }
+
+  const unsigned char* DiagonalArea(int e1, int e2, int d1, int d2) const
+  {
+    const int d = this->S.CellSize;
+    const size_t texel = static_cast<size_t>(d * e2 + d2) * this->S.DiagonalAreaSize + (d * e1 + d1);
+    return this->S.DiagonalArea->data() + 3 * texel;
+  }
+
+  void LookUpArea(int e1, int e2, int d1, int d2, unsigned char* w) const
+  {
+    const int d = this->S.CellSize;
+    const size_t texel = static_cast<size_t>(d * e2 + d2) * this->S.AreaSize + (d * e1 + d1);
+    const unsigned char* a = this->S.Area->data() + 2 * texel;
+    w[0] = a[0];
+    w[1] = a[1];
+  }
+
+  // SearchDiagonal from a unit, from the diagonal lengths where they were computed.
+  template <typename IsUnit>
+  int DiagonalLength(int x, int y, int dx, int dy, bool isRising, IsUnit isUnit,
+    bool& reachedEnd) const
+  {
+    if (this->D && this->D->Extent.Contains(x, y))
+    {
+      const LineLength* lengths = isRising
+        ? (dx < 0 ? this->D->RisingDown : this->D->RisingUp)
+        : (dx < 0 ? this->D->FallingUp : this->D->FallingDown);
+      const int d = lengths[this->D->Index(x, y)];
+      reachedEnd = d < this->S.CellSize - 1;
+      return d;
+    }
+    return this->SearchDiagonal(x, y, dx, dy, isUnit, reachedEnd);
+  }
+
+  const EdgesBuffer& E;
+  const Rect R;
+  const Rect Whole;
+  const WeightSettings& S;
+  const DiagonalLengths* D;
+};
+}
+
+void ComputeBlendingWeights(const EdgesBuffer& edges, const Rect& whole,
+  const WeightSettings& settings, WeightsBuffer& weights, Progress& progress)
+{
+  const Rect r = weights.Extent;
+  if (r.Empty())
+  {
+    return;
+  }
+  const int maxDistance = settings.CellSize - 1;
+  const size_t pixels = static_cast<size_t>(r.Width()) * r.Height();
+  // The lengths of the staircases (DiagonalDetection) through the pixels of the extent, in
+  // strips of columns.
+  WeightsComputer::DiagonalLengths diagonal;
+  const bool diagonalRuns = settings.Diagonals && settings.RunLengths;
+  if (diagonalRuns)
+  {
+    weights.DiagonalLengths.Reserve(4 * pixels * sizeof(LineLength));
+    LineLength* base = reinterpret_cast<LineLength*>(weights.DiagonalLengths.Get());
+    diagonal.Extent = r;
+    diagonal.RisingDown = base;
+    diagonal.RisingUp = base + pixels;
+    diagonal.FallingUp = base + 2 * pixels;
+    diagonal.FallingDown = base + 3 * pixels;
+    const WeightsComputer searcher(edges, whole, settings);
+    constexpr int strip = 256;
+    vtkSMPTools::For(0, (r.Width() + strip - 1) / strip, 1, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const int x0 = r.X0 + static_cast<int>(i) * strip;
+        searcher.ComputeDiagonalLengths(diagonal, x0, std::min(r.X1, x0 + strip - 1));
+      }
+    });
+  }
+  const WeightsComputer computer(edges, whole, settings, diagonalRuns ? &diagonal : nullptr);
+  // The up and down lengths of every pixel of the extent (the columns are scanned in strips),
+  // the left and right ones row by row in each task.
+  const bool runs = settings.RunLengths;
+  weights.ColumnLengths.Reserve(runs ? 2 * pixels * sizeof(LineLength) : 0);
+  LineLength* down = reinterpret_cast<LineLength*>(weights.ColumnLengths.Get());
+  LineLength* up = down + pixels;
+  if (runs)
+  {
+    ComputeColumnLineLengths(edges, r, maxDistance, down, up);
+  }
+  if (progress.CheckAbort())
+  {
+    return;
+  }
+  const int edgesWidth = edges.Extent.Width();
+  vtkSMPTools::For(0, r.Height(), RowsPerTask, [&](vtkIdType begin, vtkIdType end) {
+    if (progress.Aborted())
+    {
+      return;
+    }
+    std::vector<LineLength> rowLengths(runs ? 2 * static_cast<size_t>(edgesWidth) : 0);
+    LineLength* left = rowLengths.data();
+    LineLength* right = left + edgesWidth;
+    const int offset = r.X0 - edges.Extent.X0;
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      const int y = r.Y0 + static_cast<int>(i);
+      const unsigned char* e = edges.At(r.X0, y);
+      unsigned char* w = weights.At(r.X0, y);
+      const size_t column = static_cast<size_t>(i) * r.Width();
+      if (runs)
+      {
+        ComputeRowLineLengths(edges, y, maxDistance, left, right);
+      }
+      // Most pixels have no edgel: four at a time are skipped; their weights are not written.
+      for (int x = r.X0; x <= r.X1;)
+      {
+        if (x + 4 <= r.X1 + 1)
+        {
+          std::uint64_t four;
+          std::memcpy(&four, e + 2 * (x - r.X0), sizeof(four));
+          if (four == 0)
+          {
+            x += 4;
+            continue;
+          }
+        }
+        const int i = x - r.X0;
+        if (e[2 * i] | e[2 * i + 1])
+        {
+          // Lengths are only computed for pixels with the edgel they belong to.
+          if (!runs)
+          {
+            computer.Compute(x, y, -1, -1, -1, -1, w + 4 * i);
+            ++x;
+            continue;
+          }
+          const bool hasTop = e[2 * i + 1] != 0;
+          const bool hasLeft = e[2 * i] != 0;
+          computer.Compute(x, y, hasTop ? left[offset + i] : 0, hasTop ? right[offset + i] : 0,
+            hasLeft ? up[column + i] : 0, hasLeft ? down[column + i] : 0, w + 4 * i);
+        }
+        ++x;
+      }
+    }
+    progress.RowsDone(end - begin);
+  });
+}
+}

@@ -1,0 +1,250 @@
+#include "vtkMLAAEdgeDetection.h"
+
+#include "vtkSMPTools.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace vtkMLAAStages
+{
+//------------------------------------------------------------------------------
+void EdgesBuffer::Allocate(const Rect& extent)
+{
+  this->Extent = extent;
+  // Every entry is written by DetectEdges.
+  this->Data.Reserve(extent.Empty() ? 0 : 2 * static_cast<size_t>(extent.Width()) * extent.Height());
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+// The contrasts across the left and the top boundaries of the pixels of one row (0: not an
+// edge), each with a zero entry before the first and after the last pixel ([-1] and [w]).
+template <typename Acc>
+struct ContrastRow
+{
+  Acc* Left;
+  Acc* Top;
+};
+
+// The contrasts of rows and the edgels that local contrast adaptation keeps.
+template <typename Acc>
+class EdgeDetector
+{
+public:
+  EdgeDetector(int features, const EdgeSettings& settings)
+    : F(features)
+    , E(settings.EuclideanFeatures == 3 && features >= 3 ? 3 : 1)
+    , Threshold(static_cast<Acc>(settings.Threshold))
+    , Factor(static_cast<Acc>(settings.LocalContrastFactor))
+  {
+  }
+
+  // The contrast across a boundary: the largest difference of a feature that is at least the
+  // threshold (and more than nothing, so that a zero threshold means "any difference"), else 0.
+  // NaN differences are never edges.
+  Acc Contrast(Acc a, Acc b) const { return this->Kept(std::abs(a - b)); }
+  Acc Kept(Acc d) const { return (d >= this->Threshold && d > Acc(0)) ? d : Acc(0); }
+
+  // The contrasts of one row of w pixels with features f, and the row above with features g
+  // (null where there is no row above: no top edges); features in planes of w values. The
+  // largest over the features is taken plane by plane, which vectorises.
+  void Contrasts(const Acc* f, const Acc* g, ContrastRow<Acc> b, int w) const
+  {
+    b.Left[-1] = b.Left[w] = b.Top[-1] = b.Top[w] = Acc(0);
+    b.Left[0] = Acc(0);
+    if (this->E == 3)
+    {
+      // LAB: Delta E / 100, the Euclidean distance of (L, a, b) / 100 (Biri et al., 3.2).
+      const Acc* f1 = f + w;
+      const Acc* f2 = f + 2 * w;
+      for (int x = 1; x < w; ++x)
+      {
+        const Acc d0 = f[x] - f[x - 1];
+        const Acc d1 = f1[x] - f1[x - 1];
+        const Acc d2 = f2[x] - f2[x - 1];
+        b.Left[x] = this->Kept(std::sqrt(d0 * d0 + d1 * d1 + d2 * d2));
+      }
+    }
+    else
+    {
+      for (int x = 1; x < w; ++x)
+      {
+        b.Left[x] = this->Contrast(f[x], f[x - 1]);
+      }
+    }
+    for (int k = this->E; k < this->F; ++k)
+    {
+      const Acc* plane = f + k * w;
+      for (int x = 1; x < w; ++x)
+      {
+        const Acc c = this->Contrast(plane[x], plane[x - 1]);
+        b.Left[x] = c > b.Left[x] ? c : b.Left[x];
+      }
+    }
+    if (!g)
+    {
+      std::fill(b.Top, b.Top + w, Acc(0));
+      return;
+    }
+    if (this->E == 3)
+    {
+      const Acc* f1 = f + w;
+      const Acc* f2 = f + 2 * w;
+      const Acc* g1 = g + w;
+      const Acc* g2 = g + 2 * w;
+      for (int x = 0; x < w; ++x)
+      {
+        const Acc d0 = f[x] - g[x];
+        const Acc d1 = f1[x] - g1[x];
+        const Acc d2 = f2[x] - g2[x];
+        b.Top[x] = this->Kept(std::sqrt(d0 * d0 + d1 * d1 + d2 * d2));
+      }
+    }
+    else
+    {
+      for (int x = 0; x < w; ++x)
+      {
+        b.Top[x] = this->Contrast(f[x], g[x]);
+      }
+    }
+    for (int k = this->E; k < this->F; ++k)
+    {
+      const Acc* plane = f + k * w;
+      const Acc* planeAbove = g + k * w;
+      for (int x = 0; x < w; ++x)
+      {
+        const Acc c = this->Contrast(plane[x], planeAbove[x]);
+        b.Top[x] = c > b.Top[x] ? c : b.Top[x];
+      }
+    }
+  }
+
+  // The edgels of one row that local contrast adaptation (vtkMLAAOptions::LocalContrastFactor)
+  // keeps, from the contrasts of the row (b) and of the rows below and above it: an edge whose
+  // contrast, times the factor, is below the contrast of one of the six other boundaries of the
+  // two pixels it separates is dropped.
+  void KeepEdgels(ContrastRow<Acc> below, ContrastRow<Acc> b, ContrastRow<Acc> above,
+    unsigned char* edges, int w) const
+  {
+    const Acc factor = this->Factor;
+    // Most boundaries are not edges: clear the row, and skip runs of pixels whose contrasts are
+    // all +0 (contrasts are never negative or NaN), 16 bytes of each at a time.
+    std::fill(edges, edges + 2 * static_cast<size_t>(w), 0);
+    constexpr int chunk = static_cast<int>(16 / sizeof(Acc));
+    for (int x = 0; x < w; ++x)
+    {
+      if (x % chunk == 0 && x + chunk <= w)
+      {
+        std::uint64_t bits[4];
+        std::memcpy(bits, b.Left + x, 16);
+        std::memcpy(bits + 2, b.Top + x, 16);
+        if ((bits[0] | bits[1] | bits[2] | bits[3]) == 0)
+        {
+          x += chunk - 1;
+          continue;
+        }
+      }
+      const Acc left = b.Left[x];
+      const Acc top = b.Top[x];
+      if (!(left > Acc(0)) && !(top > Acc(0)))
+      {
+        continue;
+      }
+      unsigned char* edge = edges + 2 * x;
+      edge[0] = (left > Acc(0) &&
+                   (factor == Acc(0) ||
+                     factor * left >= std::max({ b.Left[x - 1], b.Left[x + 1], b.Top[x - 1], top,
+                                        below.Top[x - 1], below.Top[x] })))
+        ? 255
+        : 0;
+      edge[1] = (top > Acc(0) &&
+                   (factor == Acc(0) ||
+                     factor * top >= std::max({ below.Top[x], above.Top[x], left, b.Left[x + 1],
+                                       above.Left[x], above.Left[x + 1] })))
+        ? 255
+        : 0;
+    }
+  }
+
+private:
+  int F;
+  int E; // leading features compared by Euclidean distance (1 or 3)
+  Acc Threshold;
+  Acc Factor;
+};
+}
+
+//------------------------------------------------------------------------------
+// Section 4.2: the contrast across every boundary (0 where it is not an edge), then the edgels
+// that local contrast adaptation keeps. Each task takes a band of rows and computes the
+// contrasts of its rows and of the rows just below and above it (which adaptation reads) from
+// the features of those rows, so no full-size buffer but the edges is needed.
+template <typename Acc>
+void DetectEdges(const std::function<void(int, Acc*)>& readRow, int features,
+  const EdgeSettings& settings, EdgesBuffer& edges, Progress& progress)
+{
+  const Rect r = edges.Extent;
+  if (r.Empty())
+  {
+    return;
+  }
+  const int w = r.Width();
+  const int h = r.Height();
+  const EdgeDetector<Acc> detector(features, settings);
+  vtkSMPTools::For(0, h, RowsPerTask, [&](vtkIdType begin, vtkIdType end) {
+    if (progress.Aborted())
+    {
+      return;
+    }
+    // Contrast rows begin - 1 .. end, row i at index i + 1 - begin.
+    const int rows = static_cast<int>(end - begin) + 2;
+    const size_t stride = static_cast<size_t>(w) + 2;
+    std::unique_ptr<Acc[]> band(new Acc[2 * stride * rows]);
+    auto contrastRow = [&](int i) {
+      Acc* left = band.get() + 2 * stride * (i + 1 - begin);
+      return ContrastRow<Acc>{ left + 1, left + stride + 1 };
+    };
+    std::vector<Acc> current(static_cast<size_t>(w) * features);
+    std::vector<Acc> above(current.size());
+    const int first = std::max(0, static_cast<int>(begin) - 1);
+    const int last = std::min(h - 1, static_cast<int>(end));
+    for (int i = static_cast<int>(begin) - 1; i <= static_cast<int>(end); ++i)
+    {
+      if (i < first || i > last)
+      {
+        // Outside the extent: no boundaries.
+        const ContrastRow<Acc> b = contrastRow(i);
+        std::fill(b.Left - 1, b.Left + w + 1, Acc(0));
+        std::fill(b.Top - 1, b.Top + w + 1, Acc(0));
+      }
+    }
+    readRow(r.Y0 + first, current.data());
+    for (int i = first; i <= last; ++i)
+    {
+      // The top row of the extent has no top edge; the top row of a piece has one that is
+      // never read (the padding covers every read), so it is left out.
+      const bool hasAbove = i + 1 < h;
+      if (hasAbove)
+      {
+        readRow(r.Y0 + i + 1, above.data());
+      }
+      detector.Contrasts(current.data(), hasAbove ? above.data() : nullptr, contrastRow(i), w);
+      std::swap(current, above);
+    }
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      const int row = static_cast<int>(i);
+      detector.KeepEdgels(contrastRow(row - 1), contrastRow(row), contrastRow(row + 1),
+        edges.At(r.X0, r.Y0 + row), w);
+    }
+    progress.RowsDone(end - begin);
+  });
+}
+
+template VTKFILTERSMLAA_EXPORT void DetectEdges<float>(const std::function<void(int, float*)>&,
+  int, const EdgeSettings&, EdgesBuffer&, Progress&);
+template VTKFILTERSMLAA_EXPORT void DetectEdges<double>(const std::function<void(int, double*)>&,
+  int, const EdgeSettings&, EdgesBuffer&, Progress&);
+}

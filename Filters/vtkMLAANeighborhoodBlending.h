@@ -1,0 +1,214 @@
+/**
+ * @file   vtkMLAANeighborhoodBlending.h
+ * @brief  MLAA stage 4, neighbourhood blending (GPU Pro 2 chapter, section 4.4); the twin of
+ *         Rendering/glsl/vtkMLAANeighborhoodBlendingFS.glsl.
+ *
+ * BlendRow, the only typed step on the way out, blends each pixel with its four neighbours by
+ * the blending weights; WriteDebugImage writes the edges or the weights instead (the pass's
+ * debug outputs).
+ *
+ * Internal to MLAA::FiltersMLAA (tests and benchmarks include it); not installed.
+ */
+
+#ifndef vtkMLAANeighborhoodBlending_h
+#define vtkMLAANeighborhoodBlending_h
+
+#include "vtkAntialiasingKit.h"
+#include "vtkFiltersMLAAModule.h" // For export macro
+#include "vtkMLAABlendingWeights.h"
+#include "vtkMLAAEdgeDetection.h"
+
+namespace vtkMLAAStages
+{
+// The kit's names (Rect, Progress, FeatureReader, ...) are this namespace's too.
+using namespace vtkAntialiasingKit;
+
+//------------------------------------------------------------------------------
+// Stage 4: neighbourhood blending (section 4.4, typed).
+
+/** The 8-bit weights as the blending reads them: value / 255 in float. */
+VTKFILTERSMLAA_EXPORT const float* WeightValues();
+
+/** Settings of the blending, from vtkMLAAOptions and the image. */
+struct BlendSettings
+{
+  bool Dominant = true;          // vtkMLAAOptions::DominantDirectionBlending
+  bool StraightAlpha = false;    // alpha present and not premultiplied
+  double AlphaLo = 0.0;          // normalisation of the alpha channel
+  double AlphaInverseRange = 1.0;
+};
+
+/**
+ * Row y of the output: each pixel of `out` (columns out.X0..X1) mixed with its four neighbours
+ * by the weights, c' = sum_k a_k ((1 - a_k) c + a_k c_k) / sum_k a_k, which for a single edge is
+ * equation 4.1; pixels without weights are copied. `pixel(x, y)` gives the input pixel (all
+ * components); only neighbours with a weight are read, and those lie within the weights' extent.
+ * With DominantDirectionBlending, a pixel on both a horizontal and a vertical line blends along
+ * the one with the larger weight only. With straight alpha, the colour channels are averaged
+ * weighted by alpha as well (premultiply, blend, divide by the blended alpha), so the colour of
+ * transparent pixels never leaks into their neighbours; where the alphas that take part are all
+ * equal, that changes nothing and the plain formula is used.
+ */
+template <typename T, typename Acc, typename PixelAt>
+void BlendRow(int y, const Rect& out, int components, const EdgesBuffer& edges,
+  const WeightsBuffer& weights, const BlendSettings& settings, PixelAt pixel, T* output)
+{
+  const float* value = WeightValues();
+  const Rect& wr = weights.Extent;
+  const int c = components;
+  std::copy(pixel(out.X0, y), pixel(out.X0, y) + static_cast<size_t>(out.Width()) * c, output);
+  if (y < wr.Y0 || y > wr.Y1)
+  {
+    return;
+  }
+  const bool hasBelow = y - 1 >= wr.Y0;
+  const int x0 = std::max(out.X0, wr.X0);
+  const int x1 = std::min(out.X1, wr.X1);
+  const unsigned char* e = edges.At(x0, y);
+  const unsigned char* eBelow = hasBelow ? edges.At(x0, y - 1) : nullptr;
+  const unsigned char* w = weights.At(x0, y);
+  const unsigned char* wBelow = hasBelow ? weights.At(x0, y - 1) : nullptr;
+  // A pixel is blended where it has an edgel of its own, where the pixel below has a top edgel
+  // or where the pixel on its right has a left edgel; only then are the weights read (the
+  // weights of pixels without edgels are never written). Most pixels have none: four pixels
+  // at a time are skipped with one test on the edges.
+  constexpr std::uint64_t topMask = 0xFF00FF00FF00FF00ull;
+  constexpr std::uint64_t leftMask = 0x00FF00FF00FF00FFull;
+  const bool littleEndian = [] {
+    const std::uint16_t one = 1;
+    unsigned char first;
+    std::memcpy(&first, &one, 1);
+    return first == 1;
+  }();
+  for (int x = x0; x <= x1; ++x, e += 2, w += 4, eBelow = eBelow ? eBelow + 2 : nullptr,
+           wBelow = wBelow ? wBelow + 4 : nullptr)
+  {
+    if (littleEndian && x + 3 <= x1 && x + 4 <= wr.X1)
+    {
+      // Pixels x to x + 3: their edgels, the top edgels below them and the left edgels of the
+      // pixels right of them (x + 1 to x + 4, all within the weights).
+      std::uint64_t own, below = 0, right;
+      std::memcpy(&own, e, 8);
+      std::memcpy(&right, e + 2, 8);
+      if (eBelow)
+      {
+        std::memcpy(&below, eBelow, 8);
+      }
+      if ((own | (below & topMask) | (right & leftMask)) == 0)
+      {
+        x += 3;
+        e += 6;
+        w += 12;
+        eBelow = eBelow ? eBelow + 6 : nullptr;
+        wBelow = wBelow ? wBelow + 12 : nullptr;
+        continue;
+      }
+    }
+    const bool top = e[1] != 0;
+    const bool left = e[0] != 0;
+    const bool fromBelow = eBelow && eBelow[1];
+    const bool fromRight = x < wr.X1 && e[2];
+    if (!top && !left && !fromBelow && !fromRight)
+    {
+      continue;
+    }
+    Acc a[4] = { top ? static_cast<Acc>(value[w[0]]) : Acc(0),
+      fromBelow ? static_cast<Acc>(value[wBelow[1]]) : Acc(0),
+      left ? static_cast<Acc>(value[w[2]]) : Acc(0),
+      fromRight ? static_cast<Acc>(value[w[4 + 3]]) : Acc(0) };
+    if (settings.Dominant)
+    {
+      // DominantDirectionBlending: on a corner, only the line with the larger weight counts.
+      const Acc vertical = std::max(a[0], a[1]);
+      const Acc horizontal = std::max(a[2], a[3]);
+      if (vertical > horizontal)
+      {
+        a[2] = a[3] = Acc(0);
+      }
+      else if (horizontal > vertical)
+      {
+        a[0] = a[1] = Acc(0);
+      }
+    }
+    const Acc sum = a[0] + a[1] + a[2] + a[3];
+    if (!(sum > Acc(0)))
+    {
+      continue;
+    }
+    const T* p = pixel(x, y);
+    // Neighbours that are not blended in are never read (they may lie outside the input).
+    const T* neighbours[4] = { a[0] > Acc(0) ? pixel(x, y + 1) : p,
+      a[1] > Acc(0) ? pixel(x, y - 1) : p, a[2] > Acc(0) ? pixel(x - 1, y) : p,
+      a[3] > Acc(0) ? pixel(x + 1, y) : p };
+    T* q = output + static_cast<size_t>(x - out.X0) * c;
+    int first = 0; // the first channel blended by the plain formula
+    if (settings.StraightAlpha)
+    {
+      // Straight alpha: blend the colours premultiplied, unless all alphas taking part agree.
+      const Acc alpha = static_cast<Acc>(p[c - 1]);
+      bool equal = true;
+      for (int n = 0; n < 4; ++n)
+      {
+        equal = equal && (!(a[n] > Acc(0)) || static_cast<Acc>(neighbours[n][c - 1]) == alpha);
+      }
+      if (!equal)
+      {
+        first = c - 1;
+        auto coverage = [&settings, c](const T* px) {
+          const double v =
+            (static_cast<double>(px[c - 1]) - settings.AlphaLo) * settings.AlphaInverseRange;
+          return static_cast<Acc>(std::min(1.0, std::max(0.0, v)));
+        };
+        const Acc ownCoverage = coverage(p);
+        Acc mixedAlpha = 0;
+        Acc mixed[3] = { 0, 0, 0 };
+        for (int n = 0; n < 4; ++n)
+        {
+          if (a[n] > Acc(0))
+          {
+            const Acc selfShare = a[n] * (Acc(1) - a[n]) * ownCoverage;
+            const Acc otherShare = a[n] * a[n] * coverage(neighbours[n]);
+            mixedAlpha += selfShare + otherShare;
+            for (int k = 0; k < c - 1; ++k)
+            {
+              mixed[k] += selfShare * static_cast<Acc>(p[k]) +
+                otherShare * static_cast<Acc>(neighbours[n][k]);
+            }
+          }
+        }
+        if (mixedAlpha > Acc(0))
+        {
+          for (int k = 0; k < c - 1; ++k)
+          {
+            q[k] = ConvertBlended<T>(mixed[k] / mixedAlpha);
+          }
+        }
+        // else: everything that takes part is fully transparent; the colour stays.
+      }
+    }
+    for (int k = first; k < c; ++k)
+    {
+      const Acc v = static_cast<Acc>(p[k]);
+      Acc blended = 0;
+      for (int n = 0; n < 4; ++n)
+      {
+        if (a[n] > Acc(0))
+        {
+          blended += a[n] * ((Acc(1) - a[n]) * v + a[n] * static_cast<Acc>(neighbours[n][k]));
+        }
+      }
+      q[k] = ConvertBlended<T>(blended / sum);
+    }
+  }
+}
+
+/**
+ * One of the debug images of vtkMLAAOptions (8-bit RGBA, rows of out.Width() pixels) for the
+ * pixels of `out`: the edges or the blending weights.
+ */
+VTKFILTERSMLAA_EXPORT void WriteDebugImage(int debugOutput, const EdgesBuffer& edges,
+  const WeightsBuffer& weights, const Rect& out, unsigned char* rgba);
+
+}
+
+#endif

@@ -1,0 +1,316 @@
+/**
+ * @file   vtkMLAAReconstruction.h
+ * @brief  MLAA stage 0 (optional), topological reconstruction (second paper, section 4); the twin
+ *         of Rendering/glsl/vtkMLAAReconstructionFS.glsl.
+ *
+ * Reconstruct, typed, runs before the features when vtkMLAAOptions::Reconstruction is on; its
+ * output replaces the input of every later stage. The selection rule is vtkMLAATopology's.
+ *
+ * Internal to MLAA::FiltersMLAA (tests and benchmarks include it); not installed.
+ */
+
+#ifndef vtkMLAAReconstruction_h
+#define vtkMLAAReconstruction_h
+
+#include "vtkAntialiasingKit.h"
+#include "vtkMLAATopology.h"
+#include "vtkSMPTools.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace vtkMLAAStages
+{
+// The kit's names (Rect, Progress, FeatureReader, ...) are this namespace's too.
+using namespace vtkAntialiasingKit;
+
+//------------------------------------------------------------------------------
+// Stage 0 (optional): topological reconstruction (Biri et al., section 4), typed; runs before
+// the features when vtkMLAAOptions::Reconstruction is on, and its output replaces the input of
+// every later stage.
+
+/**
+ * Whether two pixels with LAB features (FeatureReader in LAB mode, `count` planes `plane`
+ * values apart) are unlike for reconstruction: Delta E / 100 at least the threshold (and more
+ * than 0), or, with alpha (count 4), the alpha difference likewise: the boundary between them
+ * would be a LAB edge before local contrast adaptation. NaN features (non-finite pixels) are
+ * never unlike anything. Distances are compared squared, which is the same test.
+ * Must match unlike() in Rendering/glsl/vtkMLAAReconstructionFS.glsl.
+ */
+template <typename Acc>
+bool Unlike(const Acc* p, const Acc* q, size_t plane, int count, Acc threshold2)
+{
+  const Acc d0 = p[0] - q[0];
+  const Acc d1 = p[plane] - q[plane];
+  const Acc d2 = p[2 * plane] - q[2 * plane];
+  const Acc e2 = d0 * d0 + d1 * d1 + d2 * d2;
+  if (e2 >= threshold2 && e2 > Acc(0))
+  {
+    return true;
+  }
+  if (count > 3)
+  {
+    const Acc da = p[3 * plane] - q[3 * plane];
+    const Acc a2 = da * da;
+    return a2 >= threshold2 && a2 > Acc(0);
+  }
+  return false;
+}
+
+/**
+ * Unlike for pixels first..last - 1 of a row of features `a` against `b` (the same row, or the
+ * one below or above, offset to the neighbour): `value` is or-ed into mask[x] where they are
+ * unlike. One branch-free loop per direction.
+ */
+template <typename Acc, bool Alpha>
+void UnlikeMasks(const Acc* a, const Acc* b, size_t plane, Acc threshold2, unsigned char value,
+  int first, int last, unsigned char* mask)
+{
+  const Acc* a1 = a + plane;
+  const Acc* a2 = a + 2 * plane;
+  const Acc* a3 = a + 3 * plane;
+  const Acc* b1 = b + plane;
+  const Acc* b2 = b + 2 * plane;
+  const Acc* b3 = b + 3 * plane;
+  for (int x = first; x < last; ++x)
+  {
+    const Acc d0 = a[x] - b[x];
+    const Acc d1 = a1[x] - b1[x];
+    const Acc d2 = a2[x] - b2[x];
+    const Acc e2 = d0 * d0 + d1 * d1 + d2 * d2;
+    bool unlike = (e2 >= threshold2) & (e2 > Acc(0));
+    if (Alpha)
+    {
+      const Acc da = a3[x] - b3[x];
+      const Acc a2d = da * da;
+      unlike = unlike | ((a2d >= threshold2) & (a2d > Acc(0)));
+    }
+    mask[x] |= unlike ? value : static_cast<unsigned char>(0);
+  }
+}
+
+/**
+ * The neighbour masks (bits as vtkMLAATopology) of pixels first..last - 1 of a row from the
+ * comparisons of Reconstruct (1 where unlike): toE[x] with the pixel right of x, toN, toNE and
+ * toNW[x] with the pixels above, and those of the row below, whose entries at x, x - 1 and
+ * x + 1 are the comparisons of pixel x with its S, SW and SE neighbours.
+ */
+inline void CombineUnlike(const unsigned char* __restrict toE,
+  const unsigned char* __restrict toNE, const unsigned char* __restrict toN,
+  const unsigned char* __restrict toNW, const unsigned char* __restrict belowNE,
+  const unsigned char* __restrict belowN, const unsigned char* __restrict belowNW, int first,
+  int last, unsigned char* __restrict mask)
+{
+  for (int x = first; x < last; ++x)
+  {
+    mask[x] = static_cast<unsigned char>(toE[x] | (toNE[x] << 1) | (toN[x] << 2) |
+      (toNW[x] << 3) | (toE[x - 1] << 4) | (belowNE[x - 1] << 5) | (belowN[x] << 6) |
+      (belowNW[x + 1] << 7));
+  }
+}
+
+/** What reconstruction needs of a slice (vtkMLAAStages.h: SliceSetup::GetReconstruction). */
+struct ReconstructionSettings
+{
+  Rect Input;            // the pixels available, which are reconstructed
+  int Components = 3;    // of the image
+  double Threshold = 0.1; // vtkMLAAOptions::Threshold, as Delta E / 100 (LAB edges)
+  double Lo = 0.0;       // normalisation: value -> (value - Lo) / (Hi - Lo)
+  double Hi = 1.0;
+};
+
+/**
+ * Section 4.3: the reconstructed pixels of setup.Input into `output` (rows of
+ * setup.Input.Width() pixels, packed). `input` points at the first pixel of setup.Input (rows
+ * `inputRowStride` values apart); reads beyond setup.Input are clamped to it (the halo keeps
+ * those reads away from the output, and at the image border they are clamped as a GPU clamps
+ * texture reads). For each pixel A, X is the mask of its neighbours unlike A (Unlike, threshold
+ * setup.Threshold; bits as vtkMLAATopology). A is selected when
+ * vtkMLAATopology::GetSelectionTable() says so and the X pixels are pairwise not unlike (one
+ * colour: the shape); it then becomes the mean of its X pixels, every component, rounded to
+ * nearest for integer types. Every other pixel is copied. All decisions read the original
+ * pixels.
+ * Must match Rendering/glsl/vtkMLAAReconstructionFS.glsl.
+ */
+template <typename T>
+void Reconstruct(const ReconstructionSettings& setup, const T* input, vtkIdType inputRowStride, T* output,
+  Progress& progress)
+{
+  using Acc = AccumulatorType<T>;
+  const Rect& in = setup.Input;
+  if (in.Empty())
+  {
+    return;
+  }
+  const int w = in.Width();
+  const int h = in.Height();
+  const int c = setup.Components;
+  const FeatureLayout layout = MakeFeatureLayout(vtkMLAAOptions::LAB, c);
+  const int count = layout.Count;
+  const size_t plane = static_cast<size_t>(w);
+  const FeatureReader<T, Acc> reader(
+    layout, static_cast<Acc>(setup.Lo), static_cast<Acc>(1.0 / (setup.Hi - setup.Lo)));
+  const Acc threshold = static_cast<Acc>(setup.Threshold);
+  const Acc threshold2 = threshold * threshold;
+  const unsigned char* selected = vtkMLAATopology::GetSelectionTable();
+  int offsets[8][2];
+  for (int bit = 0; bit < 8; ++bit)
+  {
+    vtkMLAATopology::GetNeighborOffset(bit, offsets[bit][0], offsets[bit][1]);
+  }
+  auto pixel = [&](int x, int y) { return input + y * inputRowStride + static_cast<vtkIdType>(x) * c; };
+
+  vtkSMPTools::For(0, h, RowsPerTask, [&](vtkIdType begin, vtkIdType end) {
+    if (progress.Aborted())
+    {
+      return;
+    }
+    // The LAB features of rows begin - 1 .. end (clamped), row i at index i + 1 - begin.
+    const int first = static_cast<int>(begin) - 1;
+    const int rows = static_cast<int>(end - begin) + 2;
+    const size_t rowSize = plane * count;
+    std::unique_ptr<Acc[]> band(new Acc[rowSize * rows]);
+    for (int i = 0; i < rows; ++i)
+    {
+      const int y = std::min(std::max(first + i, 0), h - 1);
+      reader.Row(pixel(0, y), w, nullptr, band.get() + rowSize * i);
+    }
+    // Whether pixels are unlike their neighbours, each pair compared once (Unlike is
+    // symmetric): along each band row (x, x + 1), and between band rows i and i + 1 (x with x,
+    // x + 1 and x - 1 above it), over the columns where both pixels exist. Branch-free loops
+    // that vectorise.
+    const size_t uw = static_cast<size_t>(w);
+    std::vector<unsigned char> along(rows * uw, 0);
+    std::vector<unsigned char> up((rows - 1) * uw, 0);
+    std::vector<unsigned char> upRight((rows - 1) * uw, 0);
+    std::vector<unsigned char> upLeft((rows - 1) * uw, 0);
+    auto compare = [&](const Acc* a, const Acc* b, int from, int to, unsigned char* out) {
+      if (count > 3)
+      {
+        UnlikeMasks<Acc, true>(a, b, plane, threshold2, 1, from, to, out);
+      }
+      else
+      {
+        UnlikeMasks<Acc, false>(a, b, plane, threshold2, 1, from, to, out);
+      }
+    };
+    for (int i = 0; i < rows; ++i)
+    {
+      const Acc* here = band.get() + rowSize * i;
+      if (i > 0 && i < rows - 1)
+      {
+        compare(here, here + 1, 0, w - 1, along.data() + i * uw);
+      }
+      if (i < rows - 1)
+      {
+        const Acc* above = here + rowSize;
+        compare(here, above, 0, w, up.data() + i * uw);
+        compare(here, above + 1, 0, w - 1, upRight.data() + i * uw);
+        compare(here, above - 1, 1, w, upLeft.data() + i * uw);
+      }
+    }
+    std::vector<unsigned char> masks(uw);
+    for (vtkIdType row = begin; row < end; ++row)
+    {
+      const int y = static_cast<int>(row);
+      T* out = output + static_cast<size_t>(y) * w * c;
+      std::copy(pixel(0, y), pixel(0, y) + static_cast<size_t>(w) * c, out);
+      // The features of the rows below, at and above y.
+      const int j = y - first; // band row of y
+      const Acc* around[3] = { band.get() + rowSize * (j - 1), band.get() + rowSize * j,
+        band.get() + rowSize * (j + 1) };
+      // The masks of the unlike neighbours of the inner columns from the comparisons above
+      // (bits as vtkMLAATopology: E, NE, N, NW, W, SW, S, SE), then those of the first and
+      // last columns, whose reads are clamped.
+      unsigned char* mask = masks.data();
+      const unsigned char* toE = along.data() + j * uw;
+      const unsigned char* toN = up.data() + j * uw;
+      const unsigned char* toNE = upRight.data() + j * uw;
+      const unsigned char* toNW = upLeft.data() + j * uw;
+      const unsigned char* toS = up.data() + (j - 1) * uw;
+      const unsigned char* toSW = upRight.data() + (j - 1) * uw; // from (x - 1, y - 1)
+      const unsigned char* toSE = upLeft.data() + (j - 1) * uw;  // from (x + 1, y - 1)
+      CombineUnlike(toE, toNE, toN, toNW, toSW, toS, toSE, 1, w - 1, mask);
+      for (int x : { 0, w - 1 })
+      {
+        mask[x] = 0; // (a single column is done twice, to the same result)
+        for (int bit = 0; bit < 8; ++bit)
+        {
+          const int nx = std::min(std::max(x + offsets[bit][0], 0), w - 1);
+          mask[x] |= Unlike(around[1] + x, around[1 + offsets[bit][1]] + nx, plane, count, threshold2)
+            ? static_cast<unsigned char>(1 << bit)
+            : 0;
+        }
+      }
+      for (int x = 0; x < w; ++x)
+      {
+        if ((x & 7) == 0 && x + 8 <= w)
+        {
+          // Most pixels have no unlike neighbour: eight at a time are skipped.
+          std::uint64_t eight;
+          std::memcpy(&eight, mask + x, sizeof(eight));
+          if (eight == 0)
+          {
+            x += 7;
+            continue;
+          }
+        }
+        if (!selected[mask[x]])
+        {
+          continue;
+        }
+        int neighbourX[8];
+        const Acc* features[8];
+        for (int bit = 0; bit < 8; ++bit)
+        {
+          neighbourX[bit] = std::min(std::max(x + offsets[bit][0], 0), w - 1);
+          features[bit] = around[1 + offsets[bit][1]] + neighbourX[bit];
+        }
+        const int unlike = mask[x];
+        // The shape is one colour: its pixels are pairwise alike.
+        bool oneColour = true;
+        for (int i = 0; i < 8 && oneColour; ++i)
+        {
+          for (int j = i + 1; j < 8 && oneColour; ++j)
+          {
+            if (((unlike >> i) & (unlike >> j) & 1) &&
+              Unlike(features[i], features[j], plane, count, threshold2))
+            {
+              oneColour = false;
+            }
+          }
+        }
+        if (!oneColour)
+        {
+          continue;
+        }
+        // The mean of the shape's pixels, every component.
+        double sum[4] = { 0, 0, 0, 0 };
+        int n = 0;
+        for (int bit = 0; bit < 8; ++bit)
+        {
+          if ((unlike >> bit) & 1)
+          {
+            const int ny = std::min(std::max(y + offsets[bit][1], 0), h - 1);
+            const T* q = pixel(neighbourX[bit], ny);
+            for (int k = 0; k < c; ++k)
+            {
+              sum[k] += static_cast<double>(q[k]);
+            }
+            ++n;
+          }
+        }
+        for (int k = 0; k < c; ++k)
+        {
+          out[static_cast<size_t>(x) * c + k] = ConvertBlended<T>(sum[k] / n);
+        }
+      }
+    }
+    progress.RowsDone(end - begin);
+  });
+}
+
+}
+
+#endif
