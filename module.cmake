@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 # The project's single list of VTK modules, and the VTK module scan/build that turns them into
 # libraries. VTK 9 reads each module's declaration from its `vtk.module` file; this file says
 # which of them the project builds.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkAntialiasingKit.h
  * @brief  What the CPU stages of both methods (MLAA and DLAA) are built from (internal header).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkAntialiasingOptionsHelpers.h
  * @brief  Helpers shared by the option classes vtkMLAAOptions and vtkDLAAOptions (internal).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkDLAAOptions
  * @brief   The settings of directionally localized antialiasing (DLAA), shared by the CPU filter

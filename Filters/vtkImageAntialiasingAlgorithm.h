@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkImageAntialiasingAlgorithm
  * @brief   What the CPU antialiasing filters (vtkImageMLAA, vtkImageDLAA) share: the value

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkImageDLAA
  * @brief   Directionally localized antialiasing (DLAA) of images, on the CPU.

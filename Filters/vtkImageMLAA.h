@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkImageMLAA
  * @brief   Morphological antialiasing (MLAA) of images, on the CPU.

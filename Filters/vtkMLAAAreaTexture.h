@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkMLAAAreaTexture
  * @brief   The precomputed area texture of morphological antialiasing (the one generator).

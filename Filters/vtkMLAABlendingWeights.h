@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkMLAABlendingWeights.h
  * @brief  MLAA stage 3, blending weights (GPU Pro 2 chapter, section 4.3); the twin of

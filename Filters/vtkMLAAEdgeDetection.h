@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkMLAAEdgeDetection.h
  * @brief  MLAA stage 2, edge detection (GPU Pro 2 chapter, section 4.2); the twin of

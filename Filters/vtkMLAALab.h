@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkMLAALab.h
  * @brief  sRGB to CIELAB for the CPU stages (internal header); the twin of

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkMLAALineLengths.h
  * @brief  MLAA line lengths counted as run lengths (second paper, section 3.3); the twin of

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkMLAANeighborhoodBlending.h
  * @brief  MLAA stage 4, neighbourhood blending (GPU Pro 2 chapter, section 4.4); the twin of

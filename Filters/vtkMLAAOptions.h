@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkMLAAOptions
  * @brief   The settings of morphological antialiasing, shared by the CPU filter and the GPU pass.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkMLAAReconstruction.h
  * @brief  MLAA stage 0 (optional), topological reconstruction (second paper, section 4); the twin

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkMLAAStages.h
  * @brief  The CPU MLAA of vtkImageMLAA on one slice: the stages of the GPU pass, run in order

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkMLAATopology
  * @brief   Connexity numbers and the pixel selection rule of topological reconstruction.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkOpenGLAntialiasingPass
  * @brief   Abstract render pass that antialiases a renderer's image with full-screen shader

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Small helpers of the antialiasing passes (vtkOpenGLAntialiasingPass and its subclasses): render
 // targets that are resized in place, #define lines of shader variants. Private header.
 #ifndef vtkOpenGLAntialiasingPassInternals_h

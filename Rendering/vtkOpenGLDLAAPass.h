@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkOpenGLDLAAPass
  * @brief   Render pass that antialiases a renderer's image with directionally localized

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Writes vtkMLAAConfig.cmake and vtkMLAAConfigVersion.cmake for the build tree and for the
 # install tree. vtk_module_build exports the targets and module properties but writes no
 # <Package>Config.cmake of its own.

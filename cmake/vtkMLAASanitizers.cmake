@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 # vtkMLAA_set_sanitizer_environment(): called at the end of each CMakeLists.txt that adds tests.
 # With vtkMLAA_ENABLE_ASAN it gives every test of that directory the environment of an
 # AddressSanitizer + LeakSanitizer run, so ctest needs no special environment and the programs

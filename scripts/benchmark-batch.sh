@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Frames per second of `mlaa --output-dir` (one process for the whole batch) against the same
 # work done by running `mlaa INPUT OUTPUT` once per file, on synthetic aliased frames.
 #   scripts/benchmark-batch.sh [FRAMES [WIDTH HEIGHT [MLAA]]]

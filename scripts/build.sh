@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Configures and builds vtkMLAA (libraries, tools, examples, tests).
 #   scripts/build.sh [BUILD_DIR] [extra cmake arguments...]
 # BUILD_DIR defaults to build/ in the source tree.

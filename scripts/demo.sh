@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 # The main job: installs what is needed, builds vtkMLAA, renders the demo scene without and with
 # the MLAA render pass, and writes the comparison picture mlaa-demo.png (top: the two renders;
 # bottom: magnified crops, none | MLAA).

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs the Debian 12 packages vtkMLAA needs to build, test and run (VTK 9.1 and its Python
 # with numpy, OpenImageIO, Xvfb with Mesa's llvmpipe for offscreen OpenGL). Packages already
 # present are skipped, so a machine that has them all needs no root rights and no network.

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs what the ParaView plugin (ParaView/) needs beside the main project's packages:
 # ParaView 5.11 with its development files, Open MPI's mpirun, and ParaView's Python package.
 #

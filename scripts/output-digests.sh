@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Prints one line per output, "NAME SHA-1 of the pixels", for a fixed set of inputs and option
 # sets run through the mlaa tool (CPU filter) and the demo (GPU pass under Xvfb). Run it before
 # and after a change that must not change any output, and compare:

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Builds the ParaView plugin (ParaView/) against Debian's ParaView 5.11 into build-paraview/ and
 # runs its tests (pvbatch on one and two ranks, under Xvfb).
 #   scripts/test-paraview.sh [MAIN_BUILD_DIR]

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs what is needed, builds vtkMLAA with its tests, and runs every test (rendering tests
 # offscreen under Xvfb; the Python package's tests with /usr/bin/python3). Then builds the
 # ParaView plugin against Debian's ParaView 5.11 and runs its pvbatch tests on one and two MPI

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Runs a command with its own virtual X display (Xvfb; Mesa's llvmpipe renders OpenGL), which
 # VTK's X11 render windows need even offscreen. Xvfb picks a free display number itself
 # (-displayfd), so several of these can run at once. -noreset: an X server normally resets when

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * What the `mlaa` tool does when it cannot go on: the library messages it was holding back
  * reach the terminal, and the temporary output file goes away.

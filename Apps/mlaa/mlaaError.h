@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * The errors of the `mlaa` tool: mlaa::Error, a failure to report (exit status 1), and
  * mlaa::UsageError, a bad command line (exit status 2). Their messages are one line without the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * Image files for the `mlaa` tool: reading any file OpenImageIO reads into a vtkImageData, and
  * writing a vtkImageData so that the destination is either the complete new image or left as

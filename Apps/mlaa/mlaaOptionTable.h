@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * The options of the `mlaa` tool, in one table (mlaa::GetOptions): for each option its
  * spelling, the kind of value it takes and that value's range or names, which method's filter it

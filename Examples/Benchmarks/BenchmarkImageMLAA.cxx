@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // mlaa-benchmark-cpu: the CPU speed measure of the project's MEASURING.md.
 //
 // On one RGB image (by default a 1920x1080 single-sample render of the "mixed" scene, or a PNG

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // mlaa-benchmark-gpu: the GPU speed measure of the project's MEASURING.md.
 //
 // Renders one scene (default "mixed") offscreen, single-sample (SetMultiSamples(0)), at one size

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // mlaa-quality: the quality measure of the project's MEASURING.md on the shared scenes.
 //
 // For each scene, rendered offscreen at one size with one camera, it renders

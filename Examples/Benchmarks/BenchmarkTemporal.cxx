@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // mlaa-temporal: the temporal-stability measure of the project's MEASURING.md.
 //
 // For each scene it renders a slow camera orbit of K frames (the camera turned about its focal

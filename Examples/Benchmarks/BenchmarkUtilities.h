@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Small helpers shared by the three benchmark programs of Examples/Benchmarks: command-line
 // parsing, a stopwatch and order statistics. Header-only; not part of any library.
 #ifndef BenchmarkUtilities_h

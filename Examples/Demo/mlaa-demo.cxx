@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // mlaa-demo: renders a scene offscreen without antialiasing and with vtkOpenGLMLAAPass, and writes
 // one comparison picture: the two renders side by side (left: none, right: MLAA), and below them
 // magnified crops of the two regions where MLAA changed the most (nearest-neighbour, so pixels

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Gallery: add MLAA to an existing VTK application.
 //
 //   mlaa-gallery-add-pass [--output FILE.png] [--without-mlaa]

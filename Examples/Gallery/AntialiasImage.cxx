@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Gallery: antialias an image file with vtkImageMLAA.
 //
 //   mlaa-gallery-antialias-image INPUT OUTPUT [--preset low|medium|high|ultra]

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Gallery: antialias every image of a directory.
 //
 //   mlaa-gallery-batch INPUT_DIR OUTPUT_DIR [--preset low|medium|high|ultra]

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Gallery: compare antialiasing methods side by side on one scene.
 //
 //   mlaa-gallery-compare [--output FILE.png] [--size WxH] [--zoom N]

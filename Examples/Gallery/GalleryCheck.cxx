@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The gallery tests' checker (not an example).
 //
 //   mlaa-gallery-check antialiased BEFORE AFTER MIN_CHANGED

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // What the gallery examples that antialias files share (AntialiasImage.cxx, BatchDirectory.cxx):
 // reading and writing image files with VTK's own readers and writers, and the --preset
 // argument. The `mlaa` tool reads and writes with OpenImageIO instead, for more formats and

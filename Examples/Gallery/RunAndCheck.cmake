@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Runs one gallery program and checks its exit status and what it printed, for the gallery tests
 # (a plain CTest test checks either the exit status or the output, not both).
 #   cmake -DPROGRAM=... "-DARGS=a|b" -DEXPECT_RESULT=N [-DEXPECT_OUTPUT=regex (stdout)]

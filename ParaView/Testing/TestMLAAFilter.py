@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 """The MLAAAntialiasing and DLAAAntialiasing filters on a distributed image: their output equals
 that of vtkImageMLAA and vtkImageDLAA run outside ParaView (the main project's `mlaa` tool) on
 the same whole image, with the default settings, custom settings and (MLAA) a preset, on one

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 """The plugin in the ParaView GUI: run as the GUI's start-up script,
 
     paraview --plugin-search-paths=DIR --plugins=MLAA --script=TestMLAAGui.py

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Loading without LoadPlugin: with PV_PLUGIN_PATH naming the plugin's folder, pvbatch loads it
 at start-up and paraview.simple offers the filter and the view."""
 

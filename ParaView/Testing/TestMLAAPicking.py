@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Selection and picking in the MLAA render view: the cells that a surface selection (single
 pixels and a rubber band, over the interior and along the silhouettes) returns are the same with
 UseMLAA on and off, and the view still antialiases after a selection."""

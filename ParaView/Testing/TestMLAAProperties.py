@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 """The properties of the MLAAAntialiasing filter, the MLAA render view and the DLAAAntialiasing
 filter: their defaults are vtkMLAAOptions's and vtkDLAAOptions's own (read back from the server
 objects through the options proxies' information properties), and QualityPreset replaces the

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 """One rank against two: the MLAA view's MLAA screenshots of TestMLAAView.py on one rank and on
 two ranks agree within 2/255 (the DLAA ones are compared and the difference printed, a known
 limitation), except where the plain (UseMLAA off) screenshots already differ

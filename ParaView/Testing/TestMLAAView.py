@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 """The MLAA render view: with UseMLAA on, the screenshot is antialiased (edge pixels change,
 flat regions do not) and equals, within 2/255, vtkImageMLAA run outside ParaView (the `mlaa`
 tool, which the project's tests hold equal to the GPU pass within 2/255) on the screenshot with

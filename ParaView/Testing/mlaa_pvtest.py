@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 """What the plugin's pvbatch tests share: their arguments, loading the plugin, gathering a
 distributed image on the first rank, image files, running the `mlaa` tool, and comparisons.
 

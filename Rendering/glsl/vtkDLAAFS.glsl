@@ -1,4 +1,6 @@
 //VTK::System::Dec
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 //VTK::Output::Dec
 //VTK::Antialiasing::Dec
 

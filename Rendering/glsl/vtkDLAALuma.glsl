@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The luminosity function of directionally localized antialiasing (vtkDLAAOptions::LumaFunction),
 // shared by the DLAA shaders: DLAA_LUMA 0 is Rec. 709 luma, 1 the green channel alone.
 float luma(vec4 c)

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // CIELAB features for the MLAA shaders (Biri et al., "Morphological antialiasing and
 // topological reconstruction", section 3.2). vtkOpenGLMLAAPass puts this file in place of
 // //VTK::MLAA::Lab in the shaders that compare colours in CIELAB (the edge detection in Lab

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Helpers for the offscreen rendering tests of vtkOpenGLMLAAPass: a renderer with the pass,
 // crops, and a strict baseline comparison (VTK's own is too loose to show that antialiasing ran).
 #ifndef vtkMLAARenderTestUtilities_h

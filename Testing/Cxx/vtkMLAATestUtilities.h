@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Helpers shared by the vtkMLAA tests: building small images, running the filter, and strict
 // image comparisons (VTK's regression comparison is too loose to show that antialiasing ran; see
 // the project's ENVIRONMENT notes).

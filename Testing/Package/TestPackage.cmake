@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 # ctest script: installs the build tree into a fresh prefix, then configures, builds and runs the
 # consumer project of this directory against the build tree (-DvtkMLAA_DIR=<build>) or the
 # install prefix (CMAKE_PREFIX_PATH), and checks the installed layout.

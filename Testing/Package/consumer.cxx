@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Uses both modules through their installed headers: antialiases a small staircase with
 // vtkImageMLAA and creates a vtkOpenGLMLAAPass sharing its options (no rendering: no display
 // needed). Exit status 0 when the staircase was antialiased.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Scientific-visualization scenes used by the vtkMLAA tests, the demo, and the quality and speed
 // benchmarks: shaded silhouettes, thin and thick lines, a wireframe, an iso-surface, glyphs, a
 // texture, text with a scalar bar, and a mixed scene. One definition, so that every program

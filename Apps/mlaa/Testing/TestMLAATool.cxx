@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of the `mlaa` command-line tool, one case per ctest test:
 //
 //   TestMLAATool CASE MLAA_EXECUTABLE SCRATCH_DIRECTORY RANDOM_CASES MLAA_TEST_HOOKS_EXECUTABLE

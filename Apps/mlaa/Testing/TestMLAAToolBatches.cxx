@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Cases of TestMLAATool: batches (--output-dir).
 #include "mlaaToolTestSupport.h"
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * Checks that the option list of docs/mlaa-tool.md is the one the tool's option table
  * (mlaaOptionTable.h) makes: the text between the markers

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Cases of TestMLAATool: errors: exit status 1 for failures, 2 for bad command lines.
 #include "mlaaToolTestSupport.h"
 

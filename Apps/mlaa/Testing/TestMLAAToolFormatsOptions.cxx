@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Cases of TestMLAATool: the formats round-tripped, each option, the debug images, the area texture and --help.
 #include "mlaaToolTestSupport.h"
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Cases of TestMLAATool: hostile and random files, and a library crash surfaced.
 #include "mlaaToolTestSupport.h"
 

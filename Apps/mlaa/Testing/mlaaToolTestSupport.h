@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Support of the tests of the `mlaa` tool (TestMLAATool and its groups of cases): where the
 // files are, image files written and read independently of the tool, running the tool as a
 // child process and checking what it did, the test images and the reference filters, and the

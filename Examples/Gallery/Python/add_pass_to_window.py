@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Gallery: add MLAA to an existing VTK application, from Python.
 
     add_pass_to_window.py [--output FILE.png] [--without-mlaa]

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Gallery: antialias an image file with vtkImageMLAA (or vtkImageDLAA), from Python.
 
     antialias_image.py INPUT OUTPUT [--preset low|medium|high|ultra] [--method mlaa|dlaa]

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Gallery: antialias every image of a directory (frames of an animation, a folder of
 screenshots), from Python.
 

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Gallery: compare antialiasing methods side by side on one scene, from Python.
 
     compare_methods.py [--output FILE.png] [--size WxH] [--zoom N]

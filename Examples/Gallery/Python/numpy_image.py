@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Gallery: antialias a numpy array (an image you computed, or one from another library).
 
     numpy_image.py [--save FILE.npz]

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of vtkDLAAOptions: defaults (the talk's), clamping, names, copying, ownership.
 #include "vtkDLAAOptions.h"
 #include "vtkMLAATestUtilities.h"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Bad input to vtkImageDLAA: a clear error message and an empty output, never a crash or a
 // partial result; then the same filter works again on good input. And NaN and infinity: a
 // pixel that reads one (within the short-edge cross, and with long edges within the long-edge

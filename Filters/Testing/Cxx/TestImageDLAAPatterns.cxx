@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkImageDLAA on small synthetic patterns whose results follow by hand from the method in
 // vtkDLAAOptions: straight edges are unchanged (blurring along an edge changes nothing), a
 // one-pixel step gets the short-edge blend, a long nearly horizontal edge with 20-pixel steps

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkImageDLAA against a plain transcription of the method in vtkDLAAOptions: every pixel
 // computed on its own in double precision, reading its neighbours through a clamped accessor,
 // with no shared intermediate buffers. On random block images (edges of every contrast, long

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Streaming, threading, progress and pipeline behaviour of vtkImageDLAA: it pads its input
 // request by its reach (10 pixels, 2 without long edges), so processing an image in pieces
 // (explicit update extents, vtkImageDataStreamer) gives exactly the pixels of processing it

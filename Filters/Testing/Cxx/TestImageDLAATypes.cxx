@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkImageDLAA on every scalar type and component count VTK images have, on 2D images, 3D
 // volumes, odd sizes and single pixels. The same picture, stored in each type (values
 // lo + n (hi - lo) of the type's range, or n for floating point), gives the same normalised

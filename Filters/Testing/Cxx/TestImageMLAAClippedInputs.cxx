@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Inputs smaller than the halo the filter asks for: clipped images (vtkImageClip with and without
 // ClipData), 1-pixel-wide slabs and the smallest extents, streamed in pieces
 // (vtkImageDataStreamer), for every scalar type; and an upstream that delivers less than the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // What counts as an edge: luma (default) misses colours of equal luminance that colour edges
 // find; depth edges follow a depth image instead of the colours; alpha edges give a silhouette
 // over a transparent background a soft alpha border; the threshold decides how faint an edge may

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Bad input to vtkImageMLAA: a clear error message and an empty output, never a crash or a
 // partial result. Then the same filter works again on good input.
 #include "vtkMLAATestUtilities.h"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Long lines (up to 256 pixels each way, MaxSearchSteps up to 128) in the CPU filter:
 // - the line lengths of vtkMLAAStages (one scan per row and per column) equal, on random edge
 //   patterns, those of a plain search that steps pixel by pixel (the loop vtkImageMLAA used

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // NaN and infinities in floating-point images never spread: pixels holding them are neither
 // part of an edge nor mixed into their neighbours, and keep their values; the rest of the image
 // is antialiased as usual.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Exact expected pixels of vtkImageMLAA on small synthetic images: a straight step edge, the
 // L, U and Z patterns of the GPU Pro 2 chapter, a line longer than the search distance,
 // one-pixel-wide images, and a diagonal staircase (DiagonalDetection), whose effect on the error

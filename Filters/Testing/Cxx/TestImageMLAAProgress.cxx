@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Progress and cancellation: vtkImageMLAA reports ProgressEvent from the calling thread between
 // groups of rows of every stage, rising from 0 to 1, and honours AbortExecute there: an aborted
 // update leaves an empty output (nothing half-computed), and the next update runs in full.

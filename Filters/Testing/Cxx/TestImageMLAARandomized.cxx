@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // A seeded random test of vtkImageMLAA (1000 cases; --seed N for another set): random scalar types, component counts, sizes (down to
 // one pixel), extents that do not start at 0, volumes, random options (every edge mode, Lab included, reconstruction, search
 // length, diagonals, local contrast, blending, alpha convention, value range), pictures with

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Topological reconstruction (vtkMLAAOptions::Reconstruction, Biri et al. section 4), in the
 // reconstruction stage alone (exact pixels) and through vtkImageMLAA:
 // - a one-pixel diagonal line with one pixel missing is closed (the pixel gets the line's

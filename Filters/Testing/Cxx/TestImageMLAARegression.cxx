@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Regression test of vtkImageMLAA on a committed VTK render (Testing/Data/mixed-320x240.png):
 // the output must equal the committed baseline exactly (the CPU filter is deterministic), must
 // differ from the input along its edges, and must leave flat regions (no edge within 2 pixels)

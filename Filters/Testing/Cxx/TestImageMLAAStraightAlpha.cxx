@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Straight and premultiplied alpha (vtkMLAAOptions::PremultipliedAlpha): a grey disc over a
 // transparent black background, antialiased, must composite over white and over black like the
 // supersampled disc does, with no dark or bright fringe:

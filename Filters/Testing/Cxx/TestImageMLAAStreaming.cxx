@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Streaming and threading invariance: vtkImageMLAA pads its input request by the search
 // distance, so processing an image in pieces (vtkImageDataStreamer, or explicit update extents)
 // gives exactly the pixels of processing it whole; and the result does not depend on the number

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkImageMLAA on every scalar type and component count VTK images have, on 2D images and 3D
 // volumes. The same picture, stored in each type (values lo + n (hi - lo) of the type's range, or
 // n for floating point), gives the same normalised result as the 8-bit image within 1/255; the

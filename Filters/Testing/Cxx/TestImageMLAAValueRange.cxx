@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Integer data that uses part of its type: a 12-bit picture stored in 16-bit integers is
 // antialiased as well as the same picture in 8 bits once SetValueRange(0, 4095) says so
 // (within 0.03 AAR, measured against supersampled coverage as MEASURING.md does); with the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of vtkMLAAAreaTexture: the layout of Figure 4.2 (GPU Pro 2, section 4.3.3), mirror
 // symmetry, the trapeze formula of the topological-reconstruction paper (section 3.4) for
 // L shapes, hand-computed texels of the L, U and Z shapes, the 8-bit image, and the diagonal

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of vtkMLAAOptions: defaults, clamping, names, sharing with the filter.
 #include "vtkImageMLAA.h"
 #include "vtkMLAAOptions.h"

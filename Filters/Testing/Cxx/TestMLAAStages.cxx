@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The stages of the CPU MLAA (vtkMLAAStages.h), each on its own: the halo derived from the
 // options, the features (normalisation, luma, planes, NaN), edge detection (threshold, image
 // border, local contrast adaptation), blending weights (an L shape against the area texture's

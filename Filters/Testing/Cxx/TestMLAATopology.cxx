@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The selection rule of topological reconstruction (vtkMLAATopology, Biri et al. section 4):
 // the connexity number of every one of the 256 neighbourhood masks equals the number of
 // 8-connected components that a flood fill finds on the 3 x 3 grid (centre left out); the

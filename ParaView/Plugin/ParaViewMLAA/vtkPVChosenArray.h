@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // What vtkPVImageMLAA and vtkPVImageDLAA share: running an antialiasing filter of the main
 // project, which reads the active point scalars, on the point array chosen with
 // SetInputArrayToProcess(0, ...). Internal to the plugin.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkPVImageDLAA
  * @brief   vtkImageDLAA on a chosen point array, for ParaView's DLAAAntialiasing filter.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkPVImageMLAA
  * @brief   vtkImageMLAA on a chosen point array, for ParaView's MLAAAntialiasing filter.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkPVMLAAOptions
  * @brief   The vtkMLAAOptions behind ParaView's MLAA properties: settings and a quality preset

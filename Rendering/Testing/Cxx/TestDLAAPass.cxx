@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkOpenGLDLAAPass, behaviour without the CPU filter:
 // - on every shared scene the pass changes pixels near edges, and pixels whose 21 x 21
 //   neighbourhood is flat (beyond the reach of the 17-pixel windows and the 5-pixel masks) are

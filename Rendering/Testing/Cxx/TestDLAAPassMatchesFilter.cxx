@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // CPU/GPU parity of directionally localized antialiasing: for every shared scene, the render of
 // vtkOpenGLDLAAPass equals vtkImageDLAA run on the single-sample screenshot of the same scene
 // within 2/255 (on llvmpipe on every pixel; the check allows 0.1 % of the pixels, where another

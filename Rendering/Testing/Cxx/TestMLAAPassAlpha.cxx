@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Transparent backgrounds: a window read back as RGBA, a renderer whose background has alpha 0,
 // and the pass with KeepAlphaOn(). The geometry is unlit, so every pixel it covers has one
 // colour c; the plain render holds c with alpha 1 and the background colour (a light grey here)

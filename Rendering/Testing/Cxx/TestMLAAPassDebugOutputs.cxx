@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The pass's debug outputs equal the CPU filter's on the RGB render of a mixed scene (its label
 // is antialiased with the rest here, so that both see the same image): the edges texture on all
 // but a few pixels, the blending weights within 1/255 (both are 8-bit) on all but a few; and the

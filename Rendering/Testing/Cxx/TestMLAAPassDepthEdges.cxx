@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Depth edges: the pass detects edges in its delegate's depth buffer; the CPU filter given the
 // same render and the window's z-buffer as its depth input produces the same image. Shading
 // edges inside a surface are left alone (unlike luma edges).

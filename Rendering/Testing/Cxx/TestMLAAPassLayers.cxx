@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Renderer layers: the pass on a renderer of layer 1 (which preserves the colour buffer: VTK
 // does not clear it, the layer draws over what layer 0 drew) composites its antialiased image
 // over the framebuffer with premultiplied-alpha blending:

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Long lines (up to 256 pixels each way, MaxSearchSteps up to 128) in vtkOpenGLMLAAPass, with the
 // search loop and with line lengths by recursive doubling (LineLengths):
 // - a 1-degree slope (a black polygon under a white background) across a 512-pixel-wide window

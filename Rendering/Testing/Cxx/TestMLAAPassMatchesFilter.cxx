@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // CPU/GPU parity: for every scene of the project, vtkOpenGLMLAAPass's output equals vtkImageMLAA
 // run on the single-sample RGB screenshot of the same scene within 2/255 on at least 99.5 % of
 // the pixels of every scene (printed per scene), and the pass actually changes the image. The

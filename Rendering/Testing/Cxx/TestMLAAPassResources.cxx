@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Resource handling and window changes: the pass keeps matching the CPU filter after a window
 // resize, after ReleaseGraphicsResources, after its renderer is removed from the window and added
 // again, when an option changes the area texture, with line lengths by recursive doubling, and

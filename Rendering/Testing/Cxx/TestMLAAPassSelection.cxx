@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Hardware selection through the pass: while a vtkHardwareSelector renders the ids of props,
 // cells and points into the colour buffer, the pass must not antialias them (a blend of two
 // encoded ids is a third, wrong id). An area selection of cells and of points over a sphere, a

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Compile-time shader variants: the options that change a shader's work (edge detection mode,
 // Lab included, local contrast adaptation, diagonal detection, dominant-direction blending, the
 // search length, alpha handling, debug output, reconstruction and its write-back in place) select #defines prepended to the one .glsl source of each pass,

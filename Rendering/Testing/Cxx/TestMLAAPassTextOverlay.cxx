@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Text and a scalar bar over a coloured surface. By default the pass draws the overlay step of
 // its vtkRenderStepsPass delegate after the antialiasing, so every overlay pixel over a flat
 // background comes out exactly as in the plain render, while the surface is antialiased.

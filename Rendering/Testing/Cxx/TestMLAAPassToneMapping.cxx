@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The pass with floating-point colour and with other image-processing passes:
 // - MLAA after tone mapping (the pass's delegate is a vtkToneMappingPass): equal to the CPU
 //   filter on the tone-mapped render;

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Two renderers side by side in one window, each with its own pass: each viewport equals the CPU
 // filter on the same viewport of the plain render (so the pass reads and writes its own viewport
 // only, at the right offset). A single pass object shared by both renderers gives the same image.

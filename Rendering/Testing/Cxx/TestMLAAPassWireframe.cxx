@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Regression test of vtkOpenGLMLAAPass on the "wireframe" scene (wireframe torus-like superquadric), rendered offscreen
 // without multisampling: strict comparison with the committed baseline, and the result must
 // differ from the plain render (see vtkMLAARenderTestUtilities.h).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Helpers for the offscreen rendering tests of vtkOpenGLDLAAPass.
 #ifndef vtkDLAARenderTestUtilities_h
 #define vtkDLAARenderTestUtilities_h

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Checks for the tests of the Python gallery (Examples/Gallery/Python).
 
   GalleryCheck.py run [--status N] [--stderr TEXT] [--stdout TEXT] [--files F,F]

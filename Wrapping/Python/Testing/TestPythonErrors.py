@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Bad input from Python gives VTK errors or Python exceptions, never a crash: an image without
 scalars or with 5 components makes vtkImageMLAA and vtkImageDLAA report an error and give an
 empty output; vtkmlaa.antialias_array raises ValueError for arrays that are not images and

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 """vtkImageMLAA and vtkImageDLAA from Python on numpy data: exact values on the chapter's L and U
 shapes (worked out independently below from the area formula of section 4.3), straight edges
 left alone, the same through vtkmlaa.antialias_array, and DLAA's shape, type and flat regions."""

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 """The vtkmlaa package after `cmake --install BUILD --prefix PREFIX`: a fresh /usr/bin/python3
 with only PYTHONPATH=PREFIX/<site-packages> set (no LD_LIBRARY_PATH, no build tree on any path)
 imports every class from the prefix, loads the project's libraries from PREFIX/lib (found through

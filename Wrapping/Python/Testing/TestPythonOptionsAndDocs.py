@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 """The vtkmlaa package's surface: every wrapped class importable from vtkmlaa (and from its
 extension modules), docstrings from the C++ class comments, the options and presets as the C++
 classes define them, and enable()'s validation of its arguments."""

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 """The render pass from Python: a small scene rendered offscreen without antialiasing and with
 vtkmlaa.enable(renderer), saved to PNG; the pass changes edge pixels, leaves pixels without an
 edge alone, and gives the image vtkImageMLAA gives on the screenshot without antialiasing (within

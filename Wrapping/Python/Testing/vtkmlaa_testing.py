@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Helpers shared by the Python tests of the vtkmlaa package: numpy <-> vtkImageData, PNG files,
 synthetic images, and a recorder of VTK errors."""
 import math

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Morphological antialiasing (MLAA) and DLAA for VTK, from Python.
 
 The classes are VTK's own Python wrappings of the C++ classes (the same names and methods;
