@@ -145,7 +145,7 @@ bool vtkOpenGLAntialiasingPass::ReadyQuad(
   if (!quad)
   {
     std::string source = fs;
-    vtkShaderProgram::Substitute(source, "//VTK::MLAA::Dec", defines, false);
+    vtkShaderProgram::Substitute(source, "//VTK::Antialiasing::Dec", defines, false);
     this->SubstituteShaderSnippets(source);
     quad = new vtkOpenGLQuadHelper(renWin, nullptr, source.c_str(), "");
     variant.Defines = defines;

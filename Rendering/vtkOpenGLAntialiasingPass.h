@@ -24,7 +24,7 @@
  *   point too), tiled viewports and framebuffer objects of an enclosing pass, window resizes
  *   (targets resized in place), ReleaseGraphicsResources and GetTargetMemorySize.
  * Shaders are full-screen quads whose fragment source has the subclass's #defines in place of
- * //VTK::MLAA::Dec (ShaderVariant, ReadyQuad: rebuilt when the defines change).
+ * //VTK::Antialiasing::Dec (ShaderVariant, ReadyQuad: rebuilt when the defines change).
  *
  * The behaviour of each piece is described in full in vtkOpenGLMLAAPass's class description.
  *
@@ -124,7 +124,7 @@ protected:
   virtual void ReleaseMethodResources(vtkWindow* w) = 0;
   // Bytes of the subclass's targets.
   virtual vtkIdType GetMethodTargetMemorySize() = 0;
-  // Substitutions in a fragment source beyond //VTK::MLAA::Dec (shared snippets).
+  // Substitutions in a fragment source beyond //VTK::Antialiasing::Dec (shared snippets).
   virtual void SubstituteShaderSnippets(std::string&) {}
   // /@}
 
@@ -137,7 +137,7 @@ protected:
     // Frees the quad helper's graphics resources and the helper itself.
     void Release(vtkWindow* window);
   };
-  // Builds the quad helper of a fragment shader with `defines` in place of //VTK::MLAA::Dec
+  // Builds the quad helper of a fragment shader with `defines` in place of //VTK::Antialiasing::Dec
   // (rebuilt when they differ from the last build), or binds the existing one.
   bool ReadyQuad(vtkOpenGLRenderWindow* renWin, ShaderVariant& variant, const char* fs,
     const std::string& defines);

@@ -1,6 +1,6 @@
 //VTK::System::Dec
 //VTK::Output::Dec
-//VTK::MLAA::Dec
+//VTK::Antialiasing::Dec
 
 // DLAA pass 2 of 2: short and long edges (vtkDLAAOptions, steps 1 and 2), drawn into the
 // renderer's viewport of the target framebuffer, from the delegate's image and the masks of

@@ -1,6 +1,6 @@
 //VTK::System::Dec
 //VTK::Output::Dec
-//VTK::MLAA::Dec
+//VTK::Antialiasing::Dec
 
 // DLAA pass 1 of 2: the short-edge blend masks of every pixel (vtkDLAAOptions, step 1), into an
 // RG32F texture (full floats, so that their 17-pixel means follow the CPU's arithmetic) that

@@ -1,6 +1,6 @@
 //VTK::System::Dec
 //VTK::Output::Dec
-//VTK::MLAA::Dec
+//VTK::Antialiasing::Dec
 
 // MLAA pass 2 of 3: blending weights (Jimenez et al., "Practical Morphological Antialiasing",
 // GPU Pro 2, section 4.3, Listing 4.2).
@@ -17,8 +17,8 @@
 // the left neighbour. GL's y grows upwards, so "above" is y + 1 and the published shader's -0.25
 // offset towards the upper row becomes +0.25 here.
 //
-// Compile-time variants (#defines prepended by vtkOpenGLMLAAPass in place of //VTK::MLAA::Dec;
-// the program is rebuilt when the options change):
+// Compile-time variants (#defines prepended by vtkOpenGLMLAAPass in place of
+// //VTK::Antialiasing::Dec; the program is rebuilt when the options change):
 //   MLAA_MAX_SEARCH_STEPS         vtkMLAAOptions::MaxSearchSteps (a constant loop bound)
 //   MLAA_DIAGONAL_DETECTION       defined: vtkMLAAOptions::DiagonalDetection
 //   MLAA_MINIMUM_DIAGONAL_LENGTH  vtkMLAAOptions::MinimumDiagonalLength

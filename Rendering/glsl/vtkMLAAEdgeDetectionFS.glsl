@@ -1,12 +1,13 @@
 //VTK::System::Dec
 //VTK::Output::Dec
-//VTK::MLAA::Dec
+//VTK::Antialiasing::Dec
 
 // MLAA pass 1 of 3: edge detection (Jimenez et al., "Practical Morphological Antialiasing",
 // GPU Pro 2, section 4.2, Listing 4.1; luma as in section 4.2.1).
 //
-// Compile-time variants (vtkOpenGLMLAAPass prepends the #defines in place of //VTK::MLAA::Dec
-// and rebuilds the program when the options change, so no pixel pays for a run-time branch):
+// Compile-time variants (vtkOpenGLMLAAPass prepends the #defines in place of
+// //VTK::Antialiasing::Dec and rebuilds the program when the options change, so no pixel pays
+// for a run-time branch):
 //   MLAA_EDGE_DETECTION   0 luma, 1 colour, 2 depth, 3 CIELAB (vtkMLAAOptions::EdgeDetection;
 //                         Lab: Delta E / 100 of Biri et al., section 3.2, vtkMLAALab.glsl)
 //   MLAA_USE_ALPHA        defined: a change in alpha alone is an edge too (the result keeps

@@ -1,6 +1,6 @@
 //VTK::System::Dec
 //VTK::Output::Dec
-//VTK::MLAA::Dec
+//VTK::Antialiasing::Dec
 
 // MLAA line lengths by recursive doubling, one pass (Biri et al., "Practical morphological
 // antialiasing on the GPU", section 3.3, equation 1 and Algorithm 2).

@@ -1,6 +1,6 @@
 //VTK::System::Dec
 //VTK::Output::Dec
-//VTK::MLAA::Dec
+//VTK::Antialiasing::Dec
 
 // MLAA line lengths by recursive doubling, initialisation (Biri et al., "Practical morphological
 // antialiasing on the GPU", section 3.3: "we simply write 1 to the left and right distance of

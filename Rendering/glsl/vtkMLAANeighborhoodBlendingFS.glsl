@@ -1,6 +1,6 @@
 //VTK::System::Dec
 //VTK::Output::Dec
-//VTK::MLAA::Dec
+//VTK::Antialiasing::Dec
 
 // MLAA pass 3 of 3: blending with the four-neighbourhood (Jimenez et al., "Practical
 // Morphological Antialiasing", GPU Pro 2, section 4.4, Listing 4.5), drawn into the renderer's
@@ -24,8 +24,8 @@
 // The depth of the delegate's render is written too, so that passes and layers drawn after this
 // one see the scene's depth.
 //
-// Compile-time variants (#defines prepended by vtkOpenGLMLAAPass in place of //VTK::MLAA::Dec;
-// the program is rebuilt when the options change):
+// Compile-time variants (#defines prepended by vtkOpenGLMLAAPass in place of
+// //VTK::Antialiasing::Dec; the program is rebuilt when the options change):
 //   MLAA_DEBUG_OUTPUT        0 the antialiased image, 1 edges, 2 blending weights
 //                            (vtkMLAAOptions::DebugOutput)
 //   MLAA_DOMINANT_DIRECTION  defined: vtkMLAAOptions::DominantDirectionBlending

@@ -1,6 +1,6 @@
 //VTK::System::Dec
 //VTK::Output::Dec
-//VTK::MLAA::Dec
+//VTK::Antialiasing::Dec
 
 // MLAA pass 0 (with vtkMLAAOptions::Reconstruction only): topological reconstruction (Biri et
 // al., "Morphological antialiasing and topological reconstruction", section 4), before edge
@@ -18,7 +18,8 @@
 // pixels are pairwise alike (one colour: the shape); it then takes the mean of the X pixels,
 // alpha included. Reads beyond the image are clamped to its border.
 //
-// Compile-time variants (#defines prepended by vtkOpenGLMLAAPass in place of //VTK::MLAA::Dec):
+// Compile-time variants (#defines prepended by vtkOpenGLMLAAPass in place of
+// //VTK::Antialiasing::Dec):
 //   MLAA_USE_ALPHA     defined: a change in alpha alone makes a neighbour unlike too
 //   MLAA_WRITE_BACK    defined: only the selected pixels are written (the others are
 //                      discarded): the pass draws this into the target when the blending works
