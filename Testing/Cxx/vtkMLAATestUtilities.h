@@ -10,6 +10,7 @@
 #include "vtkDataArray.h"
 #include "vtkExtentTranslator.h"
 #include "vtkDLAAOptions.h"
+#include "vtkImageAntialiasingAlgorithm.h"
 #include "vtkImageDLAA.h"
 #include "vtkImageData.h"
 #include "vtkImageMLAA.h"
@@ -191,6 +192,30 @@ inline vtkSmartPointer<vtkImageData> RunDLAA(vtkImageData* input, vtkDLAAOptions
 inline vtkSmartPointer<vtkImageData> RunMLAA(vtkImageData* input, vtkMLAAOptions* options = nullptr)
 {
   return RunFilter<vtkImageMLAA>(input, options);
+}
+
+// One antialiasing method of the CPU filter, for the tests of vtkImageAntialiasingAlgorithm's
+// behaviour that every method shares: its class name and a factory of default-configured
+// filters. FilterMethods() lists them all; a new method is one more entry there.
+struct FilterMethod
+{
+  const char* Name;
+  vtkSmartPointer<vtkImageAntialiasingAlgorithm> (*New)();
+};
+
+template <class Filter>
+vtkSmartPointer<vtkImageAntialiasingAlgorithm> NewFilter()
+{
+  return vtkSmartPointer<Filter>::New();
+}
+
+inline const std::vector<FilterMethod>& FilterMethods()
+{
+  static const std::vector<FilterMethod> methods = {
+    { "vtkImageMLAA", &NewFilter<vtkImageMLAA> },
+    { "vtkImageDLAA", &NewFilter<vtkImageDLAA> },
+  };
+  return methods;
 }
 
 // Strict comparison: the number of values (all components) whose absolute difference exceeds
