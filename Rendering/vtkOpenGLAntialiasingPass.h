@@ -139,8 +139,9 @@ protected:
     // Frees the quad helper's graphics resources and the helper itself.
     void Release(vtkWindow* window);
   };
-  // Builds the quad helper of a fragment shader with `defines` in place of //VTK::Antialiasing::Dec
-  // (rebuilt when they differ from the last build), or binds the existing one.
+  // Builds the quad helper of a fragment shader with `defines` in place of
+  // //VTK::Antialiasing::Dec (rebuilt when they differ from the last build), or binds the
+  // existing one.
   bool ReadyQuad(vtkOpenGLRenderWindow* renWin, ShaderVariant& variant, const char* fs,
     const std::string& defines);
 
