@@ -488,9 +488,18 @@ void BatchInterrupted()
     int status = 0;
     waitpid(pid, &status, 0);
     MLAA_CHECK(WIFSIGNALED(status) && WTERMSIG(status) == sig);
+    for (const std::string& left : Listing(out))
+    {
+      std::cout << "left in the output directory: " << left << std::endl;
+    }
     MLAA_CHECK(Listing(out).empty());
     usleep(200000); // nothing appears later either
     MLAA_CHECK(Listing(out).empty());
+    // The next signal starts from an empty directory, whatever this one left.
+    for (const std::string& left : Listing(out))
+    {
+      fs::remove(out / left);
+    }
   }
 }
 } // namespace
