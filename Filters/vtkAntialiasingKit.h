@@ -433,6 +433,7 @@ public:
   unsigned char* Get() { return this->Bytes.get(); }
   const unsigned char* Get() const { return this->Bytes.get(); }
   size_t GetSize() const { return this->Size; }
+  size_t GetCapacity() const { return this->Capacity; }
 
 private:
   std::unique_ptr<unsigned char[]> Bytes;

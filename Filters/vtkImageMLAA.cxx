@@ -18,24 +18,17 @@
 
 vtkStandardNewMacro(vtkImageMLAA);
 
-// The buffers of the stages, reused from slice to slice and from update to update.
-struct vtkImageMLAABuffers : public vtkMLAAStages::SliceBuffers
-{
-};
-
 //------------------------------------------------------------------------------
 vtkImageMLAA::vtkImageMLAA()
 {
   this->SetNumberOfInputPorts(2);
   this->Options = vtkMLAAOptions::New();
-  this->Buffers = new vtkImageMLAABuffers;
 }
 
 //------------------------------------------------------------------------------
 vtkImageMLAA::~vtkImageMLAA()
 {
   this->Options->Delete();
-  delete this->Buffers;
 }
 
 //------------------------------------------------------------------------------
@@ -221,7 +214,10 @@ int vtkImageMLAA::RequestData(
     static_cast<vtkIdType>(setup.Output.Width()) * setup.Output.Height() *
     output->GetPointData()->GetScalars()->GetNumberOfComponents();
 
-  vtkMLAAStages::SliceBuffers& buffers = *this->Buffers;
+  // The stages' full-size buffers, shared with every other filter of the process (a new filter
+  // per image costs what a reused one does) and reused from slice to slice.
+  const vtkMLAAStages::SliceBuffersLease lease = vtkMLAAStages::AcquireSliceBuffers();
+  vtkMLAAStages::SliceBuffers& buffers = *lease;
   this->ForEachSlice(request, setup.RowsOfWork(), [&](int z, vtkAntialiasingKit::Progress& progress) {
     vtkMLAAStages::DepthRows depthRows;
     if (depth)

@@ -82,7 +82,6 @@
 #include "vtkImageAntialiasingAlgorithm.h"
 
 class vtkMLAAOptions;
-struct vtkImageMLAABuffers;
 
 class VTKFILTERSMLAA_EXPORT vtkImageMLAA : public vtkImageAntialiasingAlgorithm
 {
@@ -132,7 +131,6 @@ protected:
     vtkInformationVector* outputVector) override;
 
   vtkMLAAOptions* Options = nullptr;
-  vtkImageMLAABuffers* Buffers = nullptr; // the stages' edges and weights, kept between updates
 
 private:
   vtkImageMLAA(const vtkImageMLAA&) = delete;

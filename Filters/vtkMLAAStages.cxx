@@ -12,9 +12,70 @@
 #include <cstdint>
 #include <cstring>
 #include <memory>
+#include <vector>
 
 namespace vtkMLAAStages
 {
+//------------------------------------------------------------------------------
+namespace
+{
+// The buffers given back and not yet taken again, the most recent last.
+struct SliceBuffersPool
+{
+  std::mutex Mutex;
+  std::vector<std::unique_ptr<SliceBuffers>> Free;
+  size_t Bytes = 0;
+};
+SliceBuffersPool& Pool()
+{
+  static SliceBuffersPool pool;
+  return pool;
+}
+}
+
+SliceBuffersLease AcquireSliceBuffers()
+{
+  SliceBuffersPool& pool = Pool();
+  std::lock_guard<std::mutex> lock(pool.Mutex);
+  if (pool.Free.empty())
+  {
+    return SliceBuffersLease(new SliceBuffers);
+  }
+  std::unique_ptr<SliceBuffers> buffers = std::move(pool.Free.back());
+  pool.Free.pop_back();
+  pool.Bytes -= buffers->GetCapacity();
+  return SliceBuffersLease(buffers.release());
+}
+
+void ReturnSliceBuffers::operator()(SliceBuffers* returned) const
+{
+  std::unique_ptr<SliceBuffers> buffers(returned);
+  const size_t bytes = buffers->GetCapacity();
+  if (bytes > RetainedBytes)
+  {
+    return; // freed
+  }
+  SliceBuffersPool& pool = Pool();
+  std::vector<std::unique_ptr<SliceBuffers>> dropped; // freed after the lock is released
+  std::lock_guard<std::mutex> lock(pool.Mutex);
+  // Make room by freeing the buffers returned longest ago.
+  while (pool.Bytes + bytes > RetainedBytes && !pool.Free.empty())
+  {
+    pool.Bytes -= pool.Free.front()->GetCapacity();
+    dropped.push_back(std::move(pool.Free.front()));
+    pool.Free.erase(pool.Free.begin());
+  }
+  pool.Free.push_back(std::move(buffers));
+  pool.Bytes += bytes;
+}
+
+size_t GetRetainedSliceBufferBytes()
+{
+  SliceBuffersPool& pool = Pool();
+  std::lock_guard<std::mutex> lock(pool.Mutex);
+  return pool.Bytes;
+}
+
 //------------------------------------------------------------------------------
 Halo ComputeHalo(vtkMLAAOptions* options)
 {

@@ -52,6 +52,7 @@
 
 #include <chrono>
 #include <functional>
+#include <memory>
 
 namespace vtkMLAAStages
 {
@@ -168,7 +169,35 @@ struct SliceBuffers
   ByteBuffer Reconstructed; // the reconstructed pixels of the slice, with Reconstruction only
   EdgesBuffer Edges;
   WeightsBuffer Weights;
+
+  /** The bytes the buffers hold. */
+  size_t GetCapacity() const
+  {
+    return this->Reconstructed.GetCapacity() + this->Edges.Data.GetCapacity() +
+      this->Weights.Data.GetCapacity() + this->Weights.ColumnLengths.GetCapacity() +
+      this->Weights.DiagonalLengths.GetCapacity();
+  }
 };
+
+/**
+ * SliceBuffers shared by every vtkImageMLAA of the process, so that a new filter per image (the
+ * mlaa tool's batches, vtkmlaa.antialias_array, the ParaView filter, most image pipelines) runs
+ * with buffers whose pages are already mapped, as a filter updated again and again does: a
+ * fresh page costs from under a microsecond to over ten depending on the machine, which at
+ * 1920 x 1080 came to more than the stages themselves. AcquireSliceBuffers() takes the buffers
+ * most recently given back (or new ones); the lease gives them back when it is destroyed. At
+ * most RetainedBytes are kept between updates (the most recently returned first); buffers
+ * beyond that are freed.
+ */
+constexpr size_t RetainedBytes = size_t(64) << 20;
+struct ReturnSliceBuffers
+{
+  VTKFILTERSMLAA_EXPORT void operator()(SliceBuffers* buffers) const;
+};
+using SliceBuffersLease = std::unique_ptr<SliceBuffers, ReturnSliceBuffers>;
+VTKFILTERSMLAA_EXPORT SliceBuffersLease AcquireSliceBuffers();
+/** The bytes kept between updates now (for tests). */
+VTKFILTERSMLAA_EXPORT size_t GetRetainedSliceBufferBytes();
 
 /** Wall-clock seconds spent in each stage, summed over the slices run with it. */
 struct StageTimes

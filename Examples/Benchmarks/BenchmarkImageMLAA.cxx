@@ -4,15 +4,21 @@
 //
 // On one RGB image (by default a 1920x1080 single-sample render of the "mixed" scene, or a PNG
 // file) it times, in one run and interleaved repetition by repetition:
-//   MLAA        vtkImageMLAA, default options (vtkSMPTools, Initialize(n));
+//   MLAA        vtkImageMLAA, default options (vtkSMPTools, Initialize(n)), one filter updated
+//               again and again (as a render loop or an interactive pipeline runs it);
+//   MLAA-new    the same with a new filter per image (as the mlaa tool, vtkmlaa.antialias_array,
+//               the ParaView filter and most image pipelines run it);
+//   ultra, ultra-new  the same two ways with the ultra preset;
 //   Gaussian    vtkImageGaussianSmooth, standard deviations (1, 1), radius factors (1.5, 1.5), 2D,
 //               with EnableSMP on, so that it runs on the same vtkSMPTools backend and thread
 //               count as MLAA (the comparison MEASURING.md asks for);
+//   Gaussian-new  the same with a new filter per image;
 //   Gaussian-MT the same filter with EnableSMP off and SetNumberOfThreads(n) (vtkMultiThreader;
 //               VTK 9.1's default for imaging filters), for reference;
 //   DeepCopy    vtkImageData::DeepCopy of the image (allocation + copy, as a filter output is);
 //   memcpy      a copy of the scalars into a preallocated buffer (the memory-bandwidth floor);
 //   DLAA        vtkImageDLAA, default vtkDLAAOptions (directionally localized antialiasing);
+//   DLAA-new    the same with a new filter per image;
 //   MLAA-stages the stages of vtkImageMLAA (vtkMLAAStages::RunSlice) run directly into a
 //               preallocated output, each stage timed (features+edges, weights, blending);
 //   variants    (unless --no-variants) vtkImageMLAA with each feature of "Morphological
@@ -20,7 +26,7 @@
 //               +steps128, +recon), the three together (+all3) and each preset (P-low ...
 //               P-ultra), reported as time / Gaussian;
 // for each thread count n (default 1 and 2), and reports the median time per operation and the
-// ratios MLAA / Gaussian and MLAA / copy.
+// ratios MLAA / Gaussian and MLAA / copy, for a reused filter and for a new filter per image.
 #include "BenchmarkUtilities.h"
 #include "vtkMLAAScenes.h"
 #include "vtkMLAAStages.h"
@@ -40,12 +46,15 @@
 #include "vtkThreadedImageAlgorithm.h"
 
 #include <cstring>
+#include <sys/resource.h>
 #include <functional>
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace
@@ -89,10 +98,27 @@ void RunStages(vtkImageData* image, vtkImageMLAA* filter, vtkImageData* output,
 // One timed operation.
 struct Operation
 {
+  Operation(std::string name, std::function<void()> run, std::vector<double> times = {})
+    : Name(std::move(name))
+    , Run(std::move(run))
+    , Times(std::move(times))
+  {
+  }
   std::string Name;
   std::function<void()> Run;
   std::vector<double> Times;
+  std::vector<double> Faults; // minor page faults of each run: fresh pages the run touched
 };
+
+// The minor page faults of this process so far (pages mapped in on first touch). A page costs
+// from under a microsecond to over ten, depending on the machine, so the count says what
+// allocations cost where they cost most.
+double MinorPageFaults()
+{
+  struct rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_minflt);
+}
 }
 
 int main(int argc, char* argv[])
@@ -209,17 +235,30 @@ int main(int argc, char* argv[])
   mlaa->SetOptions(options);
   vtkNew<vtkImageDLAA> dlaa;
   dlaa->SetInputData(image);
+  vtkNew<vtkMLAAOptions> ultraOptions;
+  ultraOptions->SetPresetToUltra();
+  vtkNew<vtkImageMLAA> ultra;
+  ultra->SetInputData(image);
+  ultra->SetOptions(ultraOptions);
+  // A new filter per image: what a call of the mlaa tool, of vtkmlaa.antialias_array or of the
+  // ParaView filter costs, including whatever the filter allocates afresh.
+  auto newMLAA = [&image](vtkMLAAOptions* filterOptions) {
+    vtkNew<vtkImageMLAA> filter;
+    filter->SetInputData(image);
+    filter->SetOptions(filterOptions);
+    filter->Update();
+  };
+  auto setUpGaussian = [&image](vtkImageGaussianSmooth* gaussian) {
+    gaussian->SetInputData(image);
+    gaussian->SetDimensionality(2);
+    gaussian->SetStandardDeviations(1.0, 1.0);
+    gaussian->SetRadiusFactors(1.5, 1.5);
+  };
   vtkNew<vtkImageGaussianSmooth> gaussianSMP;
-  gaussianSMP->SetInputData(image);
-  gaussianSMP->SetDimensionality(2);
-  gaussianSMP->SetStandardDeviations(1.0, 1.0);
-  gaussianSMP->SetRadiusFactors(1.5, 1.5);
+  setUpGaussian(gaussianSMP);
   gaussianSMP->SetEnableSMP(true);
   vtkNew<vtkImageGaussianSmooth> gaussianMT;
-  gaussianMT->SetInputData(image);
-  gaussianMT->SetDimensionality(2);
-  gaussianMT->SetStandardDeviations(1.0, 1.0);
-  gaussianMT->SetRadiusFactors(1.5, 1.5);
+  setUpGaussian(gaussianMT);
   gaussianMT->SetEnableSMP(false);
   vtkNew<vtkImageData> copy;
   const std::size_t bytes = static_cast<std::size_t>(image->GetPointData()->GetScalars()->GetDataSize()) *
@@ -254,7 +293,6 @@ int main(int argc, char* argv[])
   stagesOutput->AllocateScalars(image->GetScalarType(), components);
   vtkMLAAStages::SliceBuffers stageBuffers;
   std::map<std::string, std::vector<double>> stageTimes;
-  const std::vector<std::string> order = { "MLAA", "Gaussian", "Gaussian-MT", "DeepCopy", "memcpy" };
   for (int threads : threadCounts)
   {
     vtkSMPTools::Initialize(threads);
@@ -267,16 +305,39 @@ int main(int argc, char* argv[])
           mlaa->Update();
         },
         {} },
+      { "MLAA-new", [&]() { newMLAA(options); }, {} },
+      { "ultra",
+        [&]() {
+          ultra->Modified();
+          ultra->Update();
+        },
+        {} },
+      { "ultra-new", [&]() { newMLAA(ultraOptions); }, {} },
       { "DLAA",
         [&]() {
           dlaa->Modified();
           dlaa->Update();
         },
         {} },
+      { "DLAA-new",
+        [&]() {
+          vtkNew<vtkImageDLAA> filter;
+          filter->SetInputData(image);
+          filter->Update();
+        },
+        {} },
       { "Gaussian",
         [&]() {
           gaussianSMP->Modified();
           gaussianSMP->Update();
+        },
+        {} },
+      { "Gaussian-new",
+        [&]() {
+          vtkNew<vtkImageGaussianSmooth> filter;
+          setUpGaussian(filter);
+          filter->SetEnableSMP(true);
+          filter->Update();
         },
         {} },
       { "Gaussian-MT",
@@ -333,9 +394,11 @@ int main(int argc, char* argv[])
     {
       for (auto& op : operations)
       {
+        const double faults = MinorPageFaults();
         mlaaBenchmark::Stopwatch clock;
         op.Run();
         op.Times.push_back(clock.Milliseconds());
+        op.Faults.push_back(MinorPageFaults() - faults);
       }
     }
     Row row;
@@ -343,14 +406,16 @@ int main(int argc, char* argv[])
     std::cout << "\nthreads " << threads << " (vtkSMPTools::GetEstimatedNumberOfThreads() = "
               << vtkSMPTools::GetEstimatedNumberOfThreads() << ")\n";
     std::cout << "  " << std::left << std::setw(13) << "operation" << std::right << std::setw(10)
-              << "median" << std::setw(10) << "min" << std::setw(10) << "p90" << "  ms\n";
+              << "median" << std::setw(10) << "min" << std::setw(10) << "p90" << "  ms"
+              << std::setw(14) << "page faults" << "\n";
     for (const auto& op : operations)
     {
       row.Median[op.Name] = mlaaBenchmark::Median(op.Times);
       std::cout << "  " << std::left << std::setw(13) << op.Name << std::right << std::fixed
                 << std::setprecision(2) << std::setw(10) << row.Median[op.Name] << std::setw(10)
                 << mlaaBenchmark::Quantile(op.Times, 0.0) << std::setw(10)
-                << mlaaBenchmark::Quantile(op.Times, 0.9) << std::defaultfloat << "\n";
+                << mlaaBenchmark::Quantile(op.Times, 0.9) << std::defaultfloat << std::setw(16)
+                << mlaaBenchmark::Median(op.Faults) << "\n";
     }
     // The stages, run directly into a preallocated output (no pipeline, no allocation).
     const double gaussian = row.Median["Gaussian"];
@@ -389,6 +454,25 @@ int main(int argc, char* argv[])
               << std::setw(16) << m / row.Median.at("DeepCopy") << std::setw(13)
               << m / row.Median.at("memcpy") << std::setw(15)
               << row.Median.at("DLAA") / row.Median.at("Gaussian") << std::defaultfloat << "\n";
+  }
+  // The way users call it: a reused filter against a reused Gaussian, and a new filter per image
+  // against a new Gaussian per image.
+  std::cout << "\nratios, reused filter / new filter per image (each against the Gaussian used the "
+               "same way):\n"
+            << std::right << std::setw(8) << "threads" << std::setw(20) << "MLAA" << std::setw(20)
+            << "ultra" << std::setw(20) << "DLAA" << "\n";
+  for (const auto& row : rows)
+  {
+    std::cout << std::setw(8) << row.Threads << std::fixed << std::setprecision(2);
+    for (const std::string name : { "MLAA", "ultra", "DLAA" })
+    {
+      std::ostringstream pair;
+      pair << std::fixed << std::setprecision(2)
+           << row.Median.at(name) / row.Median.at("Gaussian") << " / "
+           << row.Median.at(name + "-new") / row.Median.at("Gaussian-new");
+      std::cout << std::setw(20) << pair.str();
+    }
+    std::cout << std::defaultfloat << "\n";
   }
   if (rows.size() > 1)
   {

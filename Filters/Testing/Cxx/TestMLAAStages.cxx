@@ -4,7 +4,8 @@
 // options, the features (normalisation, luma, planes, NaN), edge detection (threshold, image
 // border, local contrast adaptation), blending weights (an L shape against the area texture's
 // generator), neighbourhood blending (equation 4.1, dominant direction, straight and
-// premultiplied alpha), and the whole slice on the smallest extents.
+// premultiplied alpha), the whole slice on the smallest extents, and the buffers that every
+// filter of the process shares.
 #include "vtkMLAATestUtilities.h"
 
 #include "vtkMLAAAreaTexture.h"
@@ -335,6 +336,72 @@ void SmallestExtents()
     }
   }
 }
+
+// The stages' buffers come from one pool for the process: a new filter per image runs on the
+// buffers the last one gave back, with the same result as a reused filter; buffers in use at
+// once are distinct; the pool keeps at most RetainedBytes, the most recently returned first.
+void SharedBuffers()
+{
+  auto image = MakeImage(67, 45, 3);
+  FillImage(image, [](int x, int y, int, int k) {
+    // A tilted square and a circle: edges in every direction.
+    const bool square = std::abs((x - 20) + 0.3 * (y - 22)) < 12 && std::abs((y - 22) - 0.3 * (x - 20)) < 12;
+    const bool circle = (x - 50) * (x - 50) + (y - 20) * (y - 20) < 100;
+    return square ? 200.0 + 10 * k : circle ? 40.0 : 120.0;
+  });
+  vtkNew<vtkImageMLAA> reused;
+  reused->SetInputData(image);
+  reused->Update();
+  vtkNew<vtkImageData> first;
+  first->DeepCopy(reused->GetOutput());
+  const size_t retained = GetRetainedSliceBufferBytes();
+  MLAA_CHECK(retained > 0 && retained <= RetainedBytes);
+  for (int i = 0; i < 3; ++i)
+  {
+    // A new filter per image: the buffers the last update gave back, the same output.
+    vtkNew<vtkImageMLAA> filter;
+    filter->SetInputData(image);
+    filter->Update();
+    MLAA_CHECK(Compare(first, filter->GetOutput()).Count == 0);
+    MLAA_CHECK(GetRetainedSliceBufferBytes() == retained);
+  }
+  reused->Modified();
+  reused->Update();
+  MLAA_CHECK(Compare(first, reused->GetOutput()).Count == 0);
+  {
+    SliceBuffersLease a = AcquireSliceBuffers();
+    MLAA_CHECK(a->GetCapacity() == retained); // the set the filters used
+    MLAA_CHECK(GetRetainedSliceBufferBytes() == 0);
+    SliceBuffersLease b = AcquireSliceBuffers();
+    MLAA_CHECK(b.get() != a.get() && b->GetCapacity() == 0);
+    // Both are kept: a, destroyed last, is the first taken next time.
+  }
+  MLAA_CHECK(GetRetainedSliceBufferBytes() == retained);
+  {
+    // Buffers larger than the limit are freed, not kept.
+    SliceBuffersLease filters = AcquireSliceBuffers();
+    MLAA_CHECK(filters->GetCapacity() == retained);
+    SliceBuffersLease big = AcquireSliceBuffers();
+    big->Reconstructed.Reserve(RetainedBytes + 1);
+  }
+  MLAA_CHECK(GetRetainedSliceBufferBytes() == retained);
+  {
+    // Two sets of more than half the limit each: only the one returned last is kept.
+    SliceBuffersLease a = AcquireSliceBuffers();
+    SliceBuffersLease b = AcquireSliceBuffers();
+    SliceBuffersLease c = AcquireSliceBuffers();
+    a->Reconstructed.Reserve(RetainedBytes / 2 + 1);
+    b->Reconstructed.Reserve(RetainedBytes / 2 + 2);
+    SliceBuffers* kept = c.get();
+    c->Reconstructed.Reserve(1);
+    c.reset();
+    a.reset();
+    b.reset();
+    MLAA_CHECK(GetRetainedSliceBufferBytes() == RetainedBytes / 2 + 2);
+    SliceBuffersLease again = AcquireSliceBuffers();
+    MLAA_CHECK(again->GetCapacity() == RetainedBytes / 2 + 2 && again.get() != kept);
+  }
+}
 }
 
 int TestMLAAStages(int, char*[])
@@ -345,5 +412,6 @@ int TestMLAAStages(int, char*[])
   BlendingWeights();
   NeighbourhoodBlending();
   SmallestExtents();
+  SharedBuffers();
   return Result();
 }
