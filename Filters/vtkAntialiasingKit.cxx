@@ -47,6 +47,52 @@ bool Progress::CheckAbort()
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// Inlined into each clone below, so that each compiles the loops for its own target.
+template <typename Acc>
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+inline void FromRelativeXYZPlanes(Acc* x, Acc* y, Acc* z, int n)
+{
+  Acc* planes[3] = { x, y, z };
+  for (Acc* plane : planes)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      plane[i] = Lab::F(plane[i]);
+    }
+  }
+  for (int i = 0; i < n; ++i)
+  {
+    Lab::FinishLab(x[i], y[i], z[i]);
+  }
+}
+}
+
+// An AVX2 clone beside the baseline, chosen at load time, where GCC or Clang on x86-64 can make
+// one (not FMA: a fused multiply-add would round differently from the baseline).
+#if defined(__x86_64__) && defined(__GNUC__) && defined(__ELF__) &&                             \
+  (defined(__clang__) ? __clang_major__ >= 14 : __GNUC__ >= 6)
+#define VTKMLAA_TARGET_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define VTKMLAA_TARGET_CLONES
+#endif
+
+namespace Lab
+{
+VTKMLAA_TARGET_CLONES void FromRelativeXYZ(float* x, float* y, float* z, int n)
+{
+  FromRelativeXYZPlanes(x, y, z, n);
+}
+VTKMLAA_TARGET_CLONES void FromRelativeXYZ(double* x, double* y, double* z, int n)
+{
+  FromRelativeXYZPlanes(x, y, z, n);
+}
+}
+
+//------------------------------------------------------------------------------
 FeatureLayout MakeFeatureLayout(int mode, int components)
 {
   FeatureLayout layout;

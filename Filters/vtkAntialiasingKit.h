@@ -229,13 +229,25 @@ private:
   static constexpr bool UseTables = sizeof(T) == 1;
 
   // The first pixel of each run of equal pixels (all C components) of a row, in runStart;
-  // returns the number of runs.
+  // returns the number of runs. Most of a rendered image is long runs: eight pixels at a time
+  // that each equal the one before (their bytes equal those one pixel earlier) are passed over
+  // with one comparison of their bytes. (Not inlined: inlined into a caller with a short constant
+  // row, GCC warns of reads in the branch that the row's length rules out.)
   template <int C>
+#if defined(__GNUC__)
+  __attribute__((noinline))
+#endif
   static int FindRuns(const T* p, int width, int* runStart)
   {
+    constexpr std::size_t chunk = 8 * C * sizeof(T);
     int runs = 0;
     for (int x = 0; x < width; ++x)
     {
+      if (x > 0 && x + 8 <= width && std::memcmp(p + x * C, p + (x - 1) * C, chunk) == 0)
+      {
+        x += 7;
+        continue;
+      }
       const T* q = p + x * C;
       bool same = x > 0;
       for (int k = 0; k < C; ++k)
@@ -258,10 +270,11 @@ private:
     const int second = c >= 3 ? 1 : 0; // grey: the one channel is R, G and B
     const int third = c >= 3 ? 2 : 0;
     // A pixel equal to the one before it takes its features: only the first pixel of each run
-    // of one colour (most of a rendered image is such runs) is converted, into the first
-    // `runs` entries of the planes, and the rows are expanded at the end. Run i starts at
-    // pixel runStart[i].
+    // of one colour (most of a rendered image is such runs) is converted, into `runs` values
+    // per plane kept apart (unless every pixel is a run), and the rows are expanded at the end.
+    // Run i starts at pixel runStart[i].
     static thread_local std::vector<int> runStartStorage;
+    static thread_local std::vector<Acc> runValueStorage;
     runStartStorage.resize(static_cast<size_t>(width) + 1);
     int* runStart = runStartStorage.data();
     int runs = 0;
@@ -281,6 +294,15 @@ private:
         break;
     }
     runStart[runs] = width;
+    Acc* values[3] = { planes[0], planes[1], planes[2] };
+    if (runs < width)
+    {
+      runValueStorage.resize(3 * static_cast<size_t>(runs));
+      for (int k = 0; k < 3; ++k)
+      {
+        values[k] = runValueStorage.data() + k * static_cast<size_t>(runs);
+      }
+    }
     for (int i = 0; i < runs; ++i)
     {
       const T* q = p + static_cast<size_t>(runStart[i]) * c;
@@ -288,7 +310,7 @@ private:
       {
         for (int k = 0; k < 3; ++k)
         {
-          planes[k][i] = this->XYZ[k][0][static_cast<unsigned char>(q[0])] +
+          values[k][i] = this->XYZ[k][0][static_cast<unsigned char>(q[0])] +
             this->XYZ[k][1][static_cast<unsigned char>(q[second])] +
             this->XYZ[k][2][static_cast<unsigned char>(q[third])];
         }
@@ -300,34 +322,37 @@ private:
         const Acc b = c >= 3 ? Lab::Linearise(this->Normalise(q[third])) : r;
         for (int k = 0; k < 3; ++k)
         {
-          planes[k][i] = static_cast<Acc>(Lab::RelativeXYZ(k, 0)) * r +
+          values[k][i] = static_cast<Acc>(Lab::RelativeXYZ(k, 0)) * r +
             static_cast<Acc>(Lab::RelativeXYZ(k, 1)) * g +
             static_cast<Acc>(Lab::RelativeXYZ(k, 2)) * b;
         }
       }
     }
-    for (int k = 0; k < 3; ++k)
-    {
-      Acc* plane = planes[k];
-      for (int i = 0; i < runs; ++i)
-      {
-        plane[i] = Lab::F(plane[i]);
-      }
-    }
-    for (int i = 0; i < runs; ++i)
-    {
-      Lab::FinishLab(planes[0][i], planes[1][i], planes[2][i]);
-    }
+    Lab::FromRelativeXYZ(values[0], values[1], values[2], runs);
     if (runs < width)
     {
-      // Backwards, so that no run is overwritten before it is read (run i starts at or after
-      // pixel i).
+      // Each run from its start on, four pixels first whatever its length (one vector store;
+      // what falls beyond a short run is overwritten by the runs after it), except near the
+      // end of the row.
       for (int k = 0; k < 3; ++k)
       {
         Acc* plane = planes[k];
-        for (int i = runs - 1; i >= 0; --i)
+        const Acc* value = values[k];
+        for (int i = 0; i < runs; ++i)
         {
-          std::fill(plane + runStart[i], plane + runStart[i + 1], plane[i]);
+          const int start = runStart[i];
+          const int end = runStart[i + 1];
+          const Acc v = value[i];
+          int x = start;
+          if (start + 4 <= width)
+          {
+            plane[start] = plane[start + 1] = plane[start + 2] = plane[start + 3] = v;
+            x = start + 4;
+          }
+          for (; x < end; ++x)
+          {
+            plane[x] = v;
+          }
         }
       }
     }

@@ -12,6 +12,8 @@
 #ifndef vtkMLAALab_h
 #define vtkMLAALab_h
 
+#include "vtkFiltersMLAAModule.h" // For export macro
+
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -118,6 +120,15 @@ void FinishLab(Acc& fx, Acc& fy, Acc& fz)
   fy = a;
   fz = b;
 }
+
+/**
+ * XYZ relative to white to the features L/100, a/100, b/100, in place, for n values in each of
+ * the three planes (f, then FinishLab). Compiled for AVX2 besides the baseline where the compiler
+ * can pick at run time (the same operations, no fused multiply-add: the same results), since this
+ * loop is most of the cost of LAB edges.
+ */
+VTKFILTERSMLAA_EXPORT void FromRelativeXYZ(float* x, float* y, float* z, int n);
+VTKFILTERSMLAA_EXPORT void FromRelativeXYZ(double* x, double* y, double* z, int n);
 
 /** Linear sRGB (D65) to the features L/100, a/100, b/100. */
 template <typename Acc>
