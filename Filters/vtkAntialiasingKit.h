@@ -141,6 +141,7 @@ public:
   {
     if (UseTables)
     {
+      std::fill(&this->XYZ[0][0][0], &this->XYZ[0][0][0] + sizeof(this->XYZ) / sizeof(Acc), Acc(0));
       for (int i = 0; i < 256; ++i)
       {
         const Acc v = (static_cast<Acc>(static_cast<T>(i)) - lo) * inverseRange;
@@ -154,7 +155,7 @@ public:
         {
           for (int channel = 0; channel < 3; ++channel)
           {
-            this->XYZ[k][channel][index] =
+            this->XYZ[channel][index][k] =
               static_cast<Acc>(Lab::RelativeXYZ(k, channel)) * linear;
           }
         }
@@ -228,6 +229,45 @@ public:
 private:
   static constexpr bool UseTables = sizeof(T) == 1;
 
+  // Whether the B bytes at a and b differ, read in the widest pieces that fit (B is a constant:
+  // a few loads, no branches). Equal bytes give equal features.
+  template <std::size_t B>
+  static bool BytesDiffer(const void* a, const void* b)
+  {
+    const unsigned char* u = static_cast<const unsigned char*>(a);
+    const unsigned char* v = static_cast<const unsigned char*>(b);
+    std::uint64_t d = 0;
+    std::size_t i = 0;
+    for (; i + 8 <= B; i += 8)
+    {
+      std::uint64_t x, y;
+      std::memcpy(&x, u + i, 8);
+      std::memcpy(&y, v + i, 8);
+      d |= x ^ y;
+    }
+    if (B - i >= 4)
+    {
+      std::uint32_t x, y;
+      std::memcpy(&x, u + i, 4);
+      std::memcpy(&y, v + i, 4);
+      d |= x ^ y;
+      i += 4;
+    }
+    if (B - i >= 2)
+    {
+      std::uint16_t x, y;
+      std::memcpy(&x, u + i, 2);
+      std::memcpy(&y, v + i, 2);
+      d |= static_cast<std::uint16_t>(x ^ y);
+      i += 2;
+    }
+    if (B - i >= 1)
+    {
+      d |= static_cast<unsigned char>(u[i] ^ v[i]);
+    }
+    return d != 0;
+  }
+
   // The first pixel of each run of equal pixels (all C components) of a row, in runStart;
   // returns the number of runs. Most of a rendered image is long runs: eight pixels at a time
   // that each equal the one before (their bytes equal those one pixel earlier) are passed over
@@ -241,21 +281,25 @@ private:
   {
     constexpr std::size_t chunk = 8 * C * sizeof(T);
     int runs = 0;
-    for (int x = 0; x < width; ++x)
+    for (int x = 0; x < width;)
     {
       if (x > 0 && x + 8 <= width && std::memcmp(p + x * C, p + (x - 1) * C, chunk) == 0)
       {
-        x += 7;
+        x += 8;
         continue;
       }
-      const T* q = p + x * C;
-      bool same = x > 0;
-      for (int k = 0; k < C; ++k)
+      // Then pixel by pixel, eight of them before the next try. Branch-free, by the bytes:
+      // where runs are short, a branch per pixel would mostly be mispredicted.
+      const int end = std::min(width, x + 8);
+      if (x == 0)
       {
-        same = same && q[k] == q[k - C];
+        runStart[runs++] = x++;
       }
-      runStart[runs] = x;
-      runs += same ? 0 : 1;
+      for (; x < end; ++x)
+      {
+        runStart[runs] = x;
+        runs += BytesDiffer<C * sizeof(T)>(p + x * C, p + (x - 1) * C) ? 1 : 0;
+      }
     }
     return runs;
   }
@@ -294,8 +338,12 @@ private:
         break;
     }
     runStart[runs] = width;
+    // Where fewer than a quarter of the pixels repeat the one before, expanding the runs would
+    // cost more than converting every pixel.
+    const bool compact = runs <= width - width / 4;
+    const int n = compact ? runs : width;
     Acc* values[3] = { planes[0], planes[1], planes[2] };
-    if (runs < width)
+    if (compact)
     {
       runValueStorage.resize(3 * static_cast<size_t>(runs));
       for (int k = 0; k < 3; ++k)
@@ -303,16 +351,17 @@ private:
         values[k] = runValueStorage.data() + k * static_cast<size_t>(runs);
       }
     }
-    for (int i = 0; i < runs; ++i)
+    for (int i = 0; i < n; ++i)
     {
-      const T* q = p + static_cast<size_t>(runStart[i]) * c;
+      const T* q = p + static_cast<size_t>(compact ? runStart[i] : i) * c;
       if (UseTables)
       {
+        const Acc* r = this->XYZ[0][static_cast<unsigned char>(q[0])];
+        const Acc* g = this->XYZ[1][static_cast<unsigned char>(q[second])];
+        const Acc* b = this->XYZ[2][static_cast<unsigned char>(q[third])];
         for (int k = 0; k < 3; ++k)
         {
-          values[k][i] = this->XYZ[k][0][static_cast<unsigned char>(q[0])] +
-            this->XYZ[k][1][static_cast<unsigned char>(q[second])] +
-            this->XYZ[k][2][static_cast<unsigned char>(q[third])];
+          values[k][i] = r[k] + g[k] + b[k];
         }
       }
       else
@@ -328,8 +377,8 @@ private:
         }
       }
     }
-    Lab::FromRelativeXYZ(values[0], values[1], values[2], runs);
-    if (runs < width)
+    Lab::FromRelativeXYZ(values[0], values[1], values[2], n);
+    if (compact)
     {
       // Each run from its start on, four pixels first whatever its length (one vector store;
       // what falls beyond a short run is overwritten by the runs after it), except near the
@@ -435,7 +484,9 @@ private:
   Acc InverseRange;
   Acc Normalised[UseTables ? 256 : 1];
   Acc Luma[3][UseTables ? 256 : 1];
-  Acc XYZ[3][3][UseTables ? 256 : 1]; // [XYZ component][channel][value]: contributions
+  // [channel][value][XYZ component]: contributions (the fourth entry pads a value's three to a
+  // vector).
+  Acc XYZ[3][UseTables ? 256 : 1][4];
 };
 
 //------------------------------------------------------------------------------
