@@ -23,6 +23,37 @@ void WeightsBuffer::Allocate(const Rect& extent)
 }
 
 //------------------------------------------------------------------------------
+ByteBuffer* WeightsBuffer::BandScratch::Acquire()
+{
+  std::lock_guard<std::mutex> lock(this->Mutex);
+  if (this->Free.empty())
+  {
+    this->Buffers.emplace_back(new ByteBuffer);
+    return this->Buffers.back().get();
+  }
+  ByteBuffer* buffer = this->Free.back();
+  this->Free.pop_back();
+  return buffer;
+}
+
+void WeightsBuffer::BandScratch::Release(ByteBuffer* buffer)
+{
+  std::lock_guard<std::mutex> lock(this->Mutex);
+  this->Free.push_back(buffer);
+}
+
+size_t WeightsBuffer::BandScratch::GetCapacity() const
+{
+  std::lock_guard<std::mutex> lock(this->Mutex);
+  size_t bytes = 0;
+  for (const auto& buffer : this->Buffers)
+  {
+    bytes += buffer->GetCapacity();
+  }
+  return bytes;
+}
+
+//------------------------------------------------------------------------------
 namespace
 {
 // An area table quantised to 8 bits: blending weights are stored as 8-bit values, as in the
@@ -485,97 +516,105 @@ void ComputeBlendingWeights(const EdgesBuffer& edges, const Rect& whole,
     return;
   }
   const int maxDistance = settings.CellSize - 1;
-  const size_t pixels = static_cast<size_t>(r.Width()) * r.Height();
-  // The lengths of the staircases (DiagonalDetection) through the pixels of the extent, in
-  // strips of columns.
-  WeightsComputer::DiagonalLengths diagonal;
-  const bool diagonalRuns = settings.Diagonals && settings.RunLengths;
-  if (diagonalRuns)
-  {
-    weights.DiagonalLengths.Reserve(4 * pixels * sizeof(LineLength));
-    LineLength* base = reinterpret_cast<LineLength*>(weights.DiagonalLengths.Get());
-    diagonal.Extent = r;
-    diagonal.RisingDown = base;
-    diagonal.RisingUp = base + pixels;
-    diagonal.FallingUp = base + 2 * pixels;
-    diagonal.FallingDown = base + 3 * pixels;
-    const WeightsComputer searcher(edges, whole, settings);
-    constexpr int strip = 256;
-    vtkSMPTools::For(0, (r.Width() + strip - 1) / strip, 1, [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        const int x0 = r.X0 + static_cast<int>(i) * strip;
-        searcher.ComputeDiagonalLengths(diagonal, x0, std::min(r.X1, x0 + strip - 1));
-      }
-    });
-  }
-  const WeightsComputer computer(edges, whole, settings, diagonalRuns ? &diagonal : nullptr);
-  // The up and down lengths of every pixel of the extent (the columns are scanned in strips),
-  // the left and right ones row by row in each task.
   const bool runs = settings.RunLengths;
-  weights.ColumnLengths.Reserve(runs ? 2 * pixels * sizeof(LineLength) : 0);
-  LineLength* down = reinterpret_cast<LineLength*>(weights.ColumnLengths.Get());
-  LineLength* up = down + pixels;
-  if (runs)
-  {
-    ComputeColumnLineLengths(edges, r, maxDistance, down, up);
-  }
-  if (progress.CheckAbort())
-  {
-    return;
-  }
+  const bool diagonalRuns = settings.Diagonals && runs;
   const int edgesWidth = edges.Extent.Width();
-  vtkSMPTools::For(0, r.Height(), RowsPerTask, [&](vtkIdType begin, vtkIdType end) {
-    if (progress.Aborted())
+  // With run lengths, each task takes a band of rows at least as high as the maximum distance,
+  // so that counting a band's column lengths, which reads up to that far beyond it, costs at most
+  // twice what counting them over the whole extent would.
+  const int bandHeight = runs ? std::max(RowsPerTask, maxDistance) : RowsPerTask;
+  const vtkIdType bands = (r.Height() + bandHeight - 1) / bandHeight;
+  vtkSMPTools::For(0, bands, 1, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType band = begin; band < end; ++band)
     {
-      return;
-    }
-    std::vector<LineLength> rowLengths(runs ? 2 * static_cast<size_t>(edgesWidth) : 0);
-    LineLength* left = rowLengths.data();
-    LineLength* right = left + edgesWidth;
-    const int offset = r.X0 - edges.Extent.X0;
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      const int y = r.Y0 + static_cast<int>(i);
-      const unsigned char* e = edges.At(r.X0, y);
-      unsigned char* w = weights.At(r.X0, y);
-      const size_t column = static_cast<size_t>(i) * r.Width();
+      if (progress.Aborted())
+      {
+        return;
+      }
+      const int y0 = r.Y0 + static_cast<int>(band) * bandHeight;
+      const Rect b{ r.X0, r.X1, y0, std::min(r.Y1, y0 + bandHeight - 1) };
+      const size_t pixels = static_cast<size_t>(b.Width()) * b.Height();
+      // The band's line lengths, in a scratch buffer of this task: down and up lengths of its
+      // pixels, then the staircases' (ComputeDiagonalLengths), then the left and right lengths
+      // of one row of the edges.
+      ByteBuffer* scratch = runs ? weights.Scratch.Acquire() : nullptr;
+      LineLength* down = nullptr;
+      LineLength* up = nullptr;
+      LineLength* left = nullptr;
+      LineLength* right = nullptr;
+      WeightsComputer::DiagonalLengths diagonal;
       if (runs)
       {
-        ComputeRowLineLengths(edges, y, maxDistance, left, right);
+        const size_t columnValues = 2 * pixels;
+        const size_t diagonalValues = diagonalRuns ? 4 * pixels : 0;
+        const size_t rowValues = 2 * static_cast<size_t>(edgesWidth);
+        scratch->Reserve((columnValues + diagonalValues + rowValues) * sizeof(LineLength));
+        LineLength* base = reinterpret_cast<LineLength*>(scratch->Get());
+        down = base;
+        up = base + pixels;
+        left = base + columnValues + diagonalValues;
+        right = left + edgesWidth;
+        ComputeColumnLineLengths(edges, b, maxDistance, down, up, false);
+        if (diagonalRuns)
+        {
+          diagonal.Extent = b;
+          diagonal.RisingDown = base + columnValues;
+          diagonal.RisingUp = diagonal.RisingDown + pixels;
+          diagonal.FallingUp = diagonal.RisingUp + pixels;
+          diagonal.FallingDown = diagonal.FallingUp + pixels;
+          // Where a staircase leaves the band, its length is searched (SearchDiagonal), which
+          // gives the count that the recursion over the whole extent would.
+          WeightsComputer(edges, whole, settings).ComputeDiagonalLengths(diagonal, b.X0, b.X1);
+        }
       }
-      // Most pixels have no edgel: four at a time are skipped; their weights are not written.
-      for (int x = r.X0; x <= r.X1;)
+      const WeightsComputer computer(edges, whole, settings, diagonalRuns ? &diagonal : nullptr);
+      const int offset = r.X0 - edges.Extent.X0;
+      for (int y = b.Y0; y <= b.Y1; ++y)
       {
-        if (x + 4 <= r.X1 + 1)
+        const unsigned char* e = edges.At(r.X0, y);
+        unsigned char* w = weights.At(r.X0, y);
+        const size_t column = static_cast<size_t>(y - b.Y0) * b.Width();
+        if (runs)
         {
-          std::uint64_t four;
-          std::memcpy(&four, e + 2 * (x - r.X0), sizeof(four));
-          if (four == 0)
-          {
-            x += 4;
-            continue;
-          }
+          ComputeRowLineLengths(edges, y, maxDistance, left, right);
         }
-        const int i = x - r.X0;
-        if (e[2 * i] | e[2 * i + 1])
+        // Most pixels have no edgel: four at a time are skipped; their weights are not written.
+        for (int x = r.X0; x <= r.X1;)
         {
-          // Lengths are only computed for pixels with the edgel they belong to.
-          if (!runs)
+          if (x + 4 <= r.X1 + 1)
           {
-            computer.Compute(x, y, -1, -1, -1, -1, w + 4 * i);
-            ++x;
-            continue;
+            std::uint64_t four;
+            std::memcpy(&four, e + 2 * (x - r.X0), sizeof(four));
+            if (four == 0)
+            {
+              x += 4;
+              continue;
+            }
           }
-          const bool hasTop = e[2 * i + 1] != 0;
-          const bool hasLeft = e[2 * i] != 0;
-          computer.Compute(x, y, hasTop ? left[offset + i] : 0, hasTop ? right[offset + i] : 0,
-            hasLeft ? up[column + i] : 0, hasLeft ? down[column + i] : 0, w + 4 * i);
+          const int i = x - r.X0;
+          if (e[2 * i] | e[2 * i + 1])
+          {
+            // Lengths are only computed for pixels with the edgel they belong to.
+            if (!runs)
+            {
+              computer.Compute(x, y, -1, -1, -1, -1, w + 4 * i);
+              ++x;
+              continue;
+            }
+            const bool hasTop = e[2 * i + 1] != 0;
+            const bool hasLeft = e[2 * i] != 0;
+            computer.Compute(x, y, hasTop ? left[offset + i] : 0, hasTop ? right[offset + i] : 0,
+              hasLeft ? up[column + i] : 0, hasLeft ? down[column + i] : 0, w + 4 * i);
+          }
+          ++x;
         }
-        ++x;
       }
+      if (scratch)
+      {
+        weights.Scratch.Release(scratch);
+      }
+      progress.RowsDone(b.Height());
     }
-    progress.RowsDone(end - begin);
   });
 }
 }

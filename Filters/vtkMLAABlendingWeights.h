@@ -23,6 +23,7 @@
 #include "vtkMLAALineLengths.h"
 
 #include <memory>
+#include <mutex>
 #include <vector>
 
 namespace vtkMLAAStages
@@ -45,12 +46,24 @@ struct WeightsBuffer
 {
   Rect Extent;
   ByteBuffer Data;
-  // Scratch of ComputeBlendingWeights: the down and up line lengths of the extent's pixels (two
-  // LineLength per pixel), kept with the weights so that it is not allocated (and its pages not
-  // faulted in afresh) on every run.
-  ByteBuffer ColumnLengths;
-  // The same for the staircase lengths of DiagonalDetection: four LineLength per pixel.
-  ByteBuffer DiagonalLengths;
+  /**
+   * Scratch of ComputeBlendingWeights with run lengths: the line lengths of one band of rows
+   * (see there), one buffer per task running at once, kept with the weights so that they are
+   * not allocated (nor their pages faulted in) afresh on every run.
+   */
+  class BandScratch
+  {
+  public:
+    VTKFILTERSMLAA_EXPORT ByteBuffer* Acquire();
+    VTKFILTERSMLAA_EXPORT void Release(ByteBuffer* buffer);
+    VTKFILTERSMLAA_EXPORT size_t GetCapacity() const;
+
+  private:
+    mutable std::mutex Mutex;
+    std::vector<std::unique_ptr<ByteBuffer>> Buffers;
+    std::vector<ByteBuffer*> Free;
+  };
+  BandScratch Scratch;
 
   void Allocate(const Rect& extent);
   const unsigned char* At(int x, int y) const
@@ -92,13 +105,18 @@ VTKFILTERSMLAA_EXPORT void MakeWeightSettings(vtkMLAAOptions* options, WeightSet
 
 /**
  * The blending weights of the pixels of weights.Extent (already allocated, within edges.Extent)
- * that have an edgel, from the edges; the entries of the others are not written. `whole` is the image: edgels are read clamped to edges.Extent,
- * as a GPU clamps texture reads, and the image border is not a crossing edge. The distances to
- * the ends of orthogonal lines are line lengths (ComputeRowLineLengths, per row of each task,
- * and ComputeColumnLineLengths, held for the whole weights extent: two 16-bit values per pixel);
- * with DiagonalDetection, the lengths of staircases are counted the same way beforehand (four
- * 16-bit values per pixel). Below vtkMLAAOptions::ExactLineLengthsSteps search steps they are searched from each pixel
- * instead (WeightSettings::RunLengths), which needs none of these buffers.
+ * that have an edgel, from the edges; the entries of the others are not written. `whole` is
+ * the image: edgels are read clamped to edges.Extent, as a GPU clamps texture reads, and the
+ * image border is not a crossing edge.
+ *
+ * From vtkMLAAOptions::ExactLineLengthsSteps search steps on (WeightSettings::RunLengths), the
+ * distances to the ends of orthogonal lines are line lengths, and with DiagonalDetection those
+ * of staircases are counted the same way. Each task takes a band of rows, at least as high as
+ * the maximum distance, and counts the lengths of its band only (ComputeRowLineLengths per row,
+ * ComputeColumnLineLengths over the band, the staircases likewise) into a buffer of
+ * weights.Scratch: 2 16-bit values per pixel of the band, 6 with DiagonalDetection, so the
+ * scratch grows with the width and the number of threads, not with the image. Below that
+ * number of steps they are searched from each pixel instead, which needs no scratch.
  */
 VTKFILTERSMLAA_EXPORT void ComputeBlendingWeights(const EdgesBuffer& edges, const Rect& whole,
   const WeightSettings& settings, WeightsBuffer& weights, Progress& progress);

@@ -68,7 +68,7 @@ void ComputeRowLineLengths(
 }
 
 void ComputeColumnLineLengths(const EdgesBuffer& edges, const Rect& extent, int maxDistance,
-  LineLength* down, LineLength* up)
+  LineLength* down, LineLength* up, bool threaded)
 {
   const Rect& r = edges.Extent;
   if (extent.Empty())
@@ -82,7 +82,7 @@ void ComputeColumnLineLengths(const EdgesBuffer& edges, const Rect& extent, int 
   // lengths of pixels with a left edgel are used: a row of a strip without left edgels resets
   // the carried lengths and is not stored.
   constexpr int strip = 256;
-  vtkSMPTools::For(0, (w + strip - 1) / strip, 1, [&](vtkIdType begin, vtkIdType end) {
+  auto strips = [&](vtkIdType begin, vtkIdType end) {
     LineLength carry[strip];
     for (vtkIdType s = begin; s < end; ++s)
     {
@@ -166,6 +166,15 @@ void ComputeColumnLineLengths(const EdgesBuffer& edges, const Rect& extent, int 
       scan(-1, up);
       scan(+1, down);
     }
-  });
+  };
+  const vtkIdType count = (w + strip - 1) / strip;
+  if (threaded)
+  {
+    vtkSMPTools::For(0, count, 1, strips);
+  }
+  else
+  {
+    strips(0, count);
+  }
 }
 }

@@ -59,10 +59,13 @@ VTKFILTERSMLAA_EXPORT void ComputeRowLineLengths(
 /**
  * The down and up lengths of the pixels of `extent` (within edges.Extent) that have a left
  * edgel, row by row, one entry per pixel of `extent` in each array (those of pixels without a
- * left edgel are not all written). Threaded over strips of columns.
+ * left edgel are not all written). Each column is scanned from the border of edges.Extent or
+ * from maxDistance rows beyond `extent`, whichever is nearer, so `extent` may be a band of rows
+ * of a larger image. Threaded over strips of columns unless `threaded` is false (when the
+ * caller's tasks are the bands).
  */
 VTKFILTERSMLAA_EXPORT void ComputeColumnLineLengths(const EdgesBuffer& edges, const Rect& extent,
-  int maxDistance, LineLength* down, LineLength* up);
+  int maxDistance, LineLength* down, LineLength* up, bool threaded = true);
 
 }
 

@@ -174,8 +174,7 @@ struct SliceBuffers
   size_t GetCapacity() const
   {
     return this->Reconstructed.GetCapacity() + this->Edges.Data.GetCapacity() +
-      this->Weights.Data.GetCapacity() + this->Weights.ColumnLengths.GetCapacity() +
-      this->Weights.DiagonalLengths.GetCapacity();
+      this->Weights.Data.GetCapacity() + this->Weights.Scratch.GetCapacity();
   }
 };
 

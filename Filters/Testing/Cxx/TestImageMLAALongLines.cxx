@@ -165,7 +165,7 @@ void RunLengthsMatchSearch()
 // counted beforehand (WeightSettings::RunLengths) equal those of searching from every pixel, on
 // random
 // images of 45-degree stripes both ways with noise, for weights extents within the edges extent
-// (so that the counts meet the extent's and the strips' borders), for 1, 8, 37 and 128 steps.
+// (so that the counts meet the borders of the extent and of the weights stage's bands of rows), for 1, 8, 37 and 128 steps.
 void DiagonalRunsMatchSearch()
 {
   std::mt19937 random(99);
