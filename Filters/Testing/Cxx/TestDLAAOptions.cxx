@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Tests of vtkDLAAOptions: defaults (the talk's), clamping, names, copying, ownership.
 #include "vtkDLAAOptions.h"
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
 

@@ -8,7 +8,7 @@
 // changing them re-executes the filter.
 #include "vtkDLAAOptions.h"
 #include "vtkImageDLAA.h"
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkExtentTranslator.h"

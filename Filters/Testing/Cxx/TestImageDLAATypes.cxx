@@ -8,7 +8,7 @@
 // own; ValueRange normalises 12-bit data stored in 16 bits like 8-bit data.
 #include "vtkDLAAOptions.h"
 #include "vtkImageDLAA.h"
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 
 #include <limits>
 #include <type_traits>

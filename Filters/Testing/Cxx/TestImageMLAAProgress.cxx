@@ -3,7 +3,7 @@
 // Progress and cancellation: vtkImageMLAA reports ProgressEvent from the calling thread between
 // groups of rows of every stage, rising from 0 to 1, and honours AbortExecute there: an aborted
 // update leaves an empty output (nothing half-computed), and the next update runs in full.
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkSMPTools.h"

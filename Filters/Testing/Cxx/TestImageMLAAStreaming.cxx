@@ -5,7 +5,7 @@
 // gives exactly the pixels of processing it whole; and the result does not depend on the number
 // of threads. Also at 128 steps, on lines longer than a piece and its padding, and for requests
 // by piece (piece p of n, as ParaView asks each MPI rank) from a source that splits them itself.
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 
 #include "vtkExtentTranslator.h"
 #include "vtkImageDataStreamer.h"

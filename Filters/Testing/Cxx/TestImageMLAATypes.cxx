@@ -6,7 +6,7 @@
 // output keeps the input's type and components; each z slice of a volume is antialiased on its
 // own. All of this in luma mode (the default), in Lab mode, and in Lab mode with reconstruction
 // (a one-pixel diagonal line with a gap is added to the picture, which reconstruction closes).
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 
 #include <limits>
 #include <type_traits>

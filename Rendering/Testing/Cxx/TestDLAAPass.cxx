@@ -15,7 +15,7 @@
 //   they were and antialiases its own silhouettes;
 // - a hardware selection gives the same cells with and without the pass.
 // No errors are reported on the way.
-#include "vtkDLAARenderTestUtilities.h"
+#include "vtkAntialiasingRenderTestUtilities.h"
 
 #include "vtkActor.h"
 #include "vtkActor2D.h"
@@ -130,7 +130,7 @@ int TestDLAAPass(int, char*[])
     auto plain = vtkMLAAScenes::Capture(window);
     auto pass = UseDLAA(renderer);
     MLAA_CHECK(Compare(plain, vtkMLAAScenes::Capture(window), 0.0).Count == 0);
-    StopMLAA(renderer, window);
+    StopPass(renderer, window);
   }
 
   // Options and resources on one scene.
@@ -242,8 +242,8 @@ int TestDLAAPass(int, char*[])
       MLAA_CHECK(d.Count == 0);
       MLAA_CHECK(Compare(alone.Plain, expected, 0.0).Pixels > 50);
     }
-    StopMLAA(left, window);
-    StopMLAA(right, window);
+    StopPass(left, window);
+    StopPass(right, window);
   }
 
   {
@@ -312,7 +312,7 @@ int TestDLAAPass(int, char*[])
               << " away from layer 1" << std::endl;
     MLAA_CHECK(far > 1000 && farChanged == 0);
     MLAA_CHECK(changed > 20);
-    StopMLAA(upper, window);
+    StopPass(upper, window);
   }
 
   {
@@ -335,6 +335,6 @@ int TestDLAAPass(int, char*[])
     std::cerr << "error: " << e << std::endl;
   }
   MLAA_CHECK(messages->Errors.empty());
-  StopMLAA(scene.Renderer, scene.Window);
+  StopPass(scene.Renderer, scene.Window);
   return Result();
 }

@@ -5,7 +5,7 @@
 // background comes out exactly as in the plain render, while the surface is antialiased.
 // AntialiasOverlaysOn() antialiases the overlays too (the text then changes). Plus a strict
 // baseline comparison of the default result.
-#include "vtkMLAARenderTestUtilities.h"
+#include "vtkAntialiasingRenderTestUtilities.h"
 
 #include "vtkActor.h"
 #include "vtkActor2D.h"

@@ -1,20 +1,24 @@
 // SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
 // SPDX-License-Identifier: BSD-3-Clause
-// Helpers for the offscreen rendering tests of vtkOpenGLMLAAPass: a renderer with the pass,
-// crops, and a strict baseline comparison (VTK's own is too loose to show that antialiasing ran).
-#ifndef vtkMLAARenderTestUtilities_h
-#define vtkMLAARenderTestUtilities_h
+// Helpers for the offscreen rendering tests of the antialiasing passes (vtkOpenGLMLAAPass,
+// vtkOpenGLDLAAPass): a renderer with a pass, the list of methods for the tests of
+// vtkOpenGLAntialiasingPass's behaviour, crops, and a strict baseline comparison (VTK's own is
+// too loose to show that antialiasing ran).
+#ifndef vtkAntialiasingRenderTestUtilities_h
+#define vtkAntialiasingRenderTestUtilities_h
 
 #include "vtkMLAAScenes.h"
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 
+#include "vtkDLAAOptions.h"
 #include "vtkExtractVOI.h"
+#include "vtkOpenGLAntialiasingPass.h"
+#include "vtkOpenGLDLAAPass.h"
 #include "vtkOpenGLMLAAPass.h"
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-
 
 namespace vtkMLAATest
 {
@@ -32,8 +36,51 @@ inline vtkSmartPointer<vtkOpenGLMLAAPass> UseMLAA(vtkRenderer* renderer, vtkMLAA
   return pass;
 }
 
+// Sets a DLAA pass (delegate: the standard render steps) on a renderer.
+inline vtkSmartPointer<vtkOpenGLDLAAPass> UseDLAA(
+  vtkRenderer* renderer, vtkDLAAOptions* options = nullptr)
+{
+  vtkNew<vtkRenderStepsPass> steps;
+  auto pass = vtkSmartPointer<vtkOpenGLDLAAPass>::New();
+  pass->SetDelegatePass(steps);
+  if (options)
+  {
+    pass->SetOptions(options);
+  }
+  renderer->SetPass(pass);
+  return pass;
+}
+
+// One antialiasing method of the render pass, for the tests of vtkOpenGLAntialiasingPass's
+// behaviour that every method shares: its class name, a factory that sets a default-configured
+// pass of the method (delegate: the standard render steps) on a renderer and returns it (the
+// renderer holds it), and its CPU twin: the method's filter, with the pass's options, on an
+// image (the pass must match it within 2/255). PassMethods() lists them all; a new method is one
+// more entry there.
+struct PassMethod
+{
+  const char* Name;
+  vtkOpenGLAntialiasingPass* (*Use)(vtkRenderer* renderer);
+  vtkSmartPointer<vtkImageData> (*Filter)(vtkOpenGLAntialiasingPass* pass, vtkImageData* image);
+};
+
+inline const std::vector<PassMethod>& PassMethods()
+{
+  static const std::vector<PassMethod> methods = {
+    { "vtkOpenGLMLAAPass", [](vtkRenderer* r) -> vtkOpenGLAntialiasingPass* { return UseMLAA(r); },
+      [](vtkOpenGLAntialiasingPass* pass, vtkImageData* image) {
+        return RunMLAA(image, static_cast<vtkOpenGLMLAAPass*>(pass)->GetOptions());
+      } },
+    { "vtkOpenGLDLAAPass", [](vtkRenderer* r) -> vtkOpenGLAntialiasingPass* { return UseDLAA(r); },
+      [](vtkOpenGLAntialiasingPass* pass, vtkImageData* image) {
+        return RunDLAA(image, static_cast<vtkOpenGLDLAAPass*>(pass)->GetOptions());
+      } },
+  };
+  return methods;
+}
+
 // Removes the pass of `renderer` and releases its GL resources.
-inline void StopMLAA(vtkRenderer* renderer, vtkRenderWindow* window)
+inline void StopPass(vtkRenderer* renderer, vtkRenderWindow* window)
 {
   if (vtkRenderPass* pass = renderer->GetPass())
   {
@@ -110,7 +157,7 @@ struct SceneWindow
     vtkMLAAScenes::Build(scene, this->Renderer);
     this->Plain = vtkMLAAScenes::Capture(this->Window, alpha);
   }
-  ~SceneWindow() { StopMLAA(this->Renderer, this->Window); }
+  ~SceneWindow() { StopPass(this->Renderer, this->Window); }
 };
 }
 

@@ -3,8 +3,8 @@
 // Helpers shared by the vtkMLAA tests: building small images, running the filter, and strict
 // image comparisons (VTK's regression comparison is too loose to show that antialiasing ran; see
 // the project's ENVIRONMENT notes).
-#ifndef vtkMLAATestUtilities_h
-#define vtkMLAATestUtilities_h
+#ifndef vtkAntialiasingTestUtilities_h
+#define vtkAntialiasingTestUtilities_h
 
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
