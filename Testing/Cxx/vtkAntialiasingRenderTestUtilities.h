@@ -105,6 +105,37 @@ inline vtkSmartPointer<vtkImageData> Crop(vtkImageData* image, int x0, int y0, i
   return out;
 }
 
+// Pixels changed, and pixels with a flat (2 radius + 1)^2 neighbourhood in `plain` that changed.
+struct Changes
+{
+  vtkIdType Changed = 0;
+  vtkIdType FlatChanged = 0;
+};
+
+inline Changes CountChanges(vtkImageData* plain, vtkImageData* result, int radius)
+{
+  Changes c;
+  int dims[3];
+  plain->GetDimensions(dims);
+  for (int y = 0; y < dims[1]; ++y)
+  {
+    for (int x = 0; x < dims[0]; ++x)
+    {
+      bool same = true;
+      for (int k = 0; k < plain->GetNumberOfScalarComponents(); ++k)
+      {
+        same = same && GetValue(plain, x, y, k) == GetValue(result, x, y, k);
+      }
+      if (!same)
+      {
+        ++c.Changed;
+        c.FlatChanged += IsFlatAround(plain, x, y, radius) ? 1 : 0;
+      }
+    }
+  }
+  return c;
+}
+
 // Compares the antialiased render `result` of `window` with the baseline given by -V:
 // - no pixel may differ from the baseline by more than 2/255 (llvmpipe is deterministic);
 // - VTK's own regression test must pass too (it records the images for CDash);
