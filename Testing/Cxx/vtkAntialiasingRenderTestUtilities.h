@@ -10,6 +10,10 @@
 #include "vtkMLAAScenes.h"
 #include "vtkAntialiasingTestUtilities.h"
 
+#include "vtkActor.h"
+#include "vtkActor2D.h"
+#include "vtkActor2DCollection.h"
+#include "vtkActorCollection.h"
 #include "vtkDLAAOptions.h"
 #include "vtkExtractVOI.h"
 #include "vtkOpenGLAntialiasingPass.h"
@@ -22,11 +26,13 @@
 
 namespace vtkMLAATest
 {
-// Sets an MLAA pass (delegate: the standard render steps) on a renderer.
-inline vtkSmartPointer<vtkOpenGLMLAAPass> UseMLAA(vtkRenderer* renderer, vtkMLAAOptions* options = nullptr)
+// Sets a pass of class `Pass` (delegate: the standard render steps) with `options` (its
+// defaults when null) on a renderer.
+template <class Pass, class Options>
+vtkSmartPointer<Pass> UsePass(vtkRenderer* renderer, Options* options)
 {
   vtkNew<vtkRenderStepsPass> steps;
-  auto pass = vtkSmartPointer<vtkOpenGLMLAAPass>::New();
+  auto pass = vtkSmartPointer<Pass>::New();
   pass->SetDelegatePass(steps);
   if (options)
   {
@@ -36,19 +42,16 @@ inline vtkSmartPointer<vtkOpenGLMLAAPass> UseMLAA(vtkRenderer* renderer, vtkMLAA
   return pass;
 }
 
-// Sets a DLAA pass (delegate: the standard render steps) on a renderer.
+inline vtkSmartPointer<vtkOpenGLMLAAPass> UseMLAA(
+  vtkRenderer* renderer, vtkMLAAOptions* options = nullptr)
+{
+  return UsePass<vtkOpenGLMLAAPass>(renderer, options);
+}
+
 inline vtkSmartPointer<vtkOpenGLDLAAPass> UseDLAA(
   vtkRenderer* renderer, vtkDLAAOptions* options = nullptr)
 {
-  vtkNew<vtkRenderStepsPass> steps;
-  auto pass = vtkSmartPointer<vtkOpenGLDLAAPass>::New();
-  pass->SetDelegatePass(steps);
-  if (options)
-  {
-    pass->SetOptions(options);
-  }
-  renderer->SetPass(pass);
-  return pass;
+  return UsePass<vtkOpenGLDLAAPass>(renderer, options);
 }
 
 // One antialiasing method of the render pass, for the tests of vtkOpenGLAntialiasingPass's
@@ -103,6 +106,23 @@ inline vtkSmartPointer<vtkImageData> Crop(vtkImageData* image, int x0, int y0, i
   out->GetExtent(ext);
   out->SetExtent(0, ext[1] - ext[0], 0, ext[3] - ext[2], 0, 0);
   return out;
+}
+
+// Shows or hides the 3D actors and the 2D actors (overlays) of a renderer.
+inline void SetVisibility(vtkRenderer* renderer, bool actors3D, bool actors2D)
+{
+  vtkActorCollection* actors = renderer->GetActors();
+  actors->InitTraversal();
+  while (vtkActor* a = actors->GetNextActor())
+  {
+    a->SetVisibility(actors3D);
+  }
+  vtkActor2DCollection* overlays = renderer->GetActors2D();
+  overlays->InitTraversal();
+  while (vtkActor2D* a = overlays->GetNextActor2D())
+  {
+    a->SetVisibility(actors2D);
+  }
 }
 
 // Pixels changed, and pixels with a flat (2 radius + 1)^2 neighbourhood in `plain` that changed.

@@ -34,21 +34,6 @@ using namespace vtkMLAATest;
 
 namespace
 {
-void SetVisibility(vtkRenderer* renderer, bool actors3D, bool actors2D)
-{
-  vtkActorCollection* actors = renderer->GetActors();
-  actors->InitTraversal();
-  while (vtkActor* a = actors->GetNextActor())
-  {
-    a->SetVisibility(actors3D);
-  }
-  vtkActor2DCollection* overlays = renderer->GetActors2D();
-  overlays->InitTraversal();
-  while (vtkActor2D* a = overlays->GetNextActor2D())
-  {
-    a->SetVisibility(actors2D);
-  }
-}
 
 std::set<vtkIdType> SelectCells(vtkRenderer* renderer, int width, int height)
 {
