@@ -7,7 +7,7 @@
 #ifndef mlaaToolTestSupport_h
 #define mlaaToolTestSupport_h
 
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 
 #include "vtkDLAAOptions.h"
 #include "vtkImageDLAA.h"
@@ -214,7 +214,7 @@ fs::path GoodInput(const std::string& name = "in.png");
 //------------------------------------------------------------------------------
 // The cases
 
-// A case: its checks fail through MLAA_CHECK (vtkMLAATestUtilities.h).
+// A case: its checks fail through MLAA_CHECK (vtkAntialiasingTestUtilities.h).
 using Case = void (*)();
 
 // The cases by name, as the groups register them (RegisterCases). CMakeLists.txt lists the

@@ -4,7 +4,7 @@
 // clear error message and an empty output, never a crash or a partial result. Then the same
 // filter works again on good input. The checks are the base class's (RequestData's input
 // validation), so each runs for every entry of FilterMethods().
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 
 #include "vtkBitArray.h"
 #include "vtkExecutive.h"

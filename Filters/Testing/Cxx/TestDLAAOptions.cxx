@@ -1,12 +1,61 @@
 // SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
 // SPDX-License-Identifier: BSD-3-Clause
-// Tests of vtkDLAAOptions: defaults (the talk's), clamping, names, copying, ownership.
+// Tests of vtkDLAAOptions: defaults (the talk's), clamping, names, copying, ownership; and the
+// options of vtkImageDLAA: never null, shared, and a change re-executes the filter and sets its
+// reach (the input padding: 10 pixels, 2 without long edges).
 #include "vtkDLAAOptions.h"
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
 
 #include <cstring>
+
+namespace
+{
+using namespace vtkMLAATest;
+
+// vtkImageDLAA's options: never null, shared, and a change of the shared object alone
+// re-executes the filter (with the same result as a new filter with those options) and changes
+// its padding. (Moved from TestImageDLAAStreaming, whose shared checks now run for every method
+// in TestAntialiasingAlgorithmStreaming.)
+void FilterOptions()
+{
+  MLAA_CHECK(vtkNew<vtkImageDLAA>()->GetInputPadding() == 10);
+  vtkNew<vtkImageDLAA> filter;
+  MLAA_CHECK(filter->GetOptions() != nullptr);
+  filter->SetOptions(nullptr);
+  MLAA_CHECK(filter->GetOptions() != nullptr);
+  vtkNew<vtkDLAAOptions> shared;
+  filter->SetOptions(shared);
+  MLAA_CHECK(filter->GetOptions() == shared.GetPointer());
+
+  // An odd-sized colour image with a disc, shallow lines and a textured band.
+  auto picture = MakeImage(60, 40, 3);
+  FillImage(picture, [](int x, int y, int, int k) {
+    double v = 40.0 + 10.0 * k;
+    if ((x - 60.3) * (x - 60.3) + (y - 70.7) * (y - 70.7) < 40.0 * 40.0)
+    {
+      v = 220.0 - 60.0 * k;
+    }
+    if (y > 20 && y < 30)
+    {
+      v += 25.0 * (((x * 7) ^ (y * 3)) % 3);
+    }
+    return std::min(255.0, v);
+  });
+  filter->SetInputData(picture);
+  filter->Update();
+  auto withLong = vtkSmartPointer<vtkImageData>::New();
+  withLong->DeepCopy(filter->GetOutput());
+  const vtkMTimeType before = filter->GetMTime();
+  shared->LongEdgesOff(); // only the options change
+  MLAA_CHECK(filter->GetMTime() > before);
+  MLAA_CHECK(filter->GetInputPadding() == 2);
+  filter->Update();
+  MLAA_CHECK(Compare(withLong, filter->GetOutput()).Count > 0);
+  MLAA_CHECK(Compare(RunDLAA(picture, shared), filter->GetOutput()).Count == 0);
+}
+}
 
 int TestDLAAOptions(int, char*[])
 {
@@ -57,5 +106,6 @@ int TestDLAAOptions(int, char*[])
   MLAA_CHECK(vtkDLAAOptions::Assign(owner, member, nullptr));
   MLAA_CHECK(options->GetReferenceCount() == 1 && member != options.GetPointer());
   member->UnRegister(owner);
+  FilterOptions();
   return vtkMLAATest::Result();
 }

@@ -6,7 +6,7 @@
 // every method, is in TestAntialiasingAlgorithmErrors.)
 #include "vtkDLAAOptions.h"
 #include "vtkImageDLAA.h"
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 
 #include <limits>
 

@@ -8,7 +8,7 @@
 // luminosity and LongEdges off behave as specified.
 #include "vtkDLAAOptions.h"
 #include "vtkImageDLAA.h"
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 
 #include <random>
 

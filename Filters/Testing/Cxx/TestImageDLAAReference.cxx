@@ -8,7 +8,7 @@
 // different sides of one of the method's thresholds (rare; they are counted and bounded).
 #include "vtkDLAAOptions.h"
 #include "vtkImageDLAA.h"
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 
 #include <random>
 

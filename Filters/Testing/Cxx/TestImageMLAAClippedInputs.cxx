@@ -6,7 +6,7 @@
 // padded request (only the requested extent). Run under AddressSanitizer by the test command,
 // this shows that no stage reads outside the input it was given; the results must equal the
 // unstreamed filter on the same clipped image.
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 
 #include "vtkExtentTranslator.h"
 #include "vtkImageClip.h"

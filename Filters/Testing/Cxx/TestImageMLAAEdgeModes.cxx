@@ -8,7 +8,7 @@
 // which luma edges miss; the conversion gives reference CIELAB values; the contrast is
 // Delta E / 100 (an edge appears just below a reference Delta E and not just above it, with and
 // without alpha).
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 
 #include "vtkMLAALab.h"
 

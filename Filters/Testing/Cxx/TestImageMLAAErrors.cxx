@@ -4,7 +4,7 @@
 // image): a clear error message and an empty output, never a crash or a partial result, nor a
 // streamed update that never ends. The errors every method shares (scalars, components, types,
 // ValueRange, working again after an error) are in TestAntialiasingAlgorithmErrors.
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 
 #include "vtkExecutive.h"
 #include "vtkExtentTranslator.h"

@@ -11,7 +11,7 @@
 //   not, which shows what the check catches;
 // - with DiagonalDetection, the line and staircase lengths counted beforehand give the weights
 //   of the search on random 45-degree patterns.
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 
 #include "vtkMLAAAreaTexture.h"
 #include "vtkMLAABlendingWeights.h"

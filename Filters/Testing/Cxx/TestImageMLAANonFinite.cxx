@@ -3,7 +3,7 @@
 // NaN and infinities in floating-point images never spread: pixels holding them are neither
 // part of an edge nor mixed into their neighbours, and keep their values; the rest of the image
 // is antialiased as usual.
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 
 #include <limits>
 

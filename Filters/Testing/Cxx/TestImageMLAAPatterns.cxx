@@ -5,7 +5,7 @@
 // one-pixel-wide images, and a diagonal staircase (DiagonalDetection), whose effect on the error
 // against exact coverage is measured too. The expected blending weights were worked out by hand from sections
 // 4.3.1-4.3.3 (search, crossing edges, areas); see the comments at each case.
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 
 #include <vector>
 

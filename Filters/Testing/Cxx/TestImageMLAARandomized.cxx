@@ -7,7 +7,7 @@
 // random pieces. The streamed result must equal the whole one, values must stay within the
 // input's range, and flat pixels far from any edge must not change. Under AddressSanitizer (the
 // test command's second build) this also shows that no read or write leaves the buffers.
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 
 #include "vtkImageDataStreamer.h"
 

@@ -11,7 +11,7 @@
 // - through the filter, the gapped line gives exactly the output of the closed line, and the
 //   restored pixel is in the output even with no edge anywhere; off by default, and off changes
 //   nothing; streamed equals unstreamed; the halo grows by one.
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 
 #include "vtkImageDataStreamer.h"
 #include "vtkMLAAStages.h"

@@ -6,7 +6,7 @@
 // untouched. VTK's own image comparison is too loose to show any of this, hence the strict one.
 //
 // Arguments: -I <input png> -V <baseline png> -T <directory for the result on failure>.
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 
 using namespace vtkMLAATest;
 

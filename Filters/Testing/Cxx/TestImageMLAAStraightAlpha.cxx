@@ -9,7 +9,7 @@
 // Blending straight values as if they were premultiplied (what the filter did before the
 // option) darkens the edge to half grey over white: the test shows that too. Grey + alpha and
 // RGBA, 8-bit, 16-bit and float.
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 
 #include <string>
 

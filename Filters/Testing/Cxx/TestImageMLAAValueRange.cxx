@@ -6,7 +6,7 @@
 // type's range (the default) its edges look 16 times fainter and are left alone. The value
 // range applies to every type, SetValueRangeToTypeDefault restores the defaults, and the
 // result with an explicit range does not depend on streaming.
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 
 #include "vtkImageDataStreamer.h"
 

@@ -3,7 +3,7 @@
 // Tests of vtkMLAAOptions: defaults, clamping, names, sharing with the filter.
 #include "vtkImageMLAA.h"
 #include "vtkMLAAOptions.h"
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 #include "vtkNew.h"
 
 #include <cstring>

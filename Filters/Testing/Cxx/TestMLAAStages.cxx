@@ -6,7 +6,7 @@
 // generator), neighbourhood blending (equation 4.1, dominant direction, straight and
 // premultiplied alpha), the whole slice on the smallest extents, and the buffers that every
 // filter of the process shares.
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 
 #include "vtkMLAAAreaTexture.h"
 #include "vtkMLAAStages.h"

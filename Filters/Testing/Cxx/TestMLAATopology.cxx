@@ -7,7 +7,7 @@
 // pieces of at most two neighbours, at least 135 degrees apart, the complement one piece or a
 // straight line's two); the packed bits for the GPU hold the
 // same table; and a few masks named by hand have the expected answers.
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 
 #include "vtkMLAATopology.h"
 

@@ -8,7 +8,7 @@
 // a few scenes LongEdges off, the green luminosity and other thresholds; and with KeepAlpha the
 // RGBA result equals the filter on the RGBA screenshot. The windows are opaque ordinary windows
 // (the filter runs on the RGB screenshot); overlays are antialiased, as the filter sees them.
-#include "vtkDLAARenderTestUtilities.h"
+#include "vtkAntialiasingRenderTestUtilities.h"
 
 #include "vtkImageDLAA.h"
 

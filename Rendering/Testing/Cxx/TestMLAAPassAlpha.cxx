@@ -14,7 +14,7 @@
 //   blending gives): the result equals vtkImageMLAA with the same options on the RGBA render,
 //   and its edge pixels un-premultiply to c.
 // - An opaque background keeps alpha 1 everywhere.
-#include "vtkMLAARenderTestUtilities.h"
+#include "vtkAntialiasingRenderTestUtilities.h"
 
 #include "vtkActor.h"
 #include "vtkConeSource.h"
@@ -151,7 +151,7 @@ int TestMLAAPassAlpha(int, char*[])
   MLAA_CHECK(worstStraight <= 2.0);
   MLAA_CHECK(overWhite.Count == 0);
   MLAA_CHECK(overBlack.Count == 0);
-  StopMLAA(renderer, window);
+  StopPass(renderer, window);
 
   // Premultiplied alpha over transparent black.
   renderer->SetBackground(0.0, 0.0, 0.0);
@@ -168,7 +168,7 @@ int TestMLAAPassAlpha(int, char*[])
   MLAA_CHECK(CountSoftAlpha(premultiplied) > 200);
   MLAA_CHECK(worstPremultiplied <= 8.0);
   MLAA_CHECK(parity.Count == 0);
-  StopMLAA(renderer, window);
+  StopPass(renderer, window);
 
   // Opaque background: alpha is 1 everywhere, before and after.
   renderer->SetBackground(0.92, 0.93, 0.95);
@@ -177,6 +177,6 @@ int TestMLAAPassAlpha(int, char*[])
   pass->KeepAlphaOn();
   auto opaque = vtkMLAAScenes::Capture(window, true);
   MLAA_CHECK(opaque->GetPointData()->GetScalars()->GetRange(3)[0] == 255.0);
-  StopMLAA(renderer, window);
+  StopPass(renderer, window);
   return Result();
 }

@@ -7,7 +7,7 @@
 // GPU compares contrasts in single precision, the filter in double, so an exact tie of local
 // contrast adaptation (twice one contrast equal to another, which this scene has at one pixel)
 // may fall either way; at most 12 pixels (0.01 %) may differ in edges and 60 in weights.
-#include "vtkMLAARenderTestUtilities.h"
+#include "vtkAntialiasingRenderTestUtilities.h"
 
 using namespace vtkMLAATest;
 

@@ -3,7 +3,7 @@
 // Depth edges: the pass detects edges in its delegate's depth buffer; the CPU filter given the
 // same render and the window's z-buffer as its depth input produces the same image. Shading
 // edges inside a surface are left alone (unlike luma edges).
-#include "vtkMLAARenderTestUtilities.h"
+#include "vtkAntialiasingRenderTestUtilities.h"
 
 #include "vtkWindowToImageFilter.h"
 

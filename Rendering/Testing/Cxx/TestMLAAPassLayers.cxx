@@ -11,7 +11,7 @@
 // - layer 1's silhouettes are antialiased (pixels differ from the plain two-layer render).
 // The same holds for a layer-0 renderer that preserves the colour buffer, drawn after another
 // renderer in the same window.
-#include "vtkMLAARenderTestUtilities.h"
+#include "vtkAntialiasingRenderTestUtilities.h"
 
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
@@ -179,7 +179,7 @@ void CheckComposite(vtkRenderWindow* window, vtkRenderer* lower, vtkRenderer* up
   Check(changed.Pixels > 100, "the upper layer's edges antialiased", __FILE__, __LINE__);
   Check(parity.Count == 0, "equal to the CPU filter composited over layer 0", __FILE__, __LINE__);
   Check(messages->Errors.empty(), "no errors", __FILE__, __LINE__);
-  StopMLAA(upper, window);
+  StopPass(upper, window);
 }
 }
 

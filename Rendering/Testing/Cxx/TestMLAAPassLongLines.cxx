@@ -11,9 +11,9 @@
 //   without recursive doubling on every shared scene at 8, 32 and 128 steps (the lengths are the
 //   same integers);
 // - AUTOMATIC resolves by MaxSearchSteps, and the doubling textures only exist while used.
-#include "vtkMLAARenderTestUtilities.h"
+#include "vtkAntialiasingRenderTestUtilities.h"
 #include "vtkMLAAScenes.h"
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -157,7 +157,7 @@ void OneDegreeSlope()
       pass->SetLineLengths(
         doubling ? vtkOpenGLMLAAPass::RECURSIVE_DOUBLING : vtkOpenGLMLAAPass::SEARCH_LOOP);
       images[doubling] = vtkMLAAScenes::Capture(window);
-      StopMLAA(renderer, window);
+      StopPass(renderer, window);
       const Difference parity = Compare(cpu, images[doubling], 2.0);
       const bool ramps = AllRamps(images[doubling], steps);
       std::cout << searchSteps << " steps, " << (doubling ? "recursive doubling" : "search loop")
@@ -195,7 +195,7 @@ void SameWeightsOnSharedScenes()
         pass->SetLineLengths(
           doubling ? vtkOpenGLMLAAPass::RECURSIVE_DOUBLING : vtkOpenGLMLAAPass::SEARCH_LOOP);
         weights[doubling] = vtkMLAAScenes::Capture(window, true);
-        StopMLAA(renderer, window);
+        StopPass(renderer, window);
       }
       const Difference d = Compare(weights[0], weights[1], 0.0);
       // (and there are weights to compare)

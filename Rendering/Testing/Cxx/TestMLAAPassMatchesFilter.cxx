@@ -14,7 +14,7 @@
 // (section 4) with luma edges, which the pass does in place (it writes the reconstructed pixels
 // back as well as the blended ones); and Lab edges with reconstruction and kept alpha.
 #include "vtkMLAAScenes.h"
-#include "vtkMLAATestUtilities.h"
+#include "vtkAntialiasingTestUtilities.h"
 
 #include "vtkOpenGLMLAAPass.h"
 #include "vtkRenderStepsPass.h"

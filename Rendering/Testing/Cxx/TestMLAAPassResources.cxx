@@ -8,7 +8,7 @@
 // its MLAA targets take 1.5 times an RGBA8 back buffer (the chapter's figure); tiled rendering
 // (vtkRenderLargeImage) works; a multisampled window works; a pass without a delegate warns and
 // draws nothing. No errors are reported on the way.
-#include "vtkMLAARenderTestUtilities.h"
+#include "vtkAntialiasingRenderTestUtilities.h"
 
 #include "vtkRenderLargeImage.h"
 

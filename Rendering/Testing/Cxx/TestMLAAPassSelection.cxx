@@ -5,7 +5,7 @@
 // encoded ids is a third, wrong id). An area selection of cells and of points over a sphere, a
 // pixel query at an edge of the sphere, and a vtkRenderedAreaPicker give the same ids with the
 // pass as without it, and after the selection the pass antialiases again.
-#include "vtkMLAARenderTestUtilities.h"
+#include "vtkAntialiasingRenderTestUtilities.h"
 
 #include "vtkActor.h"
 #include "vtkInformation.h"
@@ -172,6 +172,6 @@ int TestMLAAPassSelection(int, char*[])
   // The selection left the pass as it was: the next render is antialiased as before.
   auto after = vtkMLAAScenes::Capture(window);
   MLAA_CHECK(Compare(antialiased, after, 0.0).Count == 0);
-  StopMLAA(renderer, window);
+  StopPass(renderer, window);
   return Result();
 }

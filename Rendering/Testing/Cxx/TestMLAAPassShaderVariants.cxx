@@ -10,7 +10,7 @@
 // - the program the last quad used (the neighbourhood blending) was built with the expected
 //   #defines and declares no uniform for them; and switching back to earlier options reuses the
 //   program already built (VTK's shader cache keeps it).
-#include "vtkMLAARenderTestUtilities.h"
+#include "vtkAntialiasingRenderTestUtilities.h"
 
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"

@@ -5,7 +5,7 @@
 // background comes out exactly as in the plain render, while the surface is antialiased.
 // AntialiasOverlaysOn() antialiases the overlays too (the text then changes). Plus a strict
 // baseline comparison of the default result.
-#include "vtkMLAARenderTestUtilities.h"
+#include "vtkAntialiasingRenderTestUtilities.h"
 
 #include "vtkActor.h"
 #include "vtkActor2D.h"
@@ -13,26 +13,6 @@
 #include "vtkActorCollection.h"
 
 using namespace vtkMLAATest;
-
-namespace
-{
-void SetVisibility(vtkRenderer* renderer, bool actors3D, bool actors2D)
-{
-  vtkActorCollection* actors = renderer->GetActors();
-  actors->InitTraversal();
-  while (vtkActor* a = actors->GetNextActor())
-  {
-    a->SetVisibility(actors3D);
-  }
-  vtkActor2DCollection* overlays = renderer->GetActors2D();
-  overlays->InitTraversal();
-  while (vtkActor2D* a = overlays->GetNextActor2D())
-  {
-    a->SetVisibility(actors2D);
-  }
-}
-
-}
 
 int TestMLAAPassTextOverlay(int argc, char* argv[])
 {

@@ -6,7 +6,7 @@
 // - MLAA before tone mapping (the pass is the delegate of a vtkToneMappingPass, so it draws into
 //   a floating-point framebuffer and renders its own delegate in floating point): edges are
 //   antialiased, flat regions keep their colour, and no GL error is reported.
-#include "vtkMLAARenderTestUtilities.h"
+#include "vtkAntialiasingRenderTestUtilities.h"
 
 #include "vtkToneMappingPass.h"
 

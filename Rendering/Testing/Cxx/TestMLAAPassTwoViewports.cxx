@@ -4,7 +4,7 @@
 // filter on the same viewport of the plain render (so the pass reads and writes its own viewport
 // only, at the right offset). A single pass object shared by both renderers gives the same image.
 // Plus a strict baseline comparison.
-#include "vtkMLAARenderTestUtilities.h"
+#include "vtkAntialiasingRenderTestUtilities.h"
 
 using namespace vtkMLAATest;
 
@@ -36,20 +36,20 @@ int TestMLAAPassTwoViewports(int argc, char* argv[])
   }
 
   // One pass for both renderers.
-  StopMLAA(left, window);
-  StopMLAA(right, window);
+  StopPass(left, window);
+  StopPass(right, window);
   auto shared = UseMLAA(left);
   right->SetPass(shared);
   auto sharedResult = vtkMLAAScenes::Capture(window);
   MLAA_CHECK(Compare(result, sharedResult, 0.0).Count == 0);
   right->SetPass(nullptr);
-  StopMLAA(left, window);
+  StopPass(left, window);
 
   UseMLAA(left);
   UseMLAA(right);
   auto rgb = vtkMLAAScenes::Capture(window);
   CheckBaseline(argc, argv, "TestMLAAPassTwoViewports", window, rgb, plain, 300);
-  StopMLAA(left, window);
-  StopMLAA(right, window);
+  StopPass(left, window);
+  StopPass(right, window);
   return Result();
 }

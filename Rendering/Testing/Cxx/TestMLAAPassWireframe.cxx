@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Regression test of vtkOpenGLMLAAPass on the "wireframe" scene (wireframe torus-like superquadric), rendered offscreen
 // without multisampling: strict comparison with the committed baseline, and the result must
-// differ from the plain render (see vtkMLAARenderTestUtilities.h).
-#include "vtkMLAARenderTestUtilities.h"
+// differ from the plain render (see vtkAntialiasingRenderTestUtilities.h).
+#include "vtkAntialiasingRenderTestUtilities.h"
 
 using namespace vtkMLAATest;
 

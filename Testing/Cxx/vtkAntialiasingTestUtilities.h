@@ -3,8 +3,8 @@
 // Helpers shared by the vtkMLAA tests: building small images, running the filter, and strict
 // image comparisons (VTK's regression comparison is too loose to show that antialiasing ran; see
 // the project's ENVIRONMENT notes).
-#ifndef vtkMLAATestUtilities_h
-#define vtkMLAATestUtilities_h
+#ifndef vtkAntialiasingTestUtilities_h
+#define vtkAntialiasingTestUtilities_h
 
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
@@ -194,13 +194,24 @@ inline vtkSmartPointer<vtkImageData> RunMLAA(vtkImageData* input, vtkMLAAOptions
   return RunFilter<vtkImageMLAA>(input, options);
 }
 
+// A named option set of one method. The tests of the behaviour every method shares run each of
+// a method's configurations, so that each way through the method (how far it reaches, how it
+// finds edges) meets every check.
+struct FilterConfiguration
+{
+  std::string Name;
+  std::function<void(vtkImageAntialiasingAlgorithm*)> Apply; // sets the options of a new filter
+};
+
 // One antialiasing method of the CPU filter, for the tests of vtkImageAntialiasingAlgorithm's
-// behaviour that every method shares: its class name and a factory of default-configured
-// filters. FilterMethods() lists them all; a new method is one more entry there.
+// behaviour that every method shares: its class name, a factory of default-configured filters
+// and its configurations (the first is the defaults). FilterMethods() lists them all; a new
+// method is one more entry there.
 struct FilterMethod
 {
   const char* Name;
   vtkSmartPointer<vtkImageAntialiasingAlgorithm> (*New)();
+  std::vector<FilterConfiguration> Configurations;
 };
 
 template <class Filter>
@@ -209,13 +220,112 @@ vtkSmartPointer<vtkImageAntialiasingAlgorithm> NewFilter()
   return vtkSmartPointer<Filter>::New();
 }
 
+// The options of a vtkImageMLAA or vtkImageDLAA made by a FilterMethod.
+template <class Filter>
+auto OptionsOf(vtkImageAntialiasingAlgorithm* filter)
+  -> decltype(static_cast<Filter*>(filter)->GetOptions())
+{
+  return static_cast<Filter*>(filter)->GetOptions();
+}
+
+// MLAA: the defaults (Lab edges, the high preset's search steps), luma edges, reconstruction,
+// and search distances from 1 step to 128 (line lengths by search loop and by the exact
+// count, and padding from a few pixels to 256).
+inline std::vector<FilterConfiguration> MLAAConfigurations()
+{
+  std::vector<FilterConfiguration> configurations = {
+    { "defaults", [](vtkImageAntialiasingAlgorithm*) {} },
+    { "luma edges",
+      [](vtkImageAntialiasingAlgorithm* f) { OptionsOf<vtkImageMLAA>(f)->SetEdgeDetectionToLuma(); } },
+    { "reconstruction",
+      [](vtkImageAntialiasingAlgorithm* f) { OptionsOf<vtkImageMLAA>(f)->ReconstructionOn(); } },
+  };
+  for (int steps : { 1, 4, 8, 32, 128 })
+  {
+    configurations.push_back({ std::to_string(steps) + " search steps",
+      [steps](vtkImageAntialiasingAlgorithm* f) {
+        OptionsOf<vtkImageMLAA>(f)->SetMaxSearchSteps(steps);
+      } });
+  }
+  return configurations;
+}
+
+// DLAA: the defaults (long edges, 10 pixels of padding) and short edges alone (2 pixels).
+inline std::vector<FilterConfiguration> DLAAConfigurations()
+{
+  return {
+    { "defaults", [](vtkImageAntialiasingAlgorithm*) {} },
+    { "long edges off",
+      [](vtkImageAntialiasingAlgorithm* f) { OptionsOf<vtkImageDLAA>(f)->LongEdgesOff(); } },
+  };
+}
+
 inline const std::vector<FilterMethod>& FilterMethods()
 {
   static const std::vector<FilterMethod> methods = {
-    { "vtkImageMLAA", &NewFilter<vtkImageMLAA> },
-    { "vtkImageDLAA", &NewFilter<vtkImageDLAA> },
+    { "vtkImageMLAA", &NewFilter<vtkImageMLAA>, MLAAConfigurations() },
+    { "vtkImageDLAA", &NewFilter<vtkImageDLAA>, DLAAConfigurations() },
   };
   return methods;
+}
+
+// A new filter of `method` in `configuration`.
+inline vtkSmartPointer<vtkImageAntialiasingAlgorithm> NewConfigured(
+  const FilterMethod& method, const FilterConfiguration& configuration)
+{
+  auto filter = method.New();
+  configuration.Apply(filter);
+  return filter;
+}
+
+// A new filter of `method` in `configuration` (the defaults when null) on `input`: a copy of
+// its output.
+inline vtkSmartPointer<vtkImageData> RunConfigured(const FilterMethod& method,
+  vtkImageData* input, const FilterConfiguration* configuration = nullptr)
+{
+  auto filter = NewConfigured(method, configuration ? *configuration : method.Configurations[0]);
+  filter->SetInputData(input);
+  filter->Update();
+  auto output = vtkSmartPointer<vtkImageData>::New();
+  output->DeepCopy(filter->GetOutput());
+  return output;
+}
+
+// The VTK scalar types a vtkImageData can hold as numbers, and the value range of each that
+// the filters normalise by default ([0, 1] for floating point).
+inline const std::vector<int>& ScalarTypes()
+{
+  static const std::vector<int> types = { VTK_CHAR, VTK_SIGNED_CHAR, VTK_UNSIGNED_CHAR,
+    VTK_SHORT, VTK_UNSIGNED_SHORT, VTK_INT, VTK_UNSIGNED_INT, VTK_LONG, VTK_UNSIGNED_LONG,
+    VTK_LONG_LONG, VTK_UNSIGNED_LONG_LONG, VTK_ID_TYPE, VTK_FLOAT, VTK_DOUBLE };
+  return types;
+}
+
+inline void TypeRange(int type, double& lo, double& hi)
+{
+  if (type == VTK_FLOAT || type == VTK_DOUBLE)
+  {
+    lo = 0.0;
+    hi = 1.0;
+  }
+  else
+  {
+    lo = vtkDataArray::GetDataTypeMin(type);
+    hi = vtkDataArray::GetDataTypeMax(type);
+  }
+}
+
+// An image of `type` whose values are lo + n (hi - lo) for the normalised picture
+// n = picture(x, y, z, component), rounded for integer types.
+inline vtkSmartPointer<vtkImageData> MakeTypedImage(int width, int height, int depth, int type,
+  int components, double lo, double hi, const std::function<double(int, int, int, int)>& picture)
+{
+  auto image = MakeImage(width, height, components, type, 0.0, depth);
+  FillImage(image, [&](int x, int y, int z, int k) {
+    const double v = lo + picture(x, y, z, k) * (hi - lo);
+    return type == VTK_FLOAT || type == VTK_DOUBLE ? v : std::round(v);
+  });
+  return image;
 }
 
 // Strict comparison: the number of values (all components) whose absolute difference exceeds
