@@ -56,6 +56,9 @@ void Usage(const char* program)
             << "  --warmup N       untimed frames per configuration first (default 10)\n"
             << "  --rounds N       split the timed frames into N interleaved rounds (default 5)\n"
             << "  --azimuth DEG    camera azimuth step per frame (default 0.2; 0 = still)\n"
+            << "  --clock cpu      time the process's CPU time per frame instead of the wall\n"
+            << "                   clock: for llvmpipe (whose GL work runs on the process's\n"
+            << "                   threads) on a machine shared with other work; not for a GPU\n"
             << "  --no-variants    leave out the MLAA pass with each feature and preset (+lab ...\n"
             << "                   P-ultra)\n"
             << "  --no-long-lines  leave out the MLAA pass at 8, 32 and 128 steps with the search\n"
@@ -78,6 +81,7 @@ int main(int argc, char* argv[])
   double azimuth = 0.2;
   bool longLines = true;
   bool variants = true;
+  bool cpuClock = false;
   std::string scene = "mixed";
   vtkNew<vtkMLAAOptions> options;
   for (int i = 1; i < argc; ++i)
@@ -117,6 +121,11 @@ int main(int argc, char* argv[])
     {
       longLines = false;
     }
+    else if (arg == "--clock" && hasValue &&
+      (std::string(argv[i + 1]) == "cpu" || std::string(argv[i + 1]) == "wall"))
+    {
+      cpuClock = std::string(argv[++i]) == "cpu";
+    }
     else if (arg == "--azimuth" && hasValue)
     {
       azimuth = std::atof(argv[++i]);
@@ -155,6 +164,7 @@ int main(int argc, char* argv[])
             << " offscreen, MultiSamples " << window->GetMultiSamples() << ", " << frames
             << " timed frames per configuration in " << rounds << " rounds after " << warmup
             << " warm-up frames, azimuth step " << azimuth << " deg, Render() + WaitForCompletion()"
+            << (cpuClock ? ", process CPU time" : ", wall clock")
             << std::endl;
   mlaaBenchmark::PrintRasteriserNote(mlaaBenchmark::OpenGLRenderer(window));
   std::cout << mlaaBenchmark::DescribeMLAAOptions(options) << std::endl;
@@ -226,9 +236,10 @@ int main(int argc, char* argv[])
   auto frame = [&]() {
     camera->Azimuth(azimuth);
     mlaaBenchmark::Stopwatch clock;
+    mlaaBenchmark::CpuStopwatch cpu;
     window->Render();
     glWindow->WaitForCompletion();
-    return clock.Milliseconds();
+    return cpuClock ? cpu.Milliseconds() : clock.Milliseconds();
   };
   auto use = [&](const Configuration& c) {
     renderer->SetPass(c.Pass);

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cstdlib>
 #include <functional>
 #include <iostream>
@@ -249,6 +250,25 @@ public:
 
 private:
   std::chrono::steady_clock::time_point Begin = std::chrono::steady_clock::now();
+};
+
+// CPU time of the whole process (every thread) in milliseconds. With Mesa's llvmpipe the GL work
+// runs on the process's own threads, so a frame's CPU time is its cost there; unlike wall-clock
+// time it hardly grows when other processes share the cores. It does not count work done by a
+// GPU: use it on llvmpipe only.
+class CpuStopwatch
+{
+public:
+  double Milliseconds() const { return Now() - this->Begin; }
+
+private:
+  static double Now()
+  {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
+  }
+  double Begin = Now();
 };
 
 // The q-quantile (0 = min, 0.5 = median, 1 = max) of `values`, linear interpolation.
