@@ -85,26 +85,31 @@ bool vtkOpenGLMLAAPass::PrepareMethodTargets(const Frame& frame)
   reallocated |=
     AllocateColorTarget(this->WeightsTexture, width, height, 4, VTK_UNSIGNED_CHAR, false);
   reallocated |= AllocateDepthTarget(this->MaskTexture, width, height, vtkTextureObject::Fixed16);
-  if (this->GetUsesRecursiveDoubling())
+  // Orthogonal and diagonal lengths by recursive doubling, each where it is used.
+  for (const bool diagonal : { false, true })
   {
-    for (vtkTextureObject*& lengths : this->LengthsTextures)
+    vtkTextureObject** textures = diagonal ? this->DiagonalLengthsTextures : this->LengthsTextures;
+    const bool used =
+      diagonal ? this->GetUsesDiagonalRecursiveDoubling() : this->GetUsesRecursiveDoubling();
+    for (int i = 0; i < 2; ++i)
     {
-      if (!lengths)
+      vtkTextureObject*& lengths = textures[i];
+      if (used)
       {
-        lengths = NewTexture(renWin);
+        if (!lengths)
+        {
+          lengths = NewTexture(renWin);
+        }
+        // RGBA16F: integers up to 2048 exactly; nearest.
+        reallocated |=
+          AllocateColorTarget(lengths, width, height, 4, VTK_FLOAT, false, GL_RGBA16F);
       }
-      // RGBA16F: integers up to 2048 exactly; nearest.
-      reallocated |=
-        AllocateColorTarget(lengths, width, height, 4, VTK_FLOAT, false, GL_RGBA16F);
-    }
-  }
-  else
-  {
-    // Not needed by the search loop: not kept (and no framebuffer keeps them attached).
-    for (vtkTextureObject*& lengths : this->LengthsTextures)
-    {
-      reallocated |= lengths != nullptr;
-      DeleteObject(lengths, renWin);
+      else
+      {
+        // Not needed by the search loop: not kept (and no framebuffer keeps them attached).
+        reallocated |= lengths != nullptr;
+        DeleteObject(lengths, renWin);
+      }
     }
   }
   // The reconstructed image (vtkMLAAOptions::Reconstruction), in the colour texture's format.
@@ -228,12 +233,13 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   }
   source->Deactivate();
 
-  // Line lengths by recursive doubling (LineLengths), on the same pixels.
+  // Line lengths by recursive doubling (LineLengths), on the same pixels, along the rows and
+  // columns and, with diagonal detection, along the diagonals in the same passes.
   vtkTextureObject* lengths = nullptr;
+  vtkTextureObject* diagonalLengths = nullptr;
   if (this->GetUsesRecursiveDoubling())
   {
-    lengths = this->ComputeLineLengths(renWin);
-    if (!lengths)
+    if (!this->ComputeLineLengths(renWin, lengths, diagonalLengths))
     {
       return false;
     }
@@ -249,7 +255,8 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
     Define("MLAA_MAX_SEARCH_STEPS", this->Options->GetMaxSearchSteps()) +
     Define("MLAA_DIAGONAL_DETECTION", this->Options->GetDiagonalDetection()) +
     Define("MLAA_MINIMUM_DIAGONAL_LENGTH", vtkMLAAOptions::MinimumDiagonalLength) +
-    Define("MLAA_RECURSIVE_DOUBLING", lengths != nullptr);
+    Define("MLAA_RECURSIVE_DOUBLING", lengths != nullptr) +
+    Define("MLAA_DIAGONAL_LENGTHS", diagonalLengths != nullptr);
   if (!this->ReadyQuad(renWin, this->WeightsQuad, vtkMLAABlendingWeightsFS, weightsDefines))
   {
     return false;
@@ -266,7 +273,16 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
     lengths->Activate();
     program->SetUniformi("lengthsTexture", lengths->GetTextureUnit());
   }
+  if (diagonalLengths)
+  {
+    diagonalLengths->Activate();
+    program->SetUniformi("diagonalLengthsTexture", diagonalLengths->GetTextureUnit());
+  }
   this->WeightsQuad.Quad->Render();
+  if (diagonalLengths)
+  {
+    diagonalLengths->Deactivate();
+  }
   if (lengths)
   {
     lengths->Deactivate();
@@ -279,24 +295,35 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
 }
 
 //------------------------------------------------------------------------------
-vtkTextureObject* vtkOpenGLMLAAPass::ComputeLineLengths(vtkOpenGLRenderWindow* renWin)
+bool vtkOpenGLMLAAPass::ComputeLineLengths(
+  vtkOpenGLRenderWindow* renWin, vtkTextureObject*& lengths, vtkTextureObject*& diagonalLengths)
 {
   vtkOpenGLState* ostate = renWin->GetState();
   vtkOpenGLFramebufferObject* fbo = this->WorkFramebuffer;
-  // Both textures start at 0: the passes write the edge pixels only, and the jumps of the
+  const bool diagonals = this->GetUsesDiagonalRecursiveDoubling();
+  const unsigned int outputs = diagonals ? 2 : 1;
+  // Attaches textures[0][i] (and textures[1][i]) as the outputs.
+  vtkTextureObject** textures[2] = { this->LengthsTextures, this->DiagonalLengthsTextures };
+  auto attach = [&](int i) {
+    for (unsigned int k = 0; k < outputs; ++k)
+    {
+      fbo->AddColorAttachment(k, textures[k][i]);
+    }
+    fbo->ActivateDrawBuffers(outputs);
+  };
+  // Every texture starts at 0: the passes write the edge pixels only, and the jumps of the
   // doubling land on pixels without an edge too, which must read 0.
   ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
-  for (vtkTextureObject* lengths : this->LengthsTextures)
-  {
-    fbo->AddColorAttachment(0, lengths);
-    fbo->ActivateDrawBuffer(0);
-    ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
-  }
+  attach(0);
+  ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+  attach(1);
+  ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
 
-  // Initialisation: the 0/1 flags of every direction into LengthsTextures[1] (still attached).
-  if (!this->ReadyQuad(renWin, this->LengthsInitQuad, vtkMLAALineLengthsInitFS, std::string()))
+  // Initialisation: the 0/1 flags of every direction into the textures [1] (still attached).
+  const std::string defines = Define("MLAA_DIAGONAL_LENGTHS", diagonals);
+  if (!this->ReadyQuad(renWin, this->LengthsInitQuad, vtkMLAALineLengthsInitFS, defines))
   {
-    return nullptr;
+    return false;
   }
   this->EdgesTexture->Activate();
   this->LengthsInitQuad.Quad->Program->SetUniformi(
@@ -305,28 +332,41 @@ vtkTextureObject* vtkOpenGLMLAAPass::ComputeLineLengths(vtkOpenGLRenderWindow* r
   this->EdgesTexture->Deactivate();
 
   // Doubling passes for levels 1, 4, 16, ... until the counts are exact up to the maximum
-  // distance (4 level >= maximum distance), reading one texture and writing the other.
-  if (!this->ReadyQuad(renWin, this->LengthsQuad, vtkMLAALineLengthsFS, std::string()))
+  // distance (4 level >= maximum distance), reading one set of textures and writing the other.
+  if (!this->ReadyQuad(renWin, this->LengthsQuad, vtkMLAALineLengthsFS, defines))
   {
-    return nullptr;
+    return false;
   }
   vtkShaderProgram* program = this->LengthsQuad.Quad->Program;
   const int maxDistance = this->Options->GetMaxDistance();
   int source = 1;
   for (int level = 1; level < maxDistance; level *= 4)
   {
-    vtkTextureObject* from = this->LengthsTextures[source];
-    vtkTextureObject* to = this->LengthsTextures[1 - source];
-    fbo->AddColorAttachment(0, to);
-    fbo->ActivateDrawBuffer(0);
-    from->Activate();
-    program->SetUniformi("lengthsTexture", from->GetTextureUnit());
+    attach(1 - source);
+    for (unsigned int k = 0; k < outputs; ++k)
+    {
+      textures[k][source]->Activate();
+    }
+    program->SetUniformi("lengthsTexture", textures[0][source]->GetTextureUnit());
+    if (diagonals)
+    {
+      program->SetUniformi("diagonalLengthsTexture", textures[1][source]->GetTextureUnit());
+    }
     program->SetUniformf("level", static_cast<float>(level));
     this->LengthsQuad.Quad->Render();
-    from->Deactivate();
+    for (unsigned int k = 0; k < outputs; ++k)
+    {
+      textures[k][source]->Deactivate();
+    }
     source = 1 - source;
   }
-  return this->LengthsTextures[source];
+  if (diagonals)
+  {
+    fbo->RemoveColorAttachment(1);
+  }
+  lengths = textures[0][source];
+  diagonalLengths = diagonals ? textures[1][source] : nullptr;
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -527,6 +567,7 @@ void vtkOpenGLMLAAPass::ReleaseMethodResources(vtkWindow* w)
   for (vtkTextureObject** texture : { &this->EdgesTexture, &this->WeightsTexture,
          &this->MaskTexture, &this->AreaTexture,
          &this->DiagonalAreaTexture, &this->LengthsTextures[0], &this->LengthsTextures[1],
+         &this->DiagonalLengthsTextures[0], &this->DiagonalLengthsTextures[1],
          &this->ReconstructedTexture })
   {
     DeleteObject(*texture, w);
@@ -555,7 +596,9 @@ vtkIdType vtkOpenGLMLAAPass::GetMethodTargetMemorySize()
   return TextureBytes(this->ReconstructedTexture, colorBytes) + this->GetMLAATargetMemorySize() +
     TextureBytes(this->MaskTexture, 2) +
     TextureBytes(this->AreaTexture, 8) + TextureBytes(this->DiagonalAreaTexture, 12) +
-    TextureBytes(this->LengthsTextures[0], 8) + TextureBytes(this->LengthsTextures[1], 8);
+    TextureBytes(this->LengthsTextures[0], 8) + TextureBytes(this->LengthsTextures[1], 8) +
+    TextureBytes(this->DiagonalLengthsTextures[0], 8) +
+    TextureBytes(this->DiagonalLengthsTextures[1], 8);
 }
 
 //------------------------------------------------------------------------------
@@ -570,6 +613,12 @@ bool vtkOpenGLMLAAPass::GetUsesRecursiveDoubling()
     default:
       return this->Options->GetCountsExactLineLengths();
   }
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLMLAAPass::GetUsesDiagonalRecursiveDoubling()
+{
+  return this->Options->GetDiagonalDetection() && this->GetUsesRecursiveDoubling();
 }
 
 //------------------------------------------------------------------------------

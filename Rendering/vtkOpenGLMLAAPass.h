@@ -165,6 +165,9 @@ public:
    * - AUTOMATIC (default): the rule both back ends share,
    *   vtkMLAAOptions::GetCountsExactLineLengths(): RECURSIVE_DOUBLING from
    *   vtkMLAAOptions::ExactLineLengthsSteps search steps on, SEARCH_LOOP below.
+   * The same choice applies to the staircases of vtkMLAAOptions::DiagonalDetection: searched
+   * one unit per read from every unit (up to GetMaxDistance() units each way), or counted in the
+   * same doubling passes along the diagonals, into two more RGBA16F textures.
    */
   enum LineLengthMethods
   {
@@ -187,10 +190,17 @@ public:
   bool GetUsesRecursiveDoubling();
 
   /**
+   * Whether the next render counts the lengths of staircases (vtkMLAAOptions::DiagonalDetection)
+   * by recursive doubling: GetUsesRecursiveDoubling() with diagonal detection on.
+   */
+  bool GetUsesDiagonalRecursiveDoubling();
+
+  /**
    * Bytes of GPU memory held by the pass's render targets at the last render (the copy of the
    * delegate's colour, its reconstructed copy with vtkMLAAOptions::Reconstruction, and of its
    * depth when the pass renders it into its own textures, edges, blending weights, the pixel
-   * mask, the area textures and, with recursive doubling, the two line-lengths textures).
+   * mask, the area textures and, with recursive doubling, the two line-lengths textures and the
+   * two diagonal-lengths textures).
    */
   vtkIdType GetTargetMemorySize() override;
 
@@ -223,9 +233,12 @@ private:
 
   // Passes 1 and 2 into EdgesTexture and WeightsTexture.
   bool ComputeEdgesAndWeights(vtkOpenGLRenderWindow* renWin, int width, int height, bool useAlpha);
-  // The line lengths by recursive doubling into one of LengthsTextures (returned), on the pixels
-  // of the mask (the MLAA framebuffer is bound with the mask and depth test EQUAL).
-  vtkTextureObject* ComputeLineLengths(vtkOpenGLRenderWindow* renWin);
+  // The line lengths by recursive doubling into one of LengthsTextures (`lengths`) and, with
+  // diagonal detection, in the same passes the lengths of staircases into one of
+  // DiagonalLengthsTextures (`diagonalLengths`, else null), on the pixels of the mask (the MLAA
+  // framebuffer is bound with the mask and depth test EQUAL).
+  bool ComputeLineLengths(vtkOpenGLRenderWindow* renWin, vtkTextureObject*& lengths,
+    vtkTextureObject*& diagonalLengths);
   // Pass 3 (or a debug output) into the target viewport, composited over it with premultiplied
   // alpha when `composite`.
   // With `straightAlpha`, colours are premultiplied before blending and divided by alpha after.
@@ -252,6 +265,7 @@ private:
   vtkTextureObject* AreaTexture = nullptr;
   vtkTextureObject* DiagonalAreaTexture = nullptr;
   vtkTextureObject* LengthsTextures[2] = { nullptr, nullptr }; // RGBA16F, ping-pong
+  vtkTextureObject* DiagonalLengthsTextures[2] = { nullptr, nullptr }; // the same, staircases
   vtkTextureObject* ReconstructedTexture = nullptr; // with vtkMLAAOptions::Reconstruction only
   int AreaTextureMaxDistance = 0;
   ShaderVariant ReconstructionQuad;

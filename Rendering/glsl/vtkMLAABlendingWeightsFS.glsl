@@ -28,12 +28,18 @@
 //                                 from the line lengths of vtkMLAALineLengthsFS.glsl (Biri et
 //                                 al., section 3.3) instead of being searched here; they are the
 //                                 same integers (vtkOpenGLMLAAPass::LineLengths)
+//   MLAA_DIAGONAL_LENGTHS         defined (with MLAA_DIAGONAL_DETECTION): the numbers of units of
+//                                 staircases are read from the diagonal lengths that
+//                                 vtkMLAALineLengthsFS.glsl counted by recursive doubling
+//                                 instead of being searched unit by unit here; the same integers
+//                                 (vtkOpenGLMLAAPass::LineLengths)
 //
 // With MLAA_DIAGONAL_DETECTION, edgels that belong to a staircase of one-pixel steps (at least
 // minimumDiagonalLength units) take their weights from the 45-degree line through it instead,
 // from the diagonal area table (vtkMLAAAreaTexture::ComputeDiagonalAreas). Exact texel reads are
-// used there; the staircase is followed one unit per step (vtkImageMLAA counts the same lengths
-// as run lengths along the diagonals, WeightsComputer::ComputeDiagonalLengths).
+// used there; the staircase is followed one unit per step, or its lengths are read from the
+// diagonal lengths texture (vtkImageMLAA counts the same lengths as run lengths along the
+// diagonals, WeightsComputer::ComputeDiagonalLengths).
 //
 // Must match vtkImageMLAA's blending weights (ComputeBlendingWeights in Filters/vtkMLAABlendingWeights.cxx);
 // the distances of searchTopEdges/searchLeftEdges must equal the line lengths of
@@ -47,6 +53,11 @@ uniform sampler2D diagonalAreaTexture; // vtkMLAAAreaTexture's diagonal table, R
 #ifdef MLAA_RECURSIVE_DOUBLING
 // Line lengths (left, right, down, up), RGBA16F integers, exact up to 4^passes >= maxDistance.
 uniform sampler2D lengthsTexture;
+#endif
+#ifdef MLAA_DIAGONAL_LENGTHS
+// Units of staircases: rising towards (-1, -1), (+1, +1), falling towards (-1, +1), (+1, -1);
+// RGBA16F integers, exact up to the maximum distance (vtkMLAALineLengthsFS.glsl).
+uniform sampler2D diagonalLengthsTexture;
 #endif
 
 const int maxSearchSteps = MLAA_MAX_SEARCH_STEPS;
@@ -156,6 +167,13 @@ bool isUnit(ivec2 p, bool rising)
 int searchDiagonal(ivec2 p, ivec2 direction, bool rising, out bool reachedEnd)
 {
   int maxDistance = cellSize - 1;
+#ifdef MLAA_DIAGONAL_LENGTHS
+  // The count of the unit, read instead of searched: channel 0 to 3 as in the texture.
+  int channel = (rising ? 0 : 2) + (direction.y * (rising ? 1 : -1) > 0 ? 1 : 0);
+  int count = int(round(texelFetch(diagonalLengthsTexture, p, 0)[channel]));
+  reachedEnd = count < maxDistance;
+  return min(count, maxDistance);
+#else
   for (int k = 1; k <= maxDistance; ++k)
   {
     if (!isUnit(p + k * direction, rising))
@@ -166,6 +184,7 @@ int searchDiagonal(ivec2 p, ivec2 direction, bool rising, out bool reachedEnd)
   }
   reachedEnd = false;
   return maxDistance;
+#endif
 }
 
 // End code of the diagonal table (0 nothing, 1 out of the unit's pixel, 2 into it) from what the

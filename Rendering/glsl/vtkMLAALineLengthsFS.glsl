@@ -25,21 +25,30 @@
 // exact because a line that continues across the border continues for ever there (the
 // initialisation reads its edgels clamped too).
 //
+// Built with MLAA_DIAGONAL_LENGTHS defined, the same passes also count the units of staircases
+// along the diagonals, from the second texture and into the second output (the flags of
+// vtkMLAALineLengthsInitFS.glsl): red and green towards (-1, -1) and (+1, +1) for rising
+// staircases, blue and alpha towards (-1, +1) and (+1, -1) for falling ones. A staircase ends
+// inside the image, so the clamped reads are never used there.
+//
 // Must match the line lengths of vtkImageMLAA (ComputeRowLineLengths and
-// ComputeColumnLineLengths in Filters/vtkMLAALineLengths.cxx).
+// ComputeColumnLineLengths in Filters/vtkMLAALineLengths.cxx) and, with MLAA_DIAGONAL_LENGTHS,
+// its diagonal lengths (WeightsComputer::ComputeDiagonalLengths in
+// Filters/vtkMLAABlendingWeights.cxx).
 
 in vec2 texCoord;
 
 uniform sampler2D lengthsTexture; // RGBA16F, the previous pass's counts (texelFetch only)
 uniform float level;              // 1, 4, 16 or 64
+#ifdef MLAA_DIAGONAL_LENGTHS
+uniform sampler2D diagonalLengthsTexture; // RGBA16F, the previous pass's staircase counts
+#endif
 
-void main()
+// Equation 1 three times for each channel of `lengths` at p, along `directions`.
+vec4 doubled(sampler2D lengths, ivec2 p, ivec2 size, ivec2 directions[4])
 {
-  ivec2 size = textureSize(lengthsTexture, 0);
-  ivec2 p = ivec2(texCoord * vec2(size)); // this fragment's pixel (texCoord is at its centre)
-  vec4 d = texelFetch(lengthsTexture, p, 0);
+  vec4 d = texelFetch(lengths, p, 0);
   vec4 result = d;
-  const ivec2 directions[4] = ivec2[4](ivec2(-1, 0), ivec2(1, 0), ivec2(0, -1), ivec2(0, 1));
   for (int c = 0; c < 4; ++c)
   {
     if (d[c] >= level)
@@ -48,11 +57,23 @@ void main()
       ivec2 q = p + directions[c] * int(d[c]);
       for (int k = 0; k < 3; ++k)
       {
-        float jump = texelFetch(lengthsTexture, clamp(q, ivec2(0), size - 1), 0)[c];
+        float jump = texelFetch(lengths, clamp(q, ivec2(0), size - 1), 0)[c];
         result[c] += jump;
         q += directions[c] * int(jump);
       }
     }
   }
-  gl_FragData[0] = result;
+  return result;
+}
+
+void main()
+{
+  ivec2 size = textureSize(lengthsTexture, 0);
+  ivec2 p = ivec2(texCoord * vec2(size)); // this fragment's pixel (texCoord is at its centre)
+  gl_FragData[0] = doubled(lengthsTexture, p, size,
+    ivec2[4](ivec2(-1, 0), ivec2(1, 0), ivec2(0, -1), ivec2(0, 1)));
+#ifdef MLAA_DIAGONAL_LENGTHS
+  gl_FragData[1] = doubled(diagonalLengthsTexture, p, size,
+    ivec2[4](ivec2(-1, -1), ivec2(1, 1), ivec2(-1, 1), ivec2(1, -1)));
+#endif
 }

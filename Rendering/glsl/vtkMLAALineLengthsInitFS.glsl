@@ -23,8 +23,23 @@
 // vtkOpenGLMLAAPass runs this on the pixels with an edge only (the depth mask); the others stay
 // cleared to 0.
 //
+// With MLAA_DIAGONAL_LENGTHS defined (vtkMLAAOptions::DiagonalDetection), a second output
+// (RGBA16F) holds the same flags for the staircases of one-pixel steps, so that the doubling
+// passes count their units along the diagonals as they count lines (the search of
+// vtkMLAABlendingWeightsFS.glsl reads them one unit at a time, up to twice the maximum distance
+// per pixel on long 45-degree edges): whether the next pixel that way is a unit of the same
+// staircase,
+// - red, green: for a unit of a rising staircase (a pixel with both its left and its top edgel),
+//   towards (-1, -1) and (+1, +1);
+// - blue, alpha: for a unit of a falling staircase (a pixel q with its top edgel whose right
+//   neighbour has its left edgel), towards (-1, +1) and (+1, -1).
+// Outside the image there are no edgels here (no clamping), so a staircase ends at the border as
+// the search ends there.
+//
 // Must match the line lengths of vtkImageMLAA (ComputeRowLineLengths and
 // ComputeColumnLineLengths in Filters/vtkMLAALineLengths.cxx) and searchTopEdges/searchLeftEdges in
+// vtkMLAABlendingWeightsFS.glsl; the staircase flags its diagonal lengths
+// (WeightsComputer::ComputeDiagonalLengths in Filters/vtkMLAABlendingWeights.cxx) and isUnit in
 // vtkMLAABlendingWeightsFS.glsl.
 
 in vec2 texCoord;
@@ -39,6 +54,23 @@ vec2 edgelsAt(ivec2 p)
 }
 bool topAt(ivec2 p) { return edgelsAt(p).g > 0.5; }
 bool leftAt(ivec2 p) { return edgelsAt(p).r > 0.5; }
+
+#ifdef MLAA_DIAGONAL_LENGTHS
+// Exact edgels, none outside the image.
+vec2 unclampedEdgelsAt(ivec2 p)
+{
+  if (any(lessThan(p, ivec2(0))) || any(greaterThanEqual(p, size)))
+  {
+    return vec2(0.0);
+  }
+  return texelFetch(edgesTexture, p, 0).rg;
+}
+bool isRisingUnit(ivec2 p) { return all(greaterThan(unclampedEdgelsAt(p), vec2(0.5))); }
+bool isFallingUnit(ivec2 q)
+{
+  return unclampedEdgelsAt(q).g > 0.5 && unclampedEdgelsAt(q + ivec2(1, 0)).r > 0.5;
+}
+#endif
 
 void main()
 {
@@ -63,4 +95,18 @@ void main()
     flags.a = (leftAt(p + ivec2(0, 1)) && !topAt(p) && !topAt(p - ivec2(1, 0))) ? 1.0 : 0.0;
   }
   gl_FragData[0] = flags;
+#ifdef MLAA_DIAGONAL_LENGTHS
+  vec4 diagonalFlags = vec4(0.0);
+  if (top && left && isRisingUnit(p)) // (p is inside: its clamped edgels are its own)
+  {
+    diagonalFlags.r = isRisingUnit(p - ivec2(1, 1)) ? 1.0 : 0.0;
+    diagonalFlags.g = isRisingUnit(p + ivec2(1, 1)) ? 1.0 : 0.0;
+  }
+  if (top && isFallingUnit(p))
+  {
+    diagonalFlags.b = isFallingUnit(p + ivec2(-1, 1)) ? 1.0 : 0.0;
+    diagonalFlags.a = isFallingUnit(p + ivec2(1, -1)) ? 1.0 : 0.0;
+  }
+  gl_FragData[1] = diagonalFlags;
+#endif
 }

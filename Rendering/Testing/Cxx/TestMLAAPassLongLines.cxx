@@ -10,7 +10,11 @@
 // - the blending-weights debug output (vtkMLAAOptions::BLENDING_WEIGHTS) is identical with and
 //   without recursive doubling on every shared scene at 8, 32 and 128 steps (the lengths are the
 //   same integers);
-// - AUTOMATIC resolves by MaxSearchSteps, and the doubling textures only exist while used.
+// - staircases of one-pixel steps (45-degree edges of diamonds, long ones and short ones): their
+//   lengths searched unit by unit and counted by recursive doubling give the same weights and
+//   the same image, equal to vtkImageMLAA's within 2/255;
+// - AUTOMATIC resolves by MaxSearchSteps (staircases with the rows and columns), and the
+//   doubling textures only exist while used.
 #include "vtkAntialiasingRenderTestUtilities.h"
 #include "vtkMLAAScenes.h"
 #include "vtkAntialiasingTestUtilities.h"
@@ -18,6 +22,7 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkMath.h"
 #include "vtkPointData.h"
 #include "vtkDataArray.h"
@@ -29,6 +34,7 @@
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <cmath>
 #include <vector>
@@ -172,6 +178,87 @@ void OneDegreeSlope()
   }
 }
 
+// Two diamonds (edges at 45 degrees both ways): a large black one whose edges cross the window,
+// longer than any maximum distance, with a small white one inside, whose staircases end at
+// corners.
+void BuildDiamonds(vtkRenderer* renderer, int size)
+{
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> polys;
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetNumberOfComponents(3);
+  const double center[2] = { size / 2.0 + 0.3, size / 2.0 + 0.2 };
+  for (const double radius : { 0.75 * size, 0.2 * size })
+  {
+    const double z = radius < size / 2.0 ? 1.0 : 0.0; // the small one in front
+    vtkIdType ids[4];
+    ids[0] = points->InsertNextPoint(center[0] - radius, center[1], z);
+    ids[1] = points->InsertNextPoint(center[0], center[1] - radius, z);
+    ids[2] = points->InsertNextPoint(center[0] + radius, center[1], z);
+    ids[3] = points->InsertNextPoint(center[0], center[1] + radius, z);
+    polys->InsertNextCell(4, ids);
+    const unsigned char value = z > 0.0 ? 255 : 0;
+    colors->InsertNextTuple3(value, value, value);
+  }
+  vtkNew<vtkPolyData> polyData;
+  polyData->SetPoints(points);
+  polyData->SetPolys(polys);
+  polyData->GetCellData()->SetScalars(colors);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(polyData);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->LightingOff();
+  renderer->AddActor(actor);
+  renderer->SetBackground(0.6, 0.6, 0.6);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->ParallelProjectionOn();
+  camera->SetFocalPoint(size / 2.0, size / 2.0, 0.0);
+  camera->SetPosition(size / 2.0, size / 2.0, 100.0);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->SetParallelScale(size / 2.0);
+  renderer->ResetCameraClippingRange();
+}
+
+void DiagonalStaircases()
+{
+  const int size = 200;
+  auto window = vtkMLAAScenes::NewOffscreenWindow(size, size);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  BuildDiamonds(renderer, size);
+  auto plain = vtkMLAAScenes::Capture(window);
+  for (int searchSteps : { 4, 16, 128 })
+  {
+    vtkNew<vtkMLAAOptions> options;
+    options->SetMaxSearchSteps(searchSteps);
+    auto cpu = RunMLAA(plain, options);
+    vtkSmartPointer<vtkImageData> images[2], weights[2];
+    for (int doubling = 0; doubling < 2; ++doubling)
+    {
+      auto pass = UseMLAA(renderer, options);
+      pass->SetLineLengths(
+        doubling ? vtkOpenGLMLAAPass::RECURSIVE_DOUBLING : vtkOpenGLMLAAPass::SEARCH_LOOP);
+      MLAA_CHECK(pass->GetUsesDiagonalRecursiveDoubling() == (doubling == 1));
+      images[doubling] = vtkMLAAScenes::Capture(window);
+      options->SetDebugOutput(vtkMLAAOptions::BLENDING_WEIGHTS); // the pass's options
+      weights[doubling] = vtkMLAAScenes::Capture(window, true);
+      options->SetDebugOutput(vtkMLAAOptions::NO_DEBUG_OUTPUT);
+      StopPass(renderer, window);
+      const Difference parity = Compare(cpu, images[doubling], 2.0);
+      const vtkIdType changed = Compare(plain, images[doubling], 2.0).Pixels;
+      std::cout << "diamonds, " << searchSteps << " steps, "
+                << (doubling ? "recursive doubling" : "search loop") << ": " << parity.Pixels
+                << " pixels differ from the filter by more than 2/255 (largest " << parity.Max
+                << "), " << changed << " antialiased" << std::endl;
+      MLAA_CHECK(parity.Count == 0);
+      MLAA_CHECK(changed > 3 * size); // the edges of both diamonds, blended
+    }
+    MLAA_CHECK(Compare(weights[0], weights[1], 0.0).Count == 0);
+    MLAA_CHECK(Compare(images[0], images[1], 0.0).Count == 0);
+  }
+}
+
 void SameWeightsOnSharedScenes()
 {
   for (const std::string& name : vtkMLAAScenes::Names())
@@ -223,7 +310,26 @@ void AutomaticAndResources()
   pass->GetOptions()->SetMaxSearchSteps(1);
   MLAA_CHECK(pass->GetUsesRecursiveDoubling());
 
-  // The two RGBA16F textures (8 bytes per pixel each) are held while doubling is used only.
+  // Staircases are counted in the same passes, with diagonal detection only.
+  pass->SetLineLengthsToAutomatic();
+  pass->GetOptions()->SetMaxSearchSteps(vtkMLAAOptions::ExactLineLengthsSteps - 1);
+  MLAA_CHECK(!pass->GetUsesDiagonalRecursiveDoubling());
+  pass->GetOptions()->SetMaxSearchSteps(vtkMLAAOptions::ExactLineLengthsSteps);
+  MLAA_CHECK(pass->GetUsesDiagonalRecursiveDoubling());
+  pass->GetOptions()->DiagonalDetectionOff();
+  MLAA_CHECK(pass->GetUsesRecursiveDoubling());
+  MLAA_CHECK(!pass->GetUsesDiagonalRecursiveDoubling());
+  pass->SetLineLengthsToRecursiveDoubling();
+  MLAA_CHECK(!pass->GetUsesDiagonalRecursiveDoubling());
+  pass->GetOptions()->DiagonalDetectionOn();
+  MLAA_CHECK(pass->GetUsesDiagonalRecursiveDoubling());
+  pass->SetLineLengthsToSearchLoop();
+  MLAA_CHECK(!pass->GetUsesDiagonalRecursiveDoubling());
+  pass->SetLineLengthsToRecursiveDoubling();
+  pass->GetOptions()->SetMaxSearchSteps(1);
+
+  // The four RGBA16F textures (8 bytes per pixel each: two for the rows and columns, two for the
+  // staircases) are held while doubling is used only.
   auto window = vtkMLAAScenes::NewOffscreenWindow(64, 48);
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
@@ -236,7 +342,7 @@ void AutomaticAndResources()
   pass->SetLineLengthsToSearchLoop();
   window->Render();
   const vtkIdType withLoop = pass->GetTargetMemorySize();
-  MLAA_CHECK(withDoubling - withLoop == 2 * 8 * 64 * 48);
+  MLAA_CHECK(withDoubling - withLoop == 4 * 8 * 64 * 48);
   pass->ReleaseGraphicsResources(window);
   MLAA_CHECK(pass->GetTargetMemorySize() == 0);
   renderer->SetPass(nullptr);
@@ -246,6 +352,7 @@ void AutomaticAndResources()
 int TestMLAAPassLongLines(int, char*[])
 {
   OneDegreeSlope();
+  DiagonalStaircases();
   SameWeightsOnSharedScenes();
   AutomaticAndResources();
   return Result();
