@@ -27,7 +27,16 @@
 #include "BenchmarkUtilities.h"
 #include "vtkMLAAScenes.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkMath.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkNew.h"
 #include "vtkOpenGLDLAAPass.h"
 #include "vtkOpenGLFXAAPass.h"
@@ -38,6 +47,7 @@
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
@@ -46,12 +56,77 @@
 
 namespace
 {
+// The stress scene of the searches, "stripes-DEG": black and white stripes 4 pixels wide at DEG
+// degrees from horizontal over the whole view, flat-shaded, in a parallel view of one world unit
+// per pixel. Every stripe edge is one long line (near 0 or 90 degrees: the search along rows or
+// columns) or one long staircase of one-pixel steps (45 degrees: the diagonal search), so it is
+// the worst case of their cost, not a picture anyone renders. ParseStripes: false for a name of
+// another form.
+bool ParseStripes(const std::string& name, double& degrees)
+{
+  const std::string prefix = "stripes-";
+  if (name.compare(0, prefix.size(), prefix) != 0)
+  {
+    return false;
+  }
+  char* end = nullptr;
+  degrees = std::strtod(name.c_str() + prefix.size(), &end);
+  return end != name.c_str() + prefix.size() && *end == '\0' && degrees >= 0.0 && degrees <= 90.0;
+}
+
+void BuildStripes(double degrees, vtkRenderer* renderer, int width, int height)
+{
+  const double angle = vtkMath::RadiansFromDegrees(degrees);
+  const double along[2] = { std::cos(angle), std::sin(angle) };
+  const double across[2] = { -along[1], along[0] };
+  const double reach = std::hypot(width, height); // every stripe long enough to cross the view
+  const double stripeWidth = 4.0;
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> quads;
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetNumberOfComponents(3);
+  const int count = static_cast<int>(reach / stripeWidth) + 2;
+  for (int i = -count / 2; i <= count / 2; ++i)
+  {
+    const double c0 = i * stripeWidth, c1 = c0 + stripeWidth;
+    vtkIdType ids[4];
+    const double corners[4][2] = { { -reach, c0 }, { reach, c0 }, { reach, c1 }, { -reach, c1 } };
+    for (int k = 0; k < 4; ++k)
+    {
+      ids[k] = points->InsertNextPoint(corners[k][0] * along[0] + corners[k][1] * across[0],
+        corners[k][0] * along[1] + corners[k][1] * across[1], 0.0);
+    }
+    quads->InsertNextCell(4, ids);
+    const unsigned char value = (i & 1) ? 255 : 0;
+    colors->InsertNextTuple3(value, value, value);
+  }
+  vtkNew<vtkPolyData> stripes;
+  stripes->SetPoints(points);
+  stripes->SetPolys(quads);
+  stripes->GetCellData()->SetScalars(colors);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(stripes);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->LightingOff();
+  renderer->AddActor(actor);
+  renderer->SetBackground(0.5, 0.5, 0.5);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->ParallelProjectionOn();
+  camera->SetPosition(0.3, 0.2, 1000.0); // stripe edges off the pixel centres
+  camera->SetFocalPoint(0.3, 0.2, 0.0);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->SetParallelScale(height / 2.0);
+  renderer->ResetCameraClippingRange();
+}
+
 void Usage(const char* program)
 {
   std::cout << "Usage: " << program << " [options]\n"
             << "Times frames with and without the MLAA and FXAA passes (MEASURING.md).\n"
             << "  --size WxH       window size (default 1920x1080)\n"
-            << "  --scene NAME     scene (default mixed)\n"
+            << "  --scene NAME     scene (default mixed), or stripes-DEG: stripes 4 pixels wide at\n"
+            << "                   DEG degrees, the worst case of the searches (e.g. stripes-45)\n"
             << "  --frames N       timed frames per configuration (default 100)\n"
             << "  --warmup N       untimed frames per configuration first (default 10)\n"
             << "  --rounds N       split the timed frames into N interleaved rounds (default 5)\n"
@@ -141,7 +216,9 @@ int main(int argc, char* argv[])
       return EXIT_FAILURE;
     }
   }
-  if (vtkMLAAScenes::Describe(scene).empty())
+  double stripesDegrees = 0.0;
+  const bool stripes = ParseStripes(scene, stripesDegrees);
+  if (!stripes && vtkMLAAScenes::Describe(scene).empty())
   {
     std::cerr << "unknown scene: " << scene << std::endl;
     return EXIT_FAILURE;
@@ -151,7 +228,14 @@ int main(int argc, char* argv[])
   auto window = vtkMLAAScenes::NewOffscreenWindow(width, height);
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
-  vtkMLAAScenes::Build(scene, renderer);
+  if (stripes)
+  {
+    BuildStripes(stripesDegrees, renderer, width, height);
+  }
+  else
+  {
+    vtkMLAAScenes::Build(scene, renderer);
+  }
   window->Render();
   auto* glWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
   if (!glWindow)
