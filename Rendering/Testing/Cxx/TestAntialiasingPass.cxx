@@ -8,52 +8,21 @@
 //   AntialiasOverlaysOn();
 // - two viewports: each equals the pass on a window of the viewport's size alone, and the CPU
 //   filter on the viewport's plain render;
-// - a layer-1 renderer with the pass leaves layer 0's pixels away from its geometry exactly as
-//   they were and antialiases its own silhouettes;
-// - a hardware selection gives the same cells with and without the pass.
-// No errors are reported on the way. (The method-specific tests compare with the CPU filters
-// and baselines: TestMLAAPassTwoViewports, TestMLAAPassLayers, TestMLAAPassSelection,
-// TestMLAAPassTextOverlay; DLAA's options and targets are in TestDLAAPass.)
+// No errors are reported on the way. (Layers are tested in TestAntialiasingPassLayers, selection
+// in TestAntialiasingPassSelection; the method-specific tests compare with the CPU filters and
+// baselines: TestMLAAPassTwoViewports, TestMLAAPassTextOverlay; DLAA's options and targets are
+// in TestDLAAPass.)
 #include "vtkAntialiasingRenderTestUtilities.h"
 
 #include "vtkActor.h"
 #include "vtkActor2D.h"
 #include "vtkActor2DCollection.h"
 #include "vtkActorCollection.h"
-#include "vtkHardwareSelector.h"
-#include "vtkIdTypeArray.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkProperty.h"
-#include "vtkSelection.h"
-#include "vtkSelectionNode.h"
-#include "vtkSphereSource.h"
-
-#include <set>
 
 using namespace vtkMLAATest;
 
 namespace
 {
-
-std::set<vtkIdType> SelectCells(vtkRenderer* renderer, int width, int height)
-{
-  vtkNew<vtkHardwareSelector> selector;
-  selector->SetRenderer(renderer);
-  selector->SetFieldAssociation(vtkDataObject::FIELD_ASSOCIATION_CELLS);
-  selector->SetArea(0, 0, width - 1, height - 1);
-  vtkSmartPointer<vtkSelection> selection;
-  selection.TakeReference(selector->Select());
-  std::set<vtkIdType> ids;
-  for (unsigned int n = 0; selection && n < selection->GetNumberOfNodes(); ++n)
-  {
-    auto* list = vtkIdTypeArray::SafeDownCast(selection->GetNode(n)->GetSelectionList());
-    for (vtkIdType i = 0; list && i < list->GetNumberOfTuples(); ++i)
-    {
-      ids.insert(n * 1000000 + list->GetValue(i));
-    }
-  }
-  return ids;
-}
 
 void Scenes(const PassMethod& method, MessageObserver* messages)
 {
@@ -166,93 +135,6 @@ void TwoViewports(const PassMethod& method, MessageObserver* messages)
   StopPass(left, window);
   StopPass(right, window);
 }
-
-void Layers(const PassMethod& method, MessageObserver* messages)
-{
-  // Layers: a sphere on layer 1 with the pass over the silhouettes scene on layer 0.
-  auto window = vtkMLAAScenes::NewOffscreenWindow(300, 200);
-  window->SetNumberOfLayers(2);
-  vtkNew<vtkRenderer> lower;
-  vtkMLAAScenes::Build("silhouettes", lower);
-  vtkNew<vtkRenderer> upper;
-  upper->SetLayer(1);
-  upper->SetActiveCamera(lower->GetActiveCamera());
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetThetaResolution(12);
-  sphere->SetPhiResolution(8);
-  sphere->SetRadius(0.4);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(sphere->GetOutputPort());
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(0.1, 0.8, 0.3);
-  upper->AddActor(actor);
-  window->AddRenderer(lower);
-  window->AddRenderer(upper);
-  auto plain = vtkMLAAScenes::Capture(window);
-  actor->SetVisibility(false);
-  auto lowerOnly = vtkMLAAScenes::Capture(window);
-  actor->SetVisibility(true);
-  auto layerPass = method.Use(upper);
-  messages->Watch(layerPass);
-  auto result = vtkMLAAScenes::Capture(window);
-  int dims[3];
-  result->GetDimensions(dims);
-  vtkIdType far = 0, farChanged = 0, changed = 0;
-  for (int y = 0; y < dims[1]; ++y)
-  {
-    for (int x = 0; x < dims[0]; ++x)
-    {
-      bool same = true;
-      for (int k = 0; k < 3; ++k)
-      {
-        same = same && GetValue(result, x, y, k) == GetValue(plain, x, y, k);
-      }
-      changed += same ? 0 : 1;
-      // Away from the sphere: plain equals the lower layer alone over a 21 x 21 window.
-      bool away = true;
-      for (int dy = -10; dy <= 10 && away; ++dy)
-      {
-        for (int dx = -10; dx <= 10 && away; ++dx)
-        {
-          const int nx = std::min(std::max(x + dx, 0), dims[0] - 1);
-          const int ny = std::min(std::max(y + dy, 0), dims[1] - 1);
-          for (int k = 0; k < 3; ++k)
-          {
-            away = away && GetValue(plain, nx, ny, k) == GetValue(lowerOnly, nx, ny, k);
-          }
-        }
-      }
-      if (away)
-      {
-        ++far;
-        farChanged += same ? 0 : 1;
-      }
-    }
-  }
-  std::cout << "layers: " << changed << " pixels changed, " << farChanged << " of " << far
-            << " away from layer 1" << std::endl;
-  MLAA_CHECK(far > 1000 && farChanged == 0);
-  MLAA_CHECK(changed > 20);
-  StopPass(upper, window);
-}
-
-void Selection(const PassMethod& method, MessageObserver* messages)
-{
-  // Selection.
-  SceneWindow selection("silhouettes", 300, 200);
-  const auto without = SelectCells(selection.Renderer, 300, 200);
-  auto selectionPass = method.Use(selection.Renderer);
-  messages->Watch(selectionPass);
-  vtkMLAAScenes::Capture(selection.Window);
-  const auto with = SelectCells(selection.Renderer, 300, 200);
-  std::cout << "selection: " << without.size() << " cells without the pass, " << with.size()
-            << " with it" << std::endl;
-  MLAA_CHECK(!without.empty() && with == without);
-  auto after = vtkMLAAScenes::Capture(selection.Window);
-  MLAA_CHECK(Compare(selection.Plain, after, 0.0).Pixels > 50);
-}
-
 }
 
 int TestAntialiasingPass(int, char*[])
@@ -264,8 +146,6 @@ int TestAntialiasingPass(int, char*[])
     Scenes(method, messages);
     TextOverlays(method, messages);
     TwoViewports(method, messages);
-    Layers(method, messages);
-    Selection(method, messages);
     for (const auto& e : messages->Errors)
     {
       std::cerr << method.Name << ": error: " << e << std::endl;
