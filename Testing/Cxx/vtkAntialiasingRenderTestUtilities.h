@@ -101,6 +101,24 @@ inline const std::vector<PassMethod>& PassMethods()
   return methods;
 }
 
+// Runs `test` for every method of PassMethods(), with an observer for the objects it makes to
+// report their messages to, and checks that none reported an error.
+inline void ForEachPassMethod(
+  const std::function<void(const PassMethod& method, MessageObserver* messages)>& test)
+{
+  for (const auto& method : PassMethods())
+  {
+    std::cout << method.Name << std::endl;
+    vtkNew<MessageObserver> messages;
+    test(method, messages);
+    for (const auto& e : messages->Errors)
+    {
+      std::cerr << method.Name << ": error: " << e << std::endl;
+    }
+    Check(messages->Errors.empty(), "no errors", __FILE__, __LINE__);
+  }
+}
+
 // The pass's render equals the method's CPU filter on the plain RGB render within 2/255, and
 // antialiases more than 50 pixels; `when` names the case in the messages.
 inline void CheckParity(const PassMethod& method, vtkRenderWindow* window, vtkRenderer* renderer,

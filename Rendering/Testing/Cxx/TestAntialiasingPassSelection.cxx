@@ -193,16 +193,9 @@ void Silhouettes(const PassMethod& method, MessageObserver* messages)
 
 int TestAntialiasingPassSelection(int, char*[])
 {
-  for (const auto& method : PassMethods())
-  {
-    vtkNew<MessageObserver> messages;
+  ForEachPassMethod([](const PassMethod& method, MessageObserver* messages) {
     Spheres(method, messages);
     Silhouettes(method, messages);
-    for (const auto& e : messages->Errors)
-    {
-      std::cerr << method.Name << ": error: " << e << std::endl;
-    }
-    MLAA_CHECK(messages->Errors.empty());
-  }
+  });
   return Result();
 }
