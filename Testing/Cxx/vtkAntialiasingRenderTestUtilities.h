@@ -57,29 +57,84 @@ inline vtkSmartPointer<vtkOpenGLDLAAPass> UseDLAA(
 // One antialiasing method of the render pass, for the tests of vtkOpenGLAntialiasingPass's
 // behaviour that every method shares: its class name, a factory that sets a default-configured
 // pass of the method (delegate: the standard render steps) on a renderer and returns it (the
-// renderer holds it), and its CPU twin: the method's filter, with the pass's options, on an
-// image (the pass must match it within 2/255). PassMethods() lists them all; a new method is one
-// more entry there.
+// renderer holds it), its CPU twin: the method's filter, with the pass's options, on an image (the
+// pass must match it within 2/255), and what a case asks of the method's options. PassMethods()
+// lists them all; a new method is one more entry there.
 struct PassMethod
 {
   const char* Name;
   vtkOpenGLAntialiasingPass* (*Use)(vtkRenderer* renderer);
   vtkSmartPointer<vtkImageData> (*Filter)(vtkOpenGLAntialiasingPass* pass, vtkImageData* image);
+  // Sets the options of the pass (which Filter hands to the CPU twin) for images of premultiplied
+  // alpha, such as a layer's image over transparent black; a method that filters every channel
+  // alike whatever the convention has nothing to set.
+  void (*UsePremultipliedAlpha)(vtkOpenGLAntialiasingPass* pass);
 };
+
+inline const PassMethod& MLAAPassMethod()
+{
+  static const PassMethod method = { "vtkOpenGLMLAAPass",
+    [](vtkRenderer* r) -> vtkOpenGLAntialiasingPass* { return UseMLAA(r); },
+    [](vtkOpenGLAntialiasingPass* pass, vtkImageData* image) {
+      return RunMLAA(image, static_cast<vtkOpenGLMLAAPass*>(pass)->GetOptions());
+    },
+    [](vtkOpenGLAntialiasingPass* pass) {
+      static_cast<vtkOpenGLMLAAPass*>(pass)->GetOptions()->PremultipliedAlphaOn();
+    } };
+  return method;
+}
+
+inline const PassMethod& DLAAPassMethod()
+{
+  static const PassMethod method = { "vtkOpenGLDLAAPass",
+    [](vtkRenderer* r) -> vtkOpenGLAntialiasingPass* { return UseDLAA(r); },
+    [](vtkOpenGLAntialiasingPass* pass, vtkImageData* image) {
+      return RunDLAA(image, static_cast<vtkOpenGLDLAAPass*>(pass)->GetOptions());
+    },
+    [](vtkOpenGLAntialiasingPass*) {} };
+  return method;
+}
 
 inline const std::vector<PassMethod>& PassMethods()
 {
-  static const std::vector<PassMethod> methods = {
-    { "vtkOpenGLMLAAPass", [](vtkRenderer* r) -> vtkOpenGLAntialiasingPass* { return UseMLAA(r); },
-      [](vtkOpenGLAntialiasingPass* pass, vtkImageData* image) {
-        return RunMLAA(image, static_cast<vtkOpenGLMLAAPass*>(pass)->GetOptions());
-      } },
-    { "vtkOpenGLDLAAPass", [](vtkRenderer* r) -> vtkOpenGLAntialiasingPass* { return UseDLAA(r); },
-      [](vtkOpenGLAntialiasingPass* pass, vtkImageData* image) {
-        return RunDLAA(image, static_cast<vtkOpenGLDLAAPass*>(pass)->GetOptions());
-      } },
-  };
+  static const std::vector<PassMethod> methods = { MLAAPassMethod(), DLAAPassMethod() };
   return methods;
+}
+
+// Runs `test` for every method of PassMethods(), with an observer for the objects it makes to
+// report their messages to, and checks that none reported an error.
+inline void ForEachPassMethod(
+  const std::function<void(const PassMethod& method, MessageObserver* messages)>& test)
+{
+  for (const auto& method : PassMethods())
+  {
+    std::cout << method.Name << std::endl;
+    vtkNew<MessageObserver> messages;
+    test(method, messages);
+    for (const auto& e : messages->Errors)
+    {
+      std::cerr << method.Name << ": error: " << e << std::endl;
+    }
+    Check(messages->Errors.empty(), "no errors", __FILE__, __LINE__);
+  }
+}
+
+// The pass's render equals the method's CPU filter on the plain RGB render within 2/255, and
+// antialiases more than 50 pixels; `when` names the case in the messages.
+inline void CheckParity(const PassMethod& method, vtkRenderWindow* window, vtkRenderer* renderer,
+  vtkOpenGLAntialiasingPass* pass, const char* when)
+{
+  renderer->SetPass(nullptr);
+  auto plain = vtkMLAAScenes::Capture(window);
+  renderer->SetPass(pass);
+  auto result = vtkMLAAScenes::Capture(window);
+  auto expected = method.Filter(pass, plain);
+  const Difference d = Compare(expected, result, 2.0);
+  const Difference changed = Compare(plain, result, 0.0);
+  std::cout << method.Name << ", " << when << ": " << d.Pixels
+            << " pixels off by more than 2/255, " << changed.Pixels << " antialiased" << std::endl;
+  Check(d.Count == 0, when, __FILE__, __LINE__);
+  Check(changed.Pixels > 50, when, __FILE__, __LINE__);
 }
 
 // Removes the pass of `renderer` and releases its GL resources.
@@ -193,6 +248,41 @@ inline void CheckBaseline(int argc, char* argv[], const std::string& name, vtkRe
   const int vtkResult = vtkRegressionTestImage(window);
   Check(vtkResult == vtkRegressionTester::PASSED, "VTK's regression test", __FILE__, __LINE__);
 }
+
+// A 600 x 300 window of two renderers side by side: the silhouettes scene in the left viewport,
+// the wireframe scene in the right one, and the window's plain (single-sample) render.
+struct TwoViewportWindow
+{
+  static constexpr int Width = 600, Height = 300, ViewportWidth = 300;
+  static constexpr const char* Scenes[2] = { "silhouettes", "wireframe" };
+  vtkSmartPointer<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderers[2];
+  vtkSmartPointer<vtkImageData> Plain;
+
+  TwoViewportWindow()
+  {
+    this->Window = vtkMLAAScenes::NewOffscreenWindow(Width, Height);
+    for (int side = 0; side < 2; ++side)
+    {
+      this->Renderers[side]->SetViewport(0.5 * side, 0.0, 0.5 * (side + 1), 1.0);
+      vtkMLAAScenes::Build(Scenes[side], this->Renderers[side]);
+      this->Window->AddRenderer(this->Renderers[side]);
+    }
+    this->Plain = vtkMLAAScenes::Capture(this->Window);
+  }
+  ~TwoViewportWindow()
+  {
+    for (auto& renderer : this->Renderers)
+    {
+      StopPass(renderer, this->Window);
+    }
+  }
+  // The pixels of viewport `side` (0 left, 1 right) of a capture of the window.
+  static vtkSmartPointer<vtkImageData> Viewport(vtkImageData* capture, int side)
+  {
+    return Crop(capture, side * ViewportWidth, 0, ViewportWidth, Height);
+  }
+};
 
 // A one-renderer window with a scene, and the scene's plain (single-sample) render.
 struct SceneWindow

@@ -1,20 +1,20 @@
 // SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
 // SPDX-License-Identifier: BSD-3-Clause
-// Renderer layers: the pass on a renderer of layer 1 (which preserves the colour buffer: VTK
-// does not clear it, the layer draws over what layer 0 drew) composites its antialiased image
-// over the framebuffer with premultiplied-alpha blending:
+// Renderer layers, for every method of PassMethods(): the pass on a renderer of layer 1 (which
+// preserves the colour buffer: VTK does not clear it, the layer draws over what layer 0 drew)
+// composites its antialiased image over the framebuffer with premultiplied-alpha blending:
 // - wherever layer 1 drew nothing (and no antialiased edge of it reaches), layer 0's pixels are
 //   exactly as they were;
-// - the result equals the CPU filter run on layer 1's image alone (RGBA, premultiplied: VTK's
-//   blending over a transparent black background), composited "over" layer 0's image, within
-//   2/255;
+// - the result equals the method's CPU filter run on layer 1's image alone (RGBA, premultiplied:
+//   VTK's blending over a transparent black background; PassMethod::UsePremultipliedAlpha),
+//   composited "over" layer 0's image, within 2/255;
 // - layer 1's silhouettes are antialiased (pixels differ from the plain two-layer render).
 // The same holds for a layer-0 renderer that preserves the colour buffer, drawn after another
-// renderer in the same window.
+// renderer in the same window, and for a small sphere on layer 1 sharing layer 0's camera.
+// No errors are reported on the way.
 #include "vtkAntialiasingRenderTestUtilities.h"
 
 #include "vtkActor.h"
-#include "vtkActorCollection.h"
 #include "vtkAlgorithm.h"
 #include "vtkConeSource.h"
 #include "vtkPolyDataMapper.h"
@@ -25,16 +25,6 @@ using namespace vtkMLAATest;
 
 namespace
 {
-void SetActorsVisible(vtkRenderer* renderer, bool visible)
-{
-  vtkActorCollection* actors = renderer->GetActors();
-  actors->InitTraversal();
-  while (vtkActor* a = actors->GetNextActor())
-  {
-    a->SetVisibility(visible);
-  }
-}
-
 // Adds the output of `source` to `renderer` in the given colour.
 void AddSurface(vtkRenderer* renderer, vtkAlgorithm* source, double r, double g, double b)
 {
@@ -118,13 +108,13 @@ vtkSmartPointer<vtkImageData> Over(vtkImageData* upper, vtkImageData* lower)
 }
 
 // Checks the pass on `upper`, drawn after `lower` in `window` with its colour buffer preserved.
-void CheckComposite(vtkRenderWindow* window, vtkRenderer* lower, vtkRenderer* upper,
-  const char* what)
+void CheckComposite(const PassMethod& method, vtkRenderWindow* window, vtkRenderer* lower,
+  vtkRenderer* upper, const char* what)
 {
   // Layer 0 alone, and the two layers without antialiasing.
-  SetActorsVisible(upper, false);
+  SetVisibility(upper, false, false);
   auto lowerOnly = vtkMLAAScenes::Capture(window);
-  SetActorsVisible(upper, true);
+  SetVisibility(upper, true, true);
   auto plain = vtkMLAAScenes::Capture(window);
 
   // The upper renderer's image alone, over transparent black: premultiplied RGBA.
@@ -133,15 +123,14 @@ void CheckComposite(vtkRenderWindow* window, vtkRenderer* lower, vtkRenderer* up
   const double backgroundAlpha = lower->GetBackgroundAlpha();
   lower->SetBackground(0.0, 0.0, 0.0);
   lower->SetBackgroundAlpha(0.0);
-  SetActorsVisible(lower, false);
+  SetVisibility(lower, false, false);
   auto upperOnly = vtkMLAAScenes::Capture(window, true);
-  SetActorsVisible(lower, true);
+  SetVisibility(lower, true, true);
   lower->SetBackground(background);
   lower->SetBackgroundAlpha(backgroundAlpha);
 
-  vtkNew<vtkMLAAOptions> options;
-  options->PremultipliedAlphaOn();
-  auto pass = UseMLAA(upper, options);
+  vtkOpenGLAntialiasingPass* pass = method.Use(upper);
+  method.UsePremultipliedAlpha(pass);
   vtkNew<MessageObserver> messages;
   messages->Watch(pass);
   auto result = vtkMLAAScenes::Capture(window);
@@ -168,8 +157,8 @@ void CheckComposite(vtkRenderWindow* window, vtkRenderer* lower, vtkRenderer* up
     }
   }
   const Difference changed = Compare(plain, result, 0.0);
-  const Difference parity = Compare(Over(RunMLAA(upperOnly, options), lowerOnly), result, 2.0);
-  std::cout << what << ": " << kept << " of the " << away
+  const Difference parity = Compare(Over(method.Filter(pass, upperOnly), lowerOnly), result, 2.0);
+  std::cout << method.Name << ", " << what << ": " << kept << " of the " << away
             << " pixels away from the upper layer's drawing kept layer 0's colour exactly; "
             << changed.Pixels << " pixels antialiased; " << parity.Pixels
             << " pixels off the CPU filter composited over layer 0 by more than 2/255 (largest "
@@ -178,38 +167,63 @@ void CheckComposite(vtkRenderWindow* window, vtkRenderer* lower, vtkRenderer* up
     __LINE__);
   Check(changed.Pixels > 100, "the upper layer's edges antialiased", __FILE__, __LINE__);
   Check(parity.Count == 0, "equal to the CPU filter composited over layer 0", __FILE__, __LINE__);
+  for (const auto& e : messages->Errors)
+  {
+    std::cerr << method.Name << ": error: " << e << std::endl;
+  }
   Check(messages->Errors.empty(), "no errors", __FILE__, __LINE__);
   StopPass(upper, window);
 }
 }
 
-int TestMLAAPassLayers(int, char*[])
+int TestAntialiasingPassLayers(int, char*[])
 {
   const int width = 400, height = 300;
+  for (const auto& method : PassMethods())
   {
-    // Layer 0: the silhouettes scene; layer 1: a sphere and a cone.
-    auto window = vtkMLAAScenes::NewOffscreenWindow(width, height);
-    window->SetNumberOfLayers(2);
-    vtkNew<vtkRenderer> lower;
-    vtkNew<vtkRenderer> upper;
-    upper->SetLayer(1);
-    vtkMLAAScenes::Build("silhouettes", lower);
-    BuildUpperScene(upper);
-    window->AddRenderer(lower);
-    window->AddRenderer(upper);
-    CheckComposite(window, lower, upper, "layer 1 over layer 0");
-  }
-  {
-    // Two renderers on layer 0, the second preserving the colour buffer over the first.
-    auto window = vtkMLAAScenes::NewOffscreenWindow(width, height);
-    vtkNew<vtkRenderer> lower;
-    vtkNew<vtkRenderer> upper;
-    upper->SetPreserveColorBuffer(1);
-    vtkMLAAScenes::Build("wireframe", lower);
-    BuildUpperScene(upper);
-    window->AddRenderer(lower);
-    window->AddRenderer(upper);
-    CheckComposite(window, lower, upper, "PreserveColorBuffer on layer 0");
+    {
+      // Layer 0: the silhouettes scene; layer 1: a sphere and a cone.
+      auto window = vtkMLAAScenes::NewOffscreenWindow(width, height);
+      window->SetNumberOfLayers(2);
+      vtkNew<vtkRenderer> lower;
+      vtkNew<vtkRenderer> upper;
+      upper->SetLayer(1);
+      vtkMLAAScenes::Build("silhouettes", lower);
+      BuildUpperScene(upper);
+      window->AddRenderer(lower);
+      window->AddRenderer(upper);
+      CheckComposite(method, window, lower, upper, "layer 1 over layer 0");
+    }
+    {
+      // Two renderers on layer 0, the second preserving the colour buffer over the first.
+      auto window = vtkMLAAScenes::NewOffscreenWindow(width, height);
+      vtkNew<vtkRenderer> lower;
+      vtkNew<vtkRenderer> upper;
+      upper->SetPreserveColorBuffer(1);
+      vtkMLAAScenes::Build("wireframe", lower);
+      BuildUpperScene(upper);
+      window->AddRenderer(lower);
+      window->AddRenderer(upper);
+      CheckComposite(method, window, lower, upper, "PreserveColorBuffer on layer 0");
+    }
+    {
+      // A small, coarse sphere on layer 1 of a 300 x 200 window, with layer 0's camera.
+      auto window = vtkMLAAScenes::NewOffscreenWindow(300, 200);
+      window->SetNumberOfLayers(2);
+      vtkNew<vtkRenderer> lower;
+      vtkMLAAScenes::Build("silhouettes", lower);
+      vtkNew<vtkRenderer> upper;
+      upper->SetLayer(1);
+      upper->SetActiveCamera(lower->GetActiveCamera());
+      vtkNew<vtkSphereSource> sphere;
+      sphere->SetThetaResolution(12);
+      sphere->SetPhiResolution(8);
+      sphere->SetRadius(0.4);
+      AddSurface(upper, sphere, 0.1, 0.8, 0.3);
+      window->AddRenderer(lower);
+      window->AddRenderer(upper);
+      CheckComposite(method, window, lower, upper, "a sphere on layer 1 with layer 0's camera");
+    }
   }
   return Result();
 }
