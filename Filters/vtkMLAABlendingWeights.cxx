@@ -92,6 +92,7 @@ void MakeWeightSettings(vtkMLAAOptions* options, WeightSettings& settings)
   const int maxDistance = options->GetMaxDistance();
   settings.SearchSteps = options->GetMaxSearchSteps();
   settings.Diagonals = options->GetDiagonalDetection();
+  settings.Corners = options->GetCornerExtrapolation();
   settings.RunLengths = options->GetCountsExactLineLengths();
   settings.CellSize = options->GetSearchReach();
   settings.AreaSize = vtkMLAAAreaTexture::NumberOfCodes * settings.CellSize;
@@ -240,20 +241,170 @@ public:
     if (top)
     {
       // A horizontal line: its ends lie to the left and to the right.
-      const int e1 = this->CrossingLeftEdges(x - leftEnd, y, y + 1);
-      const int e2 = this->CrossingLeftEdges(x + rightEnd + 1, y, y + 1);
+      int e1 = this->CrossingLeftEdges(x - leftEnd, y, y + 1);
+      int e2 = this->CrossingLeftEdges(x + rightEnd + 1, y, y + 1);
+      if (this->S.Corners && leftEnd + rightEnd > 0)
+      {
+        // Past a step the staircase goes on one row down (code 3: the crossing edge is on this
+        // row) or up (code 1), from the pixel just beyond the end; at a corner the crossing edge
+        // goes on one more row that way instead.
+        End first{ e1, leftEnd };
+        End second{ e2, rightEnd };
+        this->HorizontalEnd(x - leftEnd - 1, x - leftEnd, y, -1, first);
+        this->HorizontalEnd(x + rightEnd + 1, x + rightEnd + 1, y, +1, second);
+        if (x - leftEnd <= this->Whole.X0)
+        {
+          first = End{ 0, x - this->Whole.X0, true };
+        }
+        if (x + rightEnd >= this->Whole.X1)
+        {
+          second = End{ 0, this->Whole.X1 - x, true };
+        }
+        if (this->ExtrapolateCorners(first, second))
+        {
+          e1 = first.Code;
+          leftEnd = first.Distance;
+          e2 = second.Code;
+          rightEnd = second.Distance;
+        }
+      }
       this->LookUpArea(e1, e2, leftEnd, rightEnd, w);
     }
     if (left)
     {
       // A vertical line: its first end is the upper one.
-      const int e1 = this->CrossingTopEdges(x, x - 1, y + up);
-      const int e2 = this->CrossingTopEdges(x, x - 1, y - down - 1);
+      int e1 = this->CrossingTopEdges(x, x - 1, y + up);
+      int e2 = this->CrossingTopEdges(x, x - 1, y - down - 1);
+      if (this->S.Corners && up + down > 0)
+      {
+        // Past a step the staircase goes on one column right (code 3: the crossing edge is on
+        // this column) or left (code 1); at a corner the crossing edge goes on one more column
+        // that way instead.
+        End first{ e1, up };
+        End second{ e2, down };
+        this->VerticalEnd(x, y + up + 1, y + up, +1, first);
+        this->VerticalEnd(x, y - down - 1, y - down - 1, -1, second);
+        if (y + up >= this->Whole.Y1)
+        {
+          first = End{ 0, this->Whole.Y1 - y, true };
+        }
+        if (y - down <= this->Whole.Y0)
+        {
+          second = End{ 0, y - this->Whole.Y0, true };
+        }
+        if (this->ExtrapolateCorners(first, second))
+        {
+          e1 = first.Code;
+          up = first.Distance;
+          e2 = second.Code;
+          down = second.Distance;
+        }
+      }
       this->LookUpArea(e1, e2, up, down, w + 2);
     }
   }
 
 private:
+  // One end of an orthogonal line for CornerExtrapolation: crossing-edge code and distance from
+  // the pixel, whether the line's course past it is unseen (a corner of a shape, or the image
+  // border), and, at a step of a staircase, the length of the staircase's next run (0: none).
+  struct End
+  {
+    int Code;
+    int Distance;
+    bool Unseen = false;
+    int Next = 0;
+  };
+
+  // CornerExtrapolation (vtkMLAAOptions). The area table (section 4.3.3) reads a crossing edge on
+  // one side of an end as a one-pixel step of a staircase, which the revectorised line crosses
+  // half-way up, and ramps the line from it over half its length (an L shape, Biri et al.,
+  // section 3.4). That holds where the line goes on one row (column) over past the edge: a step.
+  // Where instead the crossing edge is a side of the shape (it goes on along the crossing
+  // direction for two pixels or more) and the line does not go on past it, the edge turns at a
+  // corner; at the image border the line's course is not seen at all. At such an end the line's
+  // height is not half a pixel: the corner's position along the staircase decides it, and the
+  // longer the search, the farther the L ramp from it reaches along the side (the damage of
+  // issue 20). The side of a shape is straight up to its corner, so the height there follows
+  // from the staircase seen at the line's other end: if that end is a step, the run past it is a
+  // whole run of the staircase, of length L (its length gives the slope, as the line lengths of
+  // Biri et al., section 3.3, do), and this line, cut short by the corner, is ramped as the
+  // whole run it is part of: a Z shape from the step to a virtual step L - 1 - d pixels from the
+  // pixel, in the same table. A next run beyond the search's reach puts the virtual step beyond it
+  // too (code 0 at the maximum distance, as a capped search). Where nothing is seen to
+  // extrapolate from (corners at both ends, an end beyond the reach or of code 4, or a next run
+  // that cannot belong to one straight staircase with this line: shorter than 2, or more than
+  // one pixel shorter than this line) the chapter's reading stays, which is right on average
+  // there. Returns whether it changed the ends. Must match extrapolateCorners in
+  // vtkMLAABlendingWeightsFS.glsl.
+  bool ExtrapolateCorners(End& first, End& second) const
+  {
+    if (first.Unseen == second.Unseen)
+    {
+      return false;
+    }
+    End& corner = first.Unseen ? first : second;
+    const End& step = first.Unseen ? second : first;
+    const int length = first.Distance + second.Distance + 1;
+    if (step.Next < 2 || step.Next + 1 < length)
+    {
+      return false;
+    }
+    const int maxDistance = this->S.CellSize - 1;
+    const int distance = std::max(length, step.Next) - 1 - step.Distance;
+    if (step.Next > maxDistance || distance > maxDistance)
+    {
+      corner.Code = 0;
+      corner.Distance = maxDistance;
+    }
+    else
+    {
+      corner.Code = 4 - step.Code;
+      corner.Distance = distance;
+    }
+    return true;
+  }
+
+  // An end of a horizontal line of row y with a crossing edge on one side: `beyond` is the column
+  // just past the end, `crossing` the column whose left edgels are the crossing edge, dx the
+  // direction of the end. A step if the line goes on one row over from `beyond` (then the length
+  // of that next run), a corner if the crossing edge goes on instead. Edgels outside the image
+  // are none.
+  void HorizontalEnd(int beyond, int crossing, int y, int dx, End& end) const
+  {
+    if (end.Code != 1 && end.Code != 3)
+    {
+      return;
+    }
+    const int next = end.Code == 3 ? y - 1 : y + 1;
+    if (this->DiagonalTopAt(beyond, next))
+    {
+      end.Next = this->SearchTopEdges(beyond, next, dx) + 1;
+    }
+    else
+    {
+      end.Unseen = this->DiagonalLeftAt(crossing, end.Code == 3 ? y - 1 : y + 2) != 0;
+    }
+  }
+  // The same for a vertical line of column x: `beyond` is the row just past the end, `crossing`
+  // the row whose top edgels are the crossing edge, dy the direction of the end.
+  void VerticalEnd(int x, int beyond, int crossing, int dy, End& end) const
+  {
+    if (end.Code != 1 && end.Code != 3)
+    {
+      return;
+    }
+    const int next = end.Code == 3 ? x + 1 : x - 1;
+    if (this->DiagonalLeftAt(next, beyond))
+    {
+      end.Next = this->SearchLeftEdges(next, beyond, dy) + 1;
+    }
+    else
+    {
+      end.Unseen = this->DiagonalTopAt(end.Code == 3 ? x + 1 : x - 2, crossing) != 0;
+    }
+  }
+
   // The edgels at (x, y) clamped to the available pixels, as a GPU reads a texture with
   // clamp-to-edge.
   const unsigned char* Clamped(int x, int y) const

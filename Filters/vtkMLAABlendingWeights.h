@@ -87,6 +87,7 @@ struct WeightSettings
 {
   int SearchSteps = 0;     // vtkMLAAOptions::MaxSearchSteps
   bool Diagonals = true;   // vtkMLAAOptions::DiagonalDetection
+  bool Corners = false;    // vtkMLAAOptions::CornerExtrapolation
   // How lines and staircases are measured: true, by run lengths counted over the extent
   // beforehand (ComputeRowLineLengths, ComputeColumnLineLengths, and the staircases' likewise);
   // false, by searching from every pixel with an edgel, step by step, as the GPU's SEARCH_LOOP.

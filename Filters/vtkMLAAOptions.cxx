@@ -24,14 +24,15 @@ struct PresetSettings
   int EdgeDetection;
   int MaxSearchSteps;
   bool DiagonalDetection;
+  bool CornerExtrapolation;
   bool DominantDirectionBlending;
   bool Reconstruction;
 };
 const PresetSettings PresetTable[] = {
-  { 0.15, 2.0, vtkMLAAOptions::LUMA, 4, false, true, false }, // low
-  { 0.1, 2.0, vtkMLAAOptions::LUMA, 8, true, true, false },   // medium
-  { 0.1, 2.0, vtkMLAAOptions::LAB, 16, true, true, false },   // high
-  { 0.05, 2.0, vtkMLAAOptions::LAB, 32, true, true, false },  // ultra
+  { 0.15, 2.0, vtkMLAAOptions::LUMA, 4, false, false, true, false }, // low
+  { 0.1, 2.0, vtkMLAAOptions::LUMA, 8, true, false, true, false },   // medium
+  { 0.1, 2.0, vtkMLAAOptions::LAB, 16, true, false, true, false },   // high
+  { 0.05, 2.0, vtkMLAAOptions::LAB, 32, true, false, true, false },  // ultra
 };
 }
 
@@ -90,6 +91,7 @@ void vtkMLAAOptions::SetPreset(int preset)
   this->SetEdgeDetection(p.EdgeDetection);
   this->SetMaxSearchSteps(p.MaxSearchSteps);
   this->SetDiagonalDetection(p.DiagonalDetection);
+  this->SetCornerExtrapolation(p.CornerExtrapolation);
   this->SetDominantDirectionBlending(p.DominantDirectionBlending);
   this->SetReconstruction(p.Reconstruction);
 }
@@ -103,6 +105,7 @@ int vtkMLAAOptions::GetPreset()
     if (this->Threshold == p.Threshold && this->LocalContrastFactor == p.LocalContrastFactor &&
       this->EdgeDetection == p.EdgeDetection && this->MaxSearchSteps == p.MaxSearchSteps &&
       this->DiagonalDetection == p.DiagonalDetection &&
+      this->CornerExtrapolation == p.CornerExtrapolation &&
       this->DominantDirectionBlending == p.DominantDirectionBlending &&
       this->Reconstruction == p.Reconstruction)
     {
@@ -136,6 +139,7 @@ void vtkMLAAOptions::CopyQualitySettings(vtkMLAAOptions* other)
   this->SetEdgeDetection(other->EdgeDetection);
   this->SetMaxSearchSteps(other->MaxSearchSteps);
   this->SetDiagonalDetection(other->DiagonalDetection);
+  this->SetCornerExtrapolation(other->CornerExtrapolation);
   this->SetDominantDirectionBlending(other->DominantDirectionBlending);
   this->SetReconstruction(other->Reconstruction);
 }
@@ -156,6 +160,7 @@ void vtkMLAAOptions::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaxSearchSteps: " << this->MaxSearchSteps << "\n";
   os << indent << "DebugOutput: " << GetDebugOutputAsString(this->DebugOutput) << "\n";
   os << indent << "DiagonalDetection: " << (this->DiagonalDetection ? "On" : "Off") << "\n";
+  os << indent << "CornerExtrapolation: " << (this->CornerExtrapolation ? "On" : "Off") << "\n";
   os << indent << "DominantDirectionBlending: " << (this->DominantDirectionBlending ? "On" : "Off")
      << "\n";
   os << indent << "PremultipliedAlpha: " << (this->PremultipliedAlpha ? "On" : "Off") << "\n";

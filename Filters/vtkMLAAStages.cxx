@@ -81,8 +81,11 @@ Halo ComputeHalo(vtkMLAAOptions* options)
 {
   Halo halo;
   halo.Blending = 1;
-  // The diagonal search reads the edgels two pixels past the last unit it follows.
-  halo.Search = options->GetSearchReach() + (options->GetDiagonalDetection() ? 2 : 0);
+  // The diagonal search reads the edgels two pixels past the last unit it follows; corner
+  // extrapolation counts the next run past a line's end, which lies up to the search's reach
+  // away, as far again.
+  halo.Search = options->GetSearchReach() * (options->GetCornerExtrapolation() ? 2 : 1) +
+    (options->GetDiagonalDetection() ? 2 : 0);
   halo.Edges = options->GetLocalContrastFactor() > 0.0 ? 2 : 0;
   halo.Reconstruction = options->GetReconstruction() ? 1 : 0;
   return halo;

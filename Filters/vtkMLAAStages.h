@@ -69,7 +69,9 @@ using namespace vtkAntialiasingKit;
  * - Search: the blending weights of a pixel read edgels along its line up to
  *   vtkMLAAOptions::GetMaxDistance() pixels away and the crossing edge one further (section
  *   4.3.1): vtkMLAAOptions::GetSearchReach(). The diagonal search follows up to GetMaxDistance()
- *   units and reads the edgels two pixels past the last one: GetSearchReach() + 2.
+ *   units and reads the edgels two pixels past the last one: GetSearchReach() + 2. With
+ *   CornerExtrapolation, the next run past a line's end, which lies up to GetSearchReach() away,
+ *   is searched too: twice GetSearchReach() (+ 2 with diagonals).
  * - Edges: an edgel compares its two pixels, which the search reach above already counts; local
  *   contrast adaptation also looks at the other boundaries of those pixels, one pixel further,
  *   which is padded by 2.

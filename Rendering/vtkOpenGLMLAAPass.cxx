@@ -254,6 +254,7 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   const std::string weightsDefines =
     Define("MLAA_MAX_SEARCH_STEPS", this->Options->GetMaxSearchSteps()) +
     Define("MLAA_DIAGONAL_DETECTION", this->Options->GetDiagonalDetection()) +
+    Define("MLAA_CORNER_EXTRAPOLATION", this->Options->GetCornerExtrapolation()) +
     Define("MLAA_MINIMUM_DIAGONAL_LENGTH", vtkMLAAOptions::MinimumDiagonalLength) +
     Define("MLAA_RECURSIVE_DOUBLING", lengths != nullptr) +
     Define("MLAA_DIAGONAL_LENGTHS", diagonalLengths != nullptr);

@@ -166,7 +166,8 @@ std::string DescribePreset(const std::string& name)
     ", threshold ", options->GetThreshold(), ", local contrast ",
     options->GetLocalContrastFactor(), ", ", options->GetMaxSearchSteps(),
     " search steps, diagonals ",
-    OnOff(options->GetDiagonalDetection()), ", dominant blending ",
+    OnOff(options->GetDiagonalDetection()), ", corners ",
+    OnOff(options->GetCornerExtrapolation()), ", dominant blending ",
     OnOff(options->GetDominantDirectionBlending()), ", reconstruction ",
     OnOff(options->GetReconstruction()));
 }
@@ -352,11 +353,24 @@ const std::vector<Option> OptionTable = {
     [](const CommandLine& d, const UsageFacts&, const std::string&)
     {
       return Text("Set every quality option (--threshold, --local-contrast, --edges, "
-                  "--max-search-steps, --diagonals, --dominant-blending, --reconstruction) at "
+                  "--max-search-steps, --diagonals, --corners, --dominant-blending, "
+                  "--reconstruction) at "
                   "once; those options may follow it to override it, but not precede it. "
                   "Default: ",
         vtkMLAAOptions::GetPresetAsString(d.Options->GetPreset()),
         " (the defaults above). The README lists what each costs and gains.");
+    } },
+
+  { "--corners", nullptr, nullptr, ValueKind::Name, ForMLAA, RefusedBeforePreset | SetByPreset,
+    nullptr, nullptr, OnOffNames, nullptr,
+    [](CommandLine& cl, const OptionValue& v) { cl.Options->SetCornerExtrapolation(v.Text == "on"); },
+    [](const CommandLine& d) { return std::string(OnOff(d.Options->GetCornerExtrapolation())); },
+    [](const CommandLine& d, const UsageFacts&, const std::string&)
+    {
+      return Text("Whether a line that ends at a corner of a shape or at the image border takes "
+                  "its height there from the staircase seen at its other end (on), or every "
+                  "crossing edge is read as a one-pixel step, as in the chapter (off). Default: ",
+        OnOff(d.Options->GetCornerExtrapolation()), ".");
     } },
 
   { "--dominant-blending", nullptr, nullptr, ValueKind::Name, ForMLAA,

@@ -162,7 +162,8 @@ inline std::string DescribeMLAAOptions(vtkMLAAOptions* options)
        << vtkMLAAOptions::GetEdgeDetectionAsString(options->GetEdgeDetection())
        << ", max search steps " << options->GetMaxSearchSteps() << ", diagonals "
        << (options->GetDiagonalDetection() ? "on" : "off") << ", local contrast factor "
-       << options->GetLocalContrastFactor() << ", dominant-direction blending "
+       << options->GetLocalContrastFactor() << ", corner extrapolation "
+       << (options->GetCornerExtrapolation() ? "on" : "off") << ", dominant-direction blending "
        << (options->GetDominantDirectionBlending() ? "on" : "off") << ", reconstruction "
        << (options->GetReconstruction() ? "on" : "off") << " (preset "
        << vtkMLAAOptions::GetPresetAsString(options->GetPreset()) << ")";

@@ -24,6 +24,8 @@
 //   MLAA_MAX_SEARCH_STEPS         vtkMLAAOptions::MaxSearchSteps (a constant loop bound)
 //   MLAA_DIAGONAL_DETECTION       defined: vtkMLAAOptions::DiagonalDetection
 //   MLAA_MINIMUM_DIAGONAL_LENGTH  vtkMLAAOptions::MinimumDiagonalLength
+//   MLAA_CORNER_EXTRAPOLATION     defined: vtkMLAAOptions::CornerExtrapolation (see
+//                                 extrapolateCorners)
 //   MLAA_RECURSIVE_DOUBLING       defined: the distances to the ends of orthogonal lines are read
 //                                 from the line lengths of vtkMLAALineLengthsFS.glsl (Biri et
 //                                 al., section 3.3) instead of being searched here; they are the
@@ -203,6 +205,92 @@ vec3 diagonalArea(int e1, int e2, int d1, int d2)
   return texelFetch(diagonalAreaTexture, ivec2(cellSize * e1 + d1, cellSize * e2 + d2), 0).rgb;
 }
 
+#ifdef MLAA_CORNER_EXTRAPOLATION
+// Distance from pixel q to the end of its line in `direction` (0 left, 1 right, 2 down, 3 up),
+// as the distances of main() are found.
+int runDistance(ivec2 q, int direction)
+{
+#ifdef MLAA_RECURSIVE_DOUBLING
+  return min(int(round(texelFetch(lengthsTexture, q, 0)[direction])), 2 * maxSearchSteps);
+#else
+  vec2 c = vec2(q) + 0.5;
+  float sense = (direction == 0 || direction == 2) ? -1.0 : 1.0;
+  return int(round(direction < 2 ? searchTopEdges(c, sense) : searchLeftEdges(c, sense)));
+#endif
+}
+
+// CornerExtrapolation (WeightsComputer::ExtrapolateCorners in vtkMLAABlendingWeights.cxx says
+// why): ends = (code, distance) of the first and of the second end of a line; unseen: whether the
+// line's course past each end is not seen (a corner of a shape, or the image border); next: the
+// length of the staircase's next run past each end that is a step (0: none). Where exactly one
+// end is unseen and the other is a step whose next run can belong to one straight staircase with
+// this line, the unseen end becomes a virtual step one whole run from the step (a Z shape), or
+// beyond the reach (code 0 at the maximum distance); returns whether it changed the ends.
+bool extrapolateCorners(inout ivec4 ends, bvec2 unseen, ivec2 next)
+{
+  if (unseen.x == unseen.y)
+  {
+    return false;
+  }
+  ivec2 step = unseen.x ? ends.zw : ends.xy;
+  int stepNext = unseen.x ? next.y : next.x;
+  int length = ends.y + ends.w + 1;
+  if (stepNext < 2 || stepNext + 1 < length)
+  {
+    return false;
+  }
+  int maxDistance = cellSize - 1;
+  int distance = max(length, stepNext) - 1 - step.y;
+  ivec2 corner = ivec2(4 - step.x, distance);
+  if (stepNext > maxDistance || distance > maxDistance)
+  {
+    corner = ivec2(0, maxDistance);
+  }
+  if (unseen.x)
+  {
+    ends.xy = corner;
+  }
+  else
+  {
+    ends.zw = corner;
+  }
+  return true;
+}
+
+// The end of a horizontal line of row y with crossing-edge code `code` (WeightsComputer::
+// HorizontalEnd): `beyond` is the column just past the end, `crossing` the column whose left
+// edgels are the crossing edge. Returns (unseen, next run length).
+ivec2 horizontalEnd(int code, int beyond, int crossing, int y, int direction)
+{
+  if (code != 1 && code != 3)
+  {
+    return ivec2(0);
+  }
+  ivec2 q = ivec2(beyond, code == 3 ? y - 1 : y + 1);
+  if (topAt(q))
+  {
+    return ivec2(0, runDistance(q, direction < 0 ? 0 : 1) + 1);
+  }
+  return ivec2(leftAt(ivec2(crossing, code == 3 ? y - 1 : y + 2)) ? 1 : 0, 0);
+}
+
+// The same for a vertical line of column x (WeightsComputer::VerticalEnd): `beyond` is the row
+// just past the end, `crossing` the row whose top edgels are the crossing edge.
+ivec2 verticalEnd(int code, int x, int beyond, int crossing, int direction)
+{
+  if (code != 1 && code != 3)
+  {
+    return ivec2(0);
+  }
+  ivec2 q = ivec2(code == 3 ? x + 1 : x - 1, beyond);
+  if (leftAt(q))
+  {
+    return ivec2(0, runDistance(q, direction < 0 ? 2 : 3) + 1);
+  }
+  return ivec2(topAt(ivec2(code == 3 ? x + 1 : x - 2, crossing)) ? 1 : 0, 0);
+}
+#endif
+
 const int OUT = 1;
 const int IN = 2;
 
@@ -295,6 +383,35 @@ void main()
     int e1 = crossingCode(edgesAt(vec2(center.x - float(left), fetchY)).r, p.x - left, size.x);
     int e2 = crossingCode(
       edgesAt(vec2(center.x + float(right + 1), fetchY)).r, p.x + right + 1, size.x);
+#ifdef MLAA_CORNER_EXTRAPOLATION
+    if (left + right > 0)
+    {
+      ivec2 end1 = horizontalEnd(e1, p.x - left - 1, p.x - left, p.y, -1);
+      ivec2 end2 = horizontalEnd(e2, p.x + right + 1, p.x + right + 1, p.y, 1);
+      ivec4 ends = ivec4(e1, left, e2, right);
+      bvec2 unseen = bvec2(end1.x != 0, end2.x != 0);
+      ivec2 next = ivec2(end1.y, end2.y);
+      if (p.x - left <= 0) // the image border: the line's course beyond it is not seen
+      {
+        ends.xy = ivec2(0, p.x);
+        unseen.x = true;
+        next.x = 0;
+      }
+      if (p.x + right >= size.x - 1)
+      {
+        ends.zw = ivec2(0, size.x - 1 - p.x);
+        unseen.y = true;
+        next.y = 0;
+      }
+      if (extrapolateCorners(ends, unseen, next))
+      {
+        e1 = ends.x;
+        left = ends.y;
+        e2 = ends.z;
+        right = ends.w;
+      }
+    }
+#endif
     weights.rg = area(e1, e2, left, right);
   }
 
@@ -311,6 +428,35 @@ void main()
     int e1 = crossingCode(edgesAt(vec2(fetchX, center.y + float(up))).g, p.y + up, size.y);
     int e2 = crossingCode(
       edgesAt(vec2(fetchX, center.y - float(down + 1))).g, p.y - down - 1, size.y);
+#ifdef MLAA_CORNER_EXTRAPOLATION
+    if (up + down > 0)
+    {
+      ivec2 end1 = verticalEnd(e1, p.x, p.y + up + 1, p.y + up, 1);
+      ivec2 end2 = verticalEnd(e2, p.x, p.y - down - 1, p.y - down - 1, -1);
+      ivec4 ends = ivec4(e1, up, e2, down);
+      bvec2 unseen = bvec2(end1.x != 0, end2.x != 0);
+      ivec2 next = ivec2(end1.y, end2.y);
+      if (p.y + up >= size.y - 1) // the image border
+      {
+        ends.xy = ivec2(0, size.y - 1 - p.y);
+        unseen.x = true;
+        next.x = 0;
+      }
+      if (p.y - down <= 0)
+      {
+        ends.zw = ivec2(0, p.y);
+        unseen.y = true;
+        next.y = 0;
+      }
+      if (extrapolateCorners(ends, unseen, next))
+      {
+        e1 = ends.x;
+        up = ends.y;
+        e2 = ends.z;
+        down = ends.w;
+      }
+    }
+#endif
     weights.ba = area(e1, e2, up, down);
   }
 

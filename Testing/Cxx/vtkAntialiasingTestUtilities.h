@@ -229,8 +229,9 @@ auto OptionsOf(vtkImageAntialiasingAlgorithm* filter)
 }
 
 // MLAA: the defaults (Lab edges, the high preset's search steps), luma edges, reconstruction,
-// and search distances from 1 step to 128 (line lengths by search loop and by the exact
-// count, and padding from a few pixels to 256).
+// search distances from 1 step to 128 (line lengths by search loop and by the exact count, and
+// padding from a few pixels to 256), and corner extrapolation at 16 and 128 steps (padding up to
+// 514).
 inline std::vector<FilterConfiguration> MLAAConfigurations()
 {
   std::vector<FilterConfiguration> configurations = {
@@ -245,6 +246,14 @@ inline std::vector<FilterConfiguration> MLAAConfigurations()
     configurations.push_back({ std::to_string(steps) + " search steps",
       [steps](vtkImageAntialiasingAlgorithm* f) {
         OptionsOf<vtkImageMLAA>(f)->SetMaxSearchSteps(steps);
+      } });
+  }
+  for (int steps : { 16, 128 })
+  {
+    configurations.push_back({ "corner extrapolation, " + std::to_string(steps) + " search steps",
+      [steps](vtkImageAntialiasingAlgorithm* f) {
+        OptionsOf<vtkImageMLAA>(f)->SetMaxSearchSteps(steps);
+        OptionsOf<vtkImageMLAA>(f)->CornerExtrapolationOn();
       } });
   }
   return configurations;

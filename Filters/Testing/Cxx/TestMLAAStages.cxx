@@ -31,12 +31,15 @@ void HaloFromOptions()
     bool Diagonals;
     double Factor;
     int Search, Edges;
+    bool Corners = false;
   };
   for (const Case& c : { Case{ 8, true, 2.0, 19, 2 }, Case{ 8, false, 2.0, 17, 2 },
-         Case{ 8, true, 0.0, 19, 0 }, Case{ 3, true, 1.0, 9, 2 }, Case{ 64, false, 0.0, 129, 0 } })
+         Case{ 8, true, 0.0, 19, 0 }, Case{ 3, true, 1.0, 9, 2 }, Case{ 64, false, 0.0, 129, 0 },
+         Case{ 8, true, 2.0, 36, 2, true }, Case{ 64, false, 0.0, 258, 0, true } })
   {
     options->SetMaxSearchSteps(c.Steps);
     options->SetDiagonalDetection(c.Diagonals);
+    options->SetCornerExtrapolation(c.Corners);
     options->SetLocalContrastFactor(c.Factor);
     const Halo halo = ComputeHalo(options);
     MLAA_CHECK(halo.Blending == 1);

@@ -6,10 +6,11 @@
 //   gets one smooth ramp along each whole step of its staircase (about 57 pixels) with 32 and
 //   128 steps, in both methods, while with 8 steps (16 pixels each way) the middle of each step
 //   is left flat; the pass equals vtkImageMLAA on the screenshot within 2/255 on every pixel, and
-//   both methods give the same image;
+//   both methods give the same image; all of this with CornerExtrapolation too (the slope's runs
+//   at the image border);
 // - the blending-weights debug output (vtkMLAAOptions::BLENDING_WEIGHTS) is identical with and
-//   without recursive doubling on every shared scene at 8, 32 and 128 steps (the lengths are the
-//   same integers);
+//   without recursive doubling on every shared scene at 8, 32 and 128 steps, with and without
+//   CornerExtrapolation (the lengths are the same integers);
 // - staircases of one-pixel steps (45-degree edges of diamonds, long ones and short ones): their
 //   lengths searched unit by unit and counted by recursive doubling give the same weights and
 //   the same image, equal to vtkImageMLAA's within 2/255;
@@ -151,10 +152,12 @@ void OneDegreeSlope()
   {
     MLAA_CHECK(steps[s].X1 - steps[s].X0 + 1 >= 55 && steps[s].X1 - steps[s].X0 + 1 <= 60);
   }
-  for (int searchSteps : { 8, 32, 128 })
+  for (int run = 0; run < 6; ++run)
   {
+    const int searchSteps = (run % 3 == 0) ? 8 : (run % 3 == 1 ? 32 : 128);
     vtkNew<vtkMLAAOptions> options;
     options->SetMaxSearchSteps(searchSteps);
+    options->SetCornerExtrapolation(run >= 3); // the slope's ends lie on the image border
     auto cpu = RunMLAA(plain, options);
     vtkSmartPointer<vtkImageData> images[2];
     for (int doubling = 0; doubling < 2; ++doubling)
@@ -166,7 +169,7 @@ void OneDegreeSlope()
       StopPass(renderer, window);
       const Difference parity = Compare(cpu, images[doubling], 2.0);
       const bool ramps = AllRamps(images[doubling], steps);
-      std::cout << searchSteps << " steps, " << (doubling ? "recursive doubling" : "search loop")
+      std::cout << searchSteps << " steps, corners " << (run >= 3 ? "on, " : "off, ") << (doubling ? "recursive doubling" : "search loop")
                 << ": " << parity.Pixels << " pixels differ from the filter by more than 2/255"
                 << " (largest " << parity.Max << "), ramps " << (ramps ? "smooth" : "broken")
                 << std::endl;
@@ -270,10 +273,12 @@ void SameWeightsOnSharedScenes()
     // A first render without the pass: the scenes' first frame (camera clipping range, text
     // layout) can differ from the later ones, which this test must not mistake for the method.
     window->Render();
-    for (int searchSteps : { 8, 32, 128 })
+    for (int run = 0; run < 6; ++run)
     {
+      const int searchSteps = (run % 3 == 0) ? 8 : (run % 3 == 1 ? 32 : 128);
       vtkNew<vtkMLAAOptions> options;
       options->SetMaxSearchSteps(searchSteps);
+      options->SetCornerExtrapolation(run >= 3); // reads the next runs' lengths as well
       options->SetDebugOutput(vtkMLAAOptions::BLENDING_WEIGHTS);
       vtkSmartPointer<vtkImageData> weights[2];
       for (int doubling = 0; doubling < 2; ++doubling)
@@ -289,7 +294,8 @@ void SameWeightsOnSharedScenes()
       const double largest = weights[0]->GetPointData()->GetScalars()->GetRange(0)[1];
       if (!MLAA_CHECK(d.Count == 0 && largest > 0.0))
       {
-        std::cerr << "scene " << name << ", " << searchSteps << " steps: " << d.Pixels
+        std::cerr << "scene " << name << ", " << searchSteps << " steps, corners " << (run >= 3)
+                  << ": " << d.Pixels
                   << " pixels of the weights differ" << std::endl;
       }
     }

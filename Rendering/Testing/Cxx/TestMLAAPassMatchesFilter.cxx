@@ -12,7 +12,8 @@
 // premultiplied alpha, the RGBA result equals the filter on the RGBA screenshot (alpha edges
 // included). Then at 400 x 300: Lab edges (Biri et al. section 3.2); topological reconstruction
 // (section 4) with luma edges, which the pass does in place (it writes the reconstructed pixels
-// back as well as the blended ones); and Lab edges with reconstruction and kept alpha.
+// back as well as the blended ones); Lab edges with reconstruction and kept alpha; and
+// CornerExtrapolation (the ends of lines at corners and at the image border).
 #include "vtkMLAAScenes.h"
 #include "vtkAntialiasingTestUtilities.h"
 
@@ -28,7 +29,7 @@ int TestMLAAPassMatchesFilter(int, char*[])
   double worstShare = 1.0;
   std::string worstCase;
   vtkIdType reconstructed = 0; // pixels that reconstruction changes in the filter's results
-  for (int variant = 0; variant < 11; ++variant)
+  for (int variant = 0; variant < 12; ++variant)
   {
     vtkNew<vtkMLAAOptions> options;
     const bool full = variant <= 1; // the quality benchmark's size
@@ -71,6 +72,10 @@ int TestMLAAPassMatchesFilter(int, char*[])
     if (variant == 9 || variant == 10)
     {
       options->ReconstructionOn();
+    }
+    if (variant == 11)
+    {
+      options->CornerExtrapolationOn();
     }
     if (keepAlpha)
     {

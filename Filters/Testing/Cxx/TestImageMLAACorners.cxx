@@ -1,0 +1,175 @@
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
+// CornerExtrapolation (vtkMLAAOptions; WeightsComputer::ExtrapolateCorners in
+// vtkMLAABlendingWeights.cxx), with exact weights on a synthetic shape: a dark polygon on white
+// whose top side is a staircase falling to the right in whole runs of 12 pixels, cut by the
+// polygon's vertical right side after 6 pixels of the fourth run, whose first run starts at the
+// image's left border, and whose bottom side is flat:
+// - the run cut by the corner is ramped as the whole 12-pixel run it is part of (a Z from the
+//   step at its left to a virtual step 12 pixels on), where the chapter's reading of the corner
+//   as a one-pixel step gives a Z over the 6 pixels (the corner rounded);
+// - the run at the image border likewise: a Z over 12 pixels, where the clamped reads gave an L
+//   from its right end only;
+// - the whole runs keep the chapter's Z; the bottom side and the right side, with corners at
+//   both ends, keep the chapter's weights (nothing is seen to extrapolate from);
+// - the transposed image gives the transposed weights (the vertical lines follow the same rule);
+// - with CornerExtrapolation off, the chapter's weights everywhere.
+#include "vtkAntialiasingTestUtilities.h"
+
+#include "vtkMLAAAreaTexture.h"
+
+#include <cmath>
+#include <iostream>
+
+using namespace vtkMLAATest;
+
+namespace
+{
+const int Width = 64;
+const int Height = 24;
+const int RunLength = 12;
+const int RightSide = 41; // the polygon's last column
+const int Bottom = 2;     // its lowest row
+
+// The top row of the polygon in column x: 16 in the first run, one lower in each next one.
+int TopRow(int x)
+{
+  return 16 - x / RunLength;
+}
+
+bool Inside(int x, int y)
+{
+  return x <= RightSide && y >= Bottom && y <= TopRow(x);
+}
+
+vtkSmartPointer<vtkImageData> Shape(bool transposed)
+{
+  auto image = transposed ? MakeImage(Height, Width, 1) : MakeImage(Width, Height, 1);
+  FillImage(image, [transposed](int x, int y, int, int) {
+    const bool inside = transposed ? Inside(y, x) : Inside(x, y);
+    return inside ? 0.0 : 255.0;
+  });
+  return image;
+}
+
+vtkSmartPointer<vtkMLAAOptions> Options(bool corners)
+{
+  auto options = vtkSmartPointer<vtkMLAAOptions>::New();
+  options->SetPresetToHigh(); // 16 steps: lines followed 32 pixels each way
+  options->SetEdgeDetection(vtkMLAAOptions::LUMA);
+  options->SetLocalContrastFactor(0.0);
+  options->SetDiagonalDetection(false);
+  options->SetCornerExtrapolation(corners);
+  options->SetDebugOutput(vtkMLAAOptions::BLENDING_WEIGHTS);
+  return options;
+}
+
+// The quantised area of the table (channel 0: the pixel under the edge, 1: the one above).
+double Area(int e1, int e2, int d1, int d2, int channel, int maxDistance)
+{
+  const std::vector<float>& table = *vtkMLAAAreaTexture::GetSharedTable(maxDistance);
+  const int cell = maxDistance + 1;
+  const int size = vtkMLAAAreaTexture::NumberOfCodes * cell;
+  const size_t texel = static_cast<size_t>(cell * e2 + d2) * size + (cell * e1 + d1);
+  return std::nearbyint(table[2 * texel + channel] * 255.0);
+}
+
+// Whether the weights of the top edgels of row `row`, columns x0..x1, are the table's for codes
+// e1, e2 and distances x - x0 + shift1, x1 - x + shift2.
+bool RowHasAreas(vtkImageData* weights, int row, int x0, int x1, int e1, int e2, int shift1,
+  int shift2, int maxDistance)
+{
+  bool same = true;
+  for (int x = x0; x <= x1; ++x)
+  {
+    for (int channel = 0; channel < 2; ++channel)
+    {
+      const double expected =
+        Area(e1, e2, x - x0 + shift1, x1 - x + shift2, channel, maxDistance);
+      const double got = GetValue(weights, x, row, channel);
+      if (got != expected)
+      {
+        std::cerr << "row " << row << ", x " << x << ", channel " << channel << ": " << got
+                  << ", expected " << expected << std::endl;
+        same = false;
+      }
+    }
+  }
+  return same;
+}
+
+void Corners()
+{
+  auto image = Shape(false);
+  auto on = Options(true);
+  auto off = Options(false);
+  const int maxDistance = on->GetMaxDistance();
+  auto weights = RunMLAA(image, on);
+  auto chapter = RunMLAA(image, off);
+  // Codes of the top side's runs: a step up at the left end (the edge on the row above: 1), a
+  // step down at the right end (the edge on the run's own row: 3).
+  // The run cut by the corner, columns 36 to 41 of row 13: the whole run is 12 pixels long, so
+  // its virtual right end lies 6 pixels beyond the corner.
+  const int x0 = 3 * RunLength;
+  MLAA_CHECK(RowHasAreas(weights, TopRow(x0), x0, RightSide, 1, 3, 0, RunLength - 6, maxDistance));
+  // The chapter: the corner read as a step, a Z over the 6 pixels.
+  MLAA_CHECK(RowHasAreas(chapter, TopRow(x0), x0, RightSide, 1, 3, 0, 0, maxDistance));
+  // The run at the left border, columns 0 to 11 of row 16: a Z over its 12 pixels with the
+  // option; without, the clamped reads continue it to the search's reach (code 0 there), which
+  // leaves an L ramp from its right end only.
+  MLAA_CHECK(RowHasAreas(weights, TopRow(0), 0, RunLength - 1, 1, 3, 0, 0, maxDistance));
+  // The whole runs in between are the same either way.
+  for (int run = 1; run <= 2; ++run)
+  {
+    const int a = run * RunLength;
+    MLAA_CHECK(RowHasAreas(weights, TopRow(a), a, a + RunLength - 1, 1, 3, 0, 0, maxDistance));
+  }
+  // Everything but the top side's first and last runs is the chapter's: the bottom side (the
+  // border and a corner) and the right side (corners at both ends).
+  int different = 0;
+  int elsewhere = 0;
+  for (int y = 0; y < Height; ++y)
+  {
+    for (int x = 0; x < Width; ++x)
+    {
+      for (int channel = 0; channel < 4; ++channel)
+      {
+        if (GetValue(weights, x, y, channel) != GetValue(chapter, x, y, channel))
+        {
+          ++different;
+          const bool cutRun = channel < 2 &&
+            ((y == TopRow(x0) && x >= x0 && x <= RightSide) ||
+              (y == TopRow(0) && x < RunLength));
+          elsewhere += cutRun ? 0 : 1;
+        }
+      }
+    }
+  }
+  MLAA_CHECK(different > 0);
+  MLAA_CHECK(elsewhere == 0);
+
+  // The transposed image: a top edgel of (x, y) becomes the left edgel of (y + 1, x), whose
+  // owner (the pixel right of it) is the image of the pixel above the top edgel: channels 0 and
+  // 1 become 3 and 2.
+  auto transposedWeights = RunMLAA(Shape(true), on);
+  bool transposes = true;
+  for (int y = 0; y + 1 < Height; ++y)
+  {
+    for (int x = 0; x < Width; ++x)
+    {
+      if (GetValue(transposedWeights, y + 1, x, 3) != GetValue(weights, x, y, 0) ||
+        GetValue(transposedWeights, y + 1, x, 2) != GetValue(weights, x, y, 1))
+      {
+        transposes = false;
+      }
+    }
+  }
+  MLAA_CHECK(transposes);
+}
+}
+
+int TestImageMLAACorners(int, char*[])
+{
+  Corners();
+  return Result();
+}
