@@ -45,6 +45,7 @@ cases = [
           LocalContrastFactor=0, DominantDirectionBlending=0),
      ["--edges", "luma", "--threshold", "0.05", "--max-search-steps", "4", "--diagonals", "off",
       "--local-contrast", "0", "--dominant-blending", "off"]),
+    ("corners", MLAAAntialiasing, dict(CornerExtrapolation=1), ["--corners", "on"]),
     ("ultra", MLAAAntialiasing, dict(QualityPreset="Ultra", Threshold=0.9), ["--preset", "ultra"]),
     ("dlaa-defaults", DLAAAntialiasing, {}, ["--method", "dlaa"]),
     ("dlaa-custom", DLAAAntialiasing,
@@ -52,6 +53,7 @@ cases = [
      ["--method", "dlaa", "--dlaa-epsilon", "0.05", "--dlaa-lambda", "5", "--dlaa-luma", "green",
       "--long-edges", "off"]),
 ]
+outputs = {}
 for name, method, properties, tool_arguments in cases:
     mlaa = method(Input=image, Scalars=["POINTS", "rgb"], **properties)
     extent, values = t.gather_image(
@@ -71,5 +73,10 @@ for name, method, properties, tool_arguments in cases:
             "pixels differ)" % (name, "D" if method == DLAAAntialiasing else "M",
                                 t.max_difference(rows, reference),
                                 np.any(rows != reference, axis=2).sum()))
+    outputs[name] = rows
     Delete(mlaa)
     del mlaa
+# CornerExtrapolation alone (off by default) changes the output: the property reaches the filter.
+t.check(np.any(outputs["corners"] != outputs["defaults"]),
+        "corners: CornerExtrapolation changes %d pixels of the defaults' output"
+        % np.any(outputs["corners"] != outputs["defaults"], axis=2).sum())

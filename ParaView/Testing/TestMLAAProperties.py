@@ -15,8 +15,8 @@ from paraview.simple import *  # noqa: E402,F403
 t.load_plugin(args.plugin, globals())
 
 settings = ["Threshold", "LocalContrastFactor", "EdgeDetection", "MaxSearchSteps",
-            "DiagonalDetection", "DominantDirectionBlending", "Reconstruction",
-            "PremultipliedAlpha", "DebugOutput"]
+            "DiagonalDetection", "CornerExtrapolation", "DominantDirectionBlending",
+            "Reconstruction", "PremultipliedAlpha", "DebugOutput"]
 
 
 def effective(options_proxy):
@@ -32,8 +32,10 @@ def property_values(options_proxy):
 def preset_values(preset):
     """The quality settings of a preset, as vtkMLAAOptions's class description lists them."""
     return {
-        "Low": dict(Threshold=0.15, EdgeDetection=0, MaxSearchSteps=4, DiagonalDetection=0),
-        "Ultra": dict(Threshold=0.05, EdgeDetection=3, MaxSearchSteps=32, DiagonalDetection=1),
+        "Low": dict(Threshold=0.15, EdgeDetection=0, MaxSearchSteps=4, DiagonalDetection=0,
+                    CornerExtrapolation=0),
+        "Ultra": dict(Threshold=0.05, EdgeDetection=3, MaxSearchSteps=32, DiagonalDetection=1,
+                      CornerExtrapolation=0),
     }[preset]
 
 
@@ -76,6 +78,16 @@ for label, proxy, options, prefix in (
                 "%s, %s: Custom gives the settings back (%s)" % (label, order, in_effect))
         proxy.SetPropertyWithName(prefix + "Threshold", defaults["Threshold"])
 
+    # CornerExtrapolation (off by default and in every preset) reaches the options under
+    # Custom; it is kept on for Ultra below, which must turn it off.
+    t.check(in_effect["CornerExtrapolation"] == 0, "%s: CornerExtrapolation is off by default"
+            % label)
+    proxy.SetPropertyWithName(prefix + "CornerExtrapolation", 1)
+    proxy.UpdateVTKObjects()
+    in_effect = effective(options)
+    t.check(in_effect["CornerExtrapolation"] == 1,
+            "%s: CornerExtrapolation on reaches the options (%s)" % (label, in_effect))
+
     proxy.SetPropertyWithName(prefix + "QualityPreset", "Ultra")
     proxy.SetPropertyWithName(prefix + "DebugOutput", "Edges")
     proxy.UpdateVTKObjects()
@@ -83,6 +95,12 @@ for label, proxy, options, prefix in (
     t.check(all(close(in_effect[n], v) for n, v in preset_values("Ultra").items()) and
             in_effect["DebugOutput"] == 1,
             "%s: Ultra and DebugOutput apply together (%s)" % (label, in_effect))
+    proxy.SetPropertyWithName(prefix + "QualityPreset", "Custom")
+    proxy.UpdateVTKObjects()
+    in_effect = effective(options)
+    t.check(in_effect["CornerExtrapolation"] == 1 and close(in_effect["Threshold"],
+                                                            defaults["Threshold"]),
+            "%s: Custom gives CornerExtrapolation back (%s)" % (label, in_effect))
 
 # The DLAA filter's settings: its properties' defaults are vtkDLAAOptions's.
 dlaa = DLAAAntialiasing(Input=image)

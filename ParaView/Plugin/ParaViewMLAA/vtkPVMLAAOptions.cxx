@@ -67,6 +67,13 @@ void vtkPVMLAAOptions::SetDiagonalDetectionSetting(bool on)
 }
 
 //------------------------------------------------------------------------------
+void vtkPVMLAAOptions::SetCornerExtrapolationSetting(bool on)
+{
+  this->Custom->SetCornerExtrapolation(on);
+  this->UpdateEffectiveSettings();
+}
+
+//------------------------------------------------------------------------------
 void vtkPVMLAAOptions::SetDominantDirectionBlendingSetting(bool on)
 {
   this->Custom->SetDominantDirectionBlending(on);

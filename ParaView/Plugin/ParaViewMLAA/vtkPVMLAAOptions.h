@@ -11,8 +11,8 @@
  * SetPreset would win or lose against the other properties by accident. This subclass keeps the
  * two apart instead:
  * - the quality properties (Threshold, LocalContrastFactor, EdgeDetection, MaxSearchSteps,
- *   DiagonalDetection, DominantDirectionBlending, Reconstruction) set the "custom" settings,
- *   through the Set*Setting methods;
+ *   DiagonalDetection, CornerExtrapolation, DominantDirectionBlending, Reconstruction) set the
+ *   "custom" settings, through the Set*Setting methods;
  * - QualityPreset is CUSTOM (-1, the default: the custom settings apply) or one of
  *   vtkMLAAOptions::Presets (that preset's settings apply, whatever the custom ones are).
  * The effective settings, which vtkImageMLAA and vtkOpenGLMLAAPass read through the
@@ -61,6 +61,7 @@ public:
   void SetEdgeDetectionSetting(int mode);
   void SetMaxSearchStepsSetting(int steps);
   void SetDiagonalDetectionSetting(bool on);
+  void SetCornerExtrapolationSetting(bool on);
   void SetDominantDirectionBlendingSetting(bool on);
   void SetReconstructionSetting(bool on);
   vtkMLAAOptions* GetCustomSettings() { return this->Custom; }
