@@ -55,11 +55,12 @@ float kept(float d)
   return (d >= threshold && d > 0.0) ? d : 0.0;
 }
 
-// The contrast across the boundary between a pixel (colour a, depth da) and pixel q: the
+// The contrast across the boundary between a pixel (colour a, features fa: featuresAt) and pixel
+// q: the
 // largest difference of what edge detection compares (luma, colour channels or depth, and
 // alpha when it counts) that is at least the threshold, else 0. Pixels with a non-finite
 // colour (float buffers) take part in no edge, so they never spread.
-float contrast(vec4 a, float da, ivec2 q)
+float contrast(vec4 a, vec4 fa, ivec2 q)
 {
   vec4 b = texelFetch(colorTexture, q, 0);
   if (!isFiniteColor(a) || !isFiniteColor(b))
@@ -75,21 +76,24 @@ float contrast(vec4 a, float da, ivec2 q)
   vec3 d = abs(a.rgb - b.rgb);
   return max(c, max(kept(d.r), max(kept(d.g), kept(d.b))));
 #elif MLAA_EDGE_DETECTION == 2
-  return max(c, kept(abs(da - texelFetch(depthTexture, q, 0).r)));
+  return max(c, kept(abs(fa.r - texelFetch(depthTexture, q, 0).r)));
 #elif MLAA_EDGE_DETECTION == 3
-  return max(c, kept(distance(labFeatures(a.rgb), labFeatures(b.rgb))));
+  return max(c, kept(distance(fa.rgb, labFeatures(b.rgb))));
 #else
   return max(c, kept(abs(dot(a.rgb, lumaWeights) - dot(b.rgb, lumaWeights))));
 #endif
 }
 
-// The depth of pixel p, read in depth mode only.
-float depthAt(ivec2 p)
+// What pixel p (colour a) is compared by besides its colour: its depth (red) in depth mode, its
+// CIELAB features in Lab mode, computed once for all the boundaries of the pixel.
+vec4 featuresAt(ivec2 p, vec4 a)
 {
 #if MLAA_EDGE_DETECTION == 2
-  return texelFetch(depthTexture, p, 0).r;
+  return texelFetch(depthTexture, p, 0);
+#elif MLAA_EDGE_DETECTION == 3
+  return vec4(labFeatures(a.rgb), 0.0);
 #else
-  return 0.0;
+  return vec4(0.0);
 #endif
 }
 
@@ -101,7 +105,8 @@ float contrastBetween(ivec2 p, ivec2 q, ivec2 size)
   {
     return 0.0;
   }
-  return contrast(texelFetch(colorTexture, p, 0), depthAt(p), q);
+  vec4 a = texelFetch(colorTexture, p, 0);
+  return contrast(a, featuresAt(p, a), q);
 }
 
 void main()
@@ -113,16 +118,16 @@ void main()
   ivec2 dx = ivec2(1, 0);
   ivec2 dy = ivec2(0, 1);
   vec4 color = texelFetch(colorTexture, p, 0);
-  float depth = depthAt(p);
-  float left = p.x > 0 ? contrast(color, depth, p - dx) : 0.0;
-  float top = p.y < size.y - 1 ? contrast(color, depth, p + dy) : 0.0;
+  vec4 features = featuresAt(p, color);
+  float left = p.x > 0 ? contrast(color, features, p - dx) : 0.0;
+  float top = p.y < size.y - 1 ? contrast(color, features, p + dy) : 0.0;
   bool keepLeft = left > 0.0;
   bool keepTop = top > 0.0;
 
 #ifdef MLAA_LOCAL_CONTRAST
   // This pixel's other two boundaries, shared by both edges (contrast is symmetric).
-  float right = p.x < size.x - 1 ? contrast(color, depth, p + dx) : 0.0;
-  float bottom = p.y > 0 ? contrast(color, depth, p - dy) : 0.0;
+  float right = p.x < size.x - 1 ? contrast(color, features, p + dx) : 0.0;
+  float bottom = p.y > 0 ? contrast(color, features, p - dy) : 0.0;
   float around = max(right, bottom);
   if (keepLeft)
   {
