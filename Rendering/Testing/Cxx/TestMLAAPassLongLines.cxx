@@ -47,6 +47,28 @@ namespace
 constexpr int Width = 512;
 constexpr int Height = 64;
 
+// Shows `polyData` unlit (its cell colours, else black) over `background` in a parallel view of
+// one world unit per pixel of a width x height window whose lower-left corner is the origin.
+void ShowFlat(vtkRenderer* renderer, vtkPolyData* polyData, double background, int width,
+  int height)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(polyData);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(0.0, 0.0, 0.0);
+  actor->GetProperty()->LightingOff();
+  renderer->AddActor(actor);
+  renderer->SetBackground(background, background, background);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->ParallelProjectionOn();
+  camera->SetFocalPoint(width / 2.0, height / 2.0, 0.0);
+  camera->SetPosition(width / 2.0, height / 2.0, 100.0);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->SetParallelScale(height / 2.0);
+  renderer->ResetCameraClippingRange();
+}
+
 // A black polygon below a line rising by 1 degree, on white, one world unit per pixel.
 void BuildSlope(vtkRenderer* renderer)
 {
@@ -62,21 +84,7 @@ void BuildSlope(vtkRenderer* renderer)
   vtkNew<vtkPolyData> polyData;
   polyData->SetPoints(points);
   polyData->SetPolys(polys);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(polyData);
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(0.0, 0.0, 0.0);
-  actor->GetProperty()->LightingOff();
-  renderer->AddActor(actor);
-  renderer->SetBackground(1.0, 1.0, 1.0);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->ParallelProjectionOn();
-  camera->SetFocalPoint(Width / 2.0, Height / 2.0, 0.0);
-  camera->SetPosition(Width / 2.0, Height / 2.0, 100.0);
-  camera->SetViewUp(0.0, 1.0, 0.0);
-  camera->SetParallelScale(Height / 2.0);
-  renderer->ResetCameraClippingRange();
+  ShowFlat(renderer, polyData, 1.0, Width, Height);
 }
 
 // The staircase steps of the plain render: for each, the row of the topmost dark pixels and its
@@ -207,20 +215,7 @@ void BuildDiamonds(vtkRenderer* renderer, int size)
   polyData->SetPoints(points);
   polyData->SetPolys(polys);
   polyData->GetCellData()->SetScalars(colors);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(polyData);
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->LightingOff();
-  renderer->AddActor(actor);
-  renderer->SetBackground(0.6, 0.6, 0.6);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->ParallelProjectionOn();
-  camera->SetFocalPoint(size / 2.0, size / 2.0, 0.0);
-  camera->SetPosition(size / 2.0, size / 2.0, 100.0);
-  camera->SetViewUp(0.0, 1.0, 0.0);
-  camera->SetParallelScale(size / 2.0);
-  renderer->ResetCameraClippingRange();
+  ShowFlat(renderer, polyData, 0.6, size, size);
 }
 
 void DiagonalStaircases()
