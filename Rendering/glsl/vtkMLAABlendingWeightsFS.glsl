@@ -170,8 +170,9 @@ int searchDiagonal(ivec2 p, ivec2 direction, bool rising, out bool reachedEnd)
 {
   int maxDistance = cellSize - 1;
 #ifdef MLAA_DIAGONAL_LENGTHS
-  // The count of the unit, read instead of searched: channel 0 to 3 as in the texture.
-  int channel = (rising ? 0 : 2) + (direction.y * (rising ? 1 : -1) > 0 ? 1 : 0);
+  // The count of the unit, read instead of searched: the texture's channels are rising, then
+  // falling, each towards -x first.
+  int channel = (rising ? 0 : 2) + (direction.x > 0 ? 1 : 0);
   int count = int(round(texelFetch(diagonalLengthsTexture, p, 0)[channel]));
   reachedEnd = count < maxDistance;
   return min(count, maxDistance);

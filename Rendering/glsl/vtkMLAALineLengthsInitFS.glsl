@@ -97,12 +97,13 @@ void main()
   gl_FragData[0] = flags;
 #ifdef MLAA_DIAGONAL_LENGTHS
   vec4 diagonalFlags = vec4(0.0);
-  if (top && left && isRisingUnit(p)) // (p is inside: its clamped edgels are its own)
+  // p is inside the image: its clamped edgels (top, left) are its own.
+  if (top && left) // a rising unit
   {
     diagonalFlags.r = isRisingUnit(p - ivec2(1, 1)) ? 1.0 : 0.0;
     diagonalFlags.g = isRisingUnit(p + ivec2(1, 1)) ? 1.0 : 0.0;
   }
-  if (top && isFallingUnit(p))
+  if (top && unclampedEdgelsAt(p + ivec2(1, 0)).r > 0.5) // a falling unit
   {
     diagonalFlags.b = isFallingUnit(p + ivec2(-1, 1)) ? 1.0 : 0.0;
     diagonalFlags.a = isFallingUnit(p + ivec2(1, -1)) ? 1.0 : 0.0;
