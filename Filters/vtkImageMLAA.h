@@ -11,7 +11,8 @@
  * 0. with Reconstruction only: topological reconstruction (Biri et al., "Morphological
  *    antialiasing and topological reconstruction", section 4): a pixel whose unlike neighbours
  *    (CIELAB difference at least the threshold) form two 8-connected pieces of one colour, and
- *    whose like neighbours one piece (vtkMLAATopology), takes the mean colour of the unlike ones;
+ *    whose like neighbours one piece (vtkMLAATopology), moves towards the mean colour of the
+ *    unlike ones by the share of the thin shape that covers it (the coverage rule);
  *    the result replaces the input of the stages below, and is in the output;
  * 1. edge detection (section 4.2): each pixel boundary whose difference (luma, colour, depth or
  *    the CIELAB Delta E of Biri et al., section 3.2) reaches the threshold,

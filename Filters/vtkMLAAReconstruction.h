@@ -130,9 +130,11 @@ struct ReconstructionSettings
  * texture reads). For each pixel A, X is the mask of its neighbours unlike A (Unlike, threshold
  * setup.Threshold; bits as vtkMLAATopology). A is selected when
  * vtkMLAATopology::GetSelectionTable() says so and the X pixels are pairwise not unlike (one
- * colour: the shape); it then becomes the mean of its X pixels, every component, rounded to
- * nearest for integer types. Every other pixel is copied. All decisions read the original
- * pixels.
+ * colour: the shape), and the coverage rule (vtkMLAATopology::GetCoverage of the pixels of its
+ * window of radius vtkMLAATopology::CoverageRadius not unlike the shape's first pixel) gives it
+ * a share above 0; it then moves by that share towards the mean of its X pixels, every
+ * component, rounded to nearest for integer types. Every other pixel is copied. All decisions
+ * read the original pixels.
  * Must match Rendering/glsl/vtkMLAAReconstructionFS.glsl.
  */
 template <typename T>
@@ -168,9 +170,11 @@ void Reconstruct(const ReconstructionSettings& setup, const T* input, vtkIdType 
     {
       return;
     }
-    // The LAB features of rows begin - 1 .. end (clamped), row i at index i + 1 - begin.
-    const int first = static_cast<int>(begin) - 1;
-    const int rows = static_cast<int>(end - begin) + 2;
+    // The LAB features of rows begin - R .. end - 1 + R (clamped; R =
+    // vtkMLAATopology::CoverageRadius, the coverage window's reach), row i at index i - first.
+    const int radius = vtkMLAATopology::CoverageRadius;
+    const int first = static_cast<int>(begin) - radius;
+    const int rows = static_cast<int>(end - begin) + 2 * radius;
     const size_t rowSize = plane * count;
     std::unique_ptr<Acc[]> band(new Acc[rowSize * rows]);
     for (int i = 0; i < rows; ++i)
@@ -197,20 +201,19 @@ void Reconstruct(const ReconstructionSettings& setup, const T* input, vtkIdType 
         UnlikeMasks<Acc, false>(a, b, plane, threshold2, 1, from, to, out);
       }
     };
-    for (int i = 0; i < rows; ++i)
+    // (Only the rows that the neighbour masks of rows begin .. end - 1 read: the band's other
+    // rows serve the coverage windows alone.)
+    for (int i = radius - 1; i < rows - radius; ++i)
     {
       const Acc* here = band.get() + rowSize * i;
-      if (i > 0 && i < rows - 1)
+      if (i >= radius)
       {
         compare(here, here + 1, 0, w - 1, along.data() + i * uw);
       }
-      if (i < rows - 1)
-      {
-        const Acc* above = here + rowSize;
-        compare(here, above, 0, w, up.data() + i * uw);
-        compare(here, above + 1, 0, w - 1, upRight.data() + i * uw);
-        compare(here, above - 1, 1, w, upLeft.data() + i * uw);
-      }
+      const Acc* above = here + rowSize;
+      compare(here, above, 0, w, up.data() + i * uw);
+      compare(here, above + 1, 0, w - 1, upRight.data() + i * uw);
+      compare(here, above - 1, 1, w, upLeft.data() + i * uw);
     }
     std::vector<unsigned char> masks(uw);
     for (vtkIdType row = begin; row < end; ++row)
@@ -287,7 +290,33 @@ void Reconstruct(const ReconstructionSettings& setup, const T* input, vtkIdType 
         {
           continue;
         }
-        // The mean of the shape's pixels, every component.
+        // The coverage rule (vtkMLAATopology): the pixels of the window alike the shape (its
+        // first pixel stands for it) measure the thin shape's density.
+        const Acc* shape = nullptr;
+        for (int bit = 0; bit < 8 && !shape; ++bit)
+        {
+          shape = ((unlike >> bit) & 1) ? features[bit] : nullptr;
+        }
+        int shapePixels = 0;
+        for (int dy = -radius; dy <= radius; ++dy)
+        {
+          const Acc* windowRow = band.get() + rowSize * (j + dy);
+          for (int dx = -radius; dx <= radius; ++dx)
+          {
+            const int wx = std::min(std::max(x + dx, 0), w - 1);
+            shapePixels += ((dx != 0 || dy != 0) &&
+                             !Unlike(windowRow + wx, shape, plane, count, threshold2))
+              ? 1
+              : 0;
+          }
+        }
+        const double coverage = vtkMLAATopology::GetCoverage(shapePixels);
+        if (coverage <= 0.0)
+        {
+          continue;
+        }
+        // The pixel plus the coverage's share of the difference to the mean of the shape's
+        // pixels, every component.
         double sum[4] = { 0, 0, 0, 0 };
         int n = 0;
         for (int bit = 0; bit < 8; ++bit)
@@ -303,9 +332,12 @@ void Reconstruct(const ReconstructionSettings& setup, const T* input, vtkIdType 
             ++n;
           }
         }
+        const T* self = pixel(x, y);
         for (int k = 0; k < c; ++k)
         {
-          out[static_cast<size_t>(x) * c + k] = ConvertBlended<T>(sum[k] / n);
+          const double value = static_cast<double>(self[k]);
+          out[static_cast<size_t>(x) * c + k] =
+            ConvertBlended<T>(value + coverage * (sum[k] / n - value));
         }
       }
     }

@@ -27,6 +27,31 @@ void vtkMLAATopology::GetNeighborOffset(int bit, int& dx, int& dy)
 }
 
 //------------------------------------------------------------------------------
+double vtkMLAATopology::GetCoverage(int shapePixels)
+{
+  const int columns = 2 * CoverageRadius + 1;
+  if (shapePixels <= 0 || shapePixels > columns)
+  {
+    return 0.0;
+  }
+  return static_cast<double>(shapePixels) / (2.0 * columns);
+}
+
+//------------------------------------------------------------------------------
+const float* vtkMLAATopology::GetCoverageTable()
+{
+  static const std::array<float, CoverageTableSize> table = [] {
+    std::array<float, CoverageTableSize> t{};
+    for (int n = 0; n < CoverageTableSize; ++n)
+    {
+      t[n] = static_cast<float>(GetCoverage(n));
+    }
+    return t;
+  }();
+  return table.data();
+}
+
+//------------------------------------------------------------------------------
 int vtkMLAATopology::ConnexityNumber(int mask)
 {
   return static_cast<int>(FindPieces(mask).size());

@@ -96,6 +96,41 @@ public:
   static constexpr double OppositeCosine = -0.7;
 
   /**
+   * The coverage rule: a selected pixel does not take the shape's full colour, but the share of
+   * it that the thin shape would cover there. Point sampling keeps a shape's mean coverage: a
+   * line of width w < 1 pixel lights about a fraction w of the pixels along it (at most one per
+   * column, or per row where it is steep) and leaves the rest as gaps, so the density of the
+   * shape's pixels around a gap measures w. Let n be the number of pixels alike the shape
+   * (not unlike its pixels, by the test of the selection) among the (2 R + 1)^2 - 1 others of
+   * the square window of radius R = CoverageRadius around the selected pixel:
+   * - n > 2 R + 1 is more than one thin line crossing the window can light: two lines passing
+   *   within a pixel of each other, or a shape that is not thin. The pixel is no gap and keeps
+   *   its colour (coverage 0).
+   * - Otherwise the line's density is w = n / (2 R + 1), and the gap, which the line crosses
+   *   without covering the pixel's centre, is covered by w / 2 on average (a band of width w
+   *   that misses the centre covers between 0 and w of the pixel). The pixel moves that share
+   *   of the way to the mean colour of its unlike neighbours: n / (2 (2 R + 1)).
+   * Filling gaps with the full colour (the paper's rule) made restored lines too bright and
+   * too thick, and filled the space between lines passing close by.
+   */
+  static constexpr int CoverageRadius = 3;
+
+  /**
+   * The share of the shape's colour (0 to 1/2) that a selected pixel takes when `shapePixels`
+   * pixels of its window are alike the shape (the coverage rule above).
+   */
+  static double GetCoverage(int shapePixels);
+
+  /**
+   * GetCoverage for 0 to (2 CoverageRadius + 1)^2 - 1 shape pixels, as floats for a shader;
+   * the pointer stays valid for the life of the program.
+   */
+  static const float* GetCoverageTable();
+
+  /** The number of entries of GetCoverageTable(): (2 CoverageRadius + 1)^2. */
+  static constexpr int CoverageTableSize = (2 * CoverageRadius + 1) * (2 * CoverageRadius + 1);
+
+  /**
    * Whether a pixel whose unlike neighbours are `unlikeMask` is selected for reconstruction
    * (the rule of the class description).
    */

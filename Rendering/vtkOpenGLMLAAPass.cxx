@@ -457,6 +457,10 @@ void vtkOpenGLMLAAPass::SetReconstructionUniforms(vtkShaderProgram* program)
     words[i] = static_cast<int>(bits[i]);
   }
   program->SetUniform1iv("selectionTable", 8, words);
+  // The coverage rule's window and shares, from the same generator.
+  program->SetUniformi("coverageRadius", vtkMLAATopology::CoverageRadius);
+  program->SetUniform1fv(
+    "coverageTable", vtkMLAATopology::CoverageTableSize, vtkMLAATopology::GetCoverageTable());
 }
 
 //------------------------------------------------------------------------------

@@ -339,8 +339,9 @@ const std::vector<Option> OptionTable = {
     {
       return Text("Topological reconstruction (Biri et al., section 4) before edge detection: a "
                   "pixel where point sampling broke a thin shape (a wire, a streamline, an "
-                  "iso-line) in two is given the shape's colour. Line ends, dots and corners are "
-                  "left alone. Default: ",
+                  "iso-line) in two moves towards the shape's colour by the share of the shape "
+                  "that covers it. Line ends, dots, corners and the space between lines passing "
+                  "close by are left alone. Default: ",
         OnOff(d.Options->GetReconstruction()), ".");
     } },
 

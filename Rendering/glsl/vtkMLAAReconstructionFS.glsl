@@ -17,8 +17,12 @@
 // 8-bit mask (bit 0 E, 1 NE, 2 N, 3 NW, 4 W, 5 SW, 6 S, 7 SE; N is the next row up). A is
 // selected when the selection table (T8(X) == 2 and T8(complement) == 1, section 4.2, uploaded
 // from vtkMLAATopology::GetSelectionBits: the one generator) has the mask's bit and the X
-// pixels are pairwise alike (one colour: the shape); it then takes the mean of the X pixels,
-// alpha included. Reads beyond the image are clamped to its border.
+// pixels are pairwise alike (one colour: the shape). The pixels of the square window of radius
+// coverageRadius around A that are alike the shape (not unlike its first pixel) measure the
+// thin shape's density; coverageTable (vtkMLAATopology::GetCoverageTable, the coverage rule)
+// turns their count into the share of the shape that covers A (0: A is not a gap in a thin
+// line and keeps its colour). A selected pixel then moves by that share towards the mean of
+// the X pixels, alpha included. Reads beyond the image are clamped to its border.
 //
 // Compile-time variants (#defines prepended by vtkOpenGLMLAAPass in place of //VTK::Antialiasing::Dec):
 //   MLAA_USE_ALPHA     defined: a change in alpha alone makes a neighbour unlike too
@@ -34,6 +38,8 @@ in vec2 texCoord;
 uniform sampler2D colorTexture; // the delegate's image (texelFetch only)
 uniform float threshold;        // vtkMLAAOptions::Threshold
 uniform int selectionTable[8];  // 256 bits: bit (m & 31) of word m >> 5 selects mask m
+uniform int coverageRadius;     // vtkMLAATopology::CoverageRadius
+uniform float coverageTable[49]; // vtkMLAATopology::GetCoverageTable(), by shape pixels
 
 //VTK::MLAA::Lab
 
@@ -113,6 +119,34 @@ void main()
       }
     }
   }
+  float coverage = 0.0;
+  if (selected)
+  {
+    // The coverage rule: the window's pixels alike the shape (its first pixel stands for it).
+    int first = 0;
+    while (((mask >> first) & 1) == 0)
+    {
+      ++first;
+    }
+    int shapePixels = 0;
+    for (int dy = -coverageRadius; dy <= coverageRadius; ++dy)
+    {
+      for (int dx = -coverageRadius; dx <= coverageRadius; ++dx)
+      {
+        if (dx != 0 || dy != 0)
+        {
+          vec4 q = texelFetch(colorTexture, clamp(p + ivec2(dx, dy), ivec2(0), size - 1), 0);
+          if (!unlike(features(q), isFiniteColor(q), neighborFeatures[first],
+                neighborFinite[first]))
+          {
+            ++shapePixels;
+          }
+        }
+      }
+    }
+    coverage = coverageTable[shapePixels];
+    selected = coverage > 0.0;
+  }
 #ifdef MLAA_WRITE_BACK
   if (!selected)
   {
@@ -131,7 +165,7 @@ void main()
         n += 1.0;
       }
     }
-    color = sum / n;
+    color += coverage * (sum / n - color);
   }
   gl_FragData[0] = color;
 }
