@@ -86,6 +86,26 @@ public:
     vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
     vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
     vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
+    vtkOpenGLState::ScopedglViewport viewportSaver(state);
+    vtkOpenGLState::ScopedglScissor scissorSaver(state);
+    // The whole of the renderer's viewport, set here: the camera pass that ParaView puts before
+    // IceT restores, on its way out, whatever viewport was current when it started, which need
+    // not be the renderer's (a square 300 x 300 in a 400 x 300 view was measured). The quad then
+    // covered part of the image only, the antialiasing read transparent black beyond it, and
+    // DLAA on two ranks differed from one rank by up to 39/255 at the edges near that border.
+    // (When the antialiasing pass renders its delegate into a framebuffer object of its own,
+    // that object is the target, whole.)
+    int size[2] = { 0, 0 }, origin[2] = { 0, 0 };
+    if (s->GetFrameBuffer())
+    {
+      s->GetWindowSize(size);
+    }
+    else
+    {
+      renderer->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
+    }
+    state->vtkglViewport(origin[0], origin[1], size[0], size[1]);
+    state->vtkglScissor(origin[0], origin[1], size[0], size[1]);
     state->vtkglEnable(GL_BLEND);
     state->vtkglBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
     state->vtkglDisable(GL_DEPTH_TEST);
