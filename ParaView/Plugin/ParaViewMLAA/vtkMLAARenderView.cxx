@@ -3,7 +3,6 @@
 #include "vtkMLAARenderView.h"
 
 #include "vtkDLAAOptions.h"
-#include "vtkIceTSynchronizedRenderers.h"
 #include "vtkImageProcessingPass.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -20,6 +19,8 @@
 #include "vtkOpenGLDLAAPass.h"
 #include "vtkOpenGLMLAAPass.h"
 #include "vtkPVSynchronizedRenderer.h"
+#include "vtkProcessModule.h"
+#include "vtkSynchronizedRenderers.h"
 #include "vtkRenderWindow.h"
 
 vtkStandardNewMacro(vtkMLAARenderView);
@@ -135,11 +136,34 @@ private:
   vtkOpenGLQuadHelper* Quad = nullptr;
 };
 vtkStandardNewMacro(vtkMLAABackgroundUnderPass);
+
+
+// Whether this process renders the view over transparent black, for the background to be put
+// under the image later: the server processes' synchronizers do so (FixBackground) under IceT
+// (several ranks) and, in client-server, for the client (which blends the image it receives
+// over the background).
+bool RendersOverFixedBackground(vtkPVSynchronizedRenderer* renderers)
+{
+  if (vtkProcessModule::GetProcessType() == vtkProcessModule::PROCESS_CLIENT)
+  {
+    return false;
+  }
+  for (vtkSynchronizedRenderers* synchronizer :
+    { renderers->GetParallelSynchronizer(), renderers->GetCSSynchronizer() })
+  {
+    if (synchronizer && synchronizer->GetFixBackground())
+    {
+      return true;
+    }
+  }
+  return false;
+}
 }
 
 // What the view puts into the image-processing slot: the MLAA or DLAA pass, whose delegate is
 // the slot's delegate (the camera pass that ParaView or IceT gives it), with the background
-// put under the composited image first when IceT composites (see vtkMLAABackgroundUnderPass).
+// put under the image first where the process renders over transparent black (see
+// vtkMLAABackgroundUnderPass).
 // The wiring is made at every render, since ParaView sets the slot's delegate again whenever
 // the slot is set (after every selection, for one).
 class vtkMLAARenderView::vtkSlotPass : public vtkImageProcessingPass
@@ -149,7 +173,6 @@ public:
   vtkTypeMacro(vtkSlotPass, vtkImageProcessingPass);
 
   vtkSmartPointer<vtkImageProcessingPass> Antialiasing;
-  bool BackgroundUnder = false;
   vtkMLAARenderView* View = nullptr; // the view that owns this pass
 
   void Render(const vtkRenderState* s) override
@@ -159,7 +182,8 @@ public:
     {
       return;
     }
-    if (this->BackgroundUnder && this->View->GetSolidBackground(this->Under->Background))
+    if (RendersOverFixedBackground(this->View->SynchronizedRenderers) &&
+      this->View->GetSolidBackground(this->Under->Background))
     {
       this->Under->Delegate = this->DelegatePass;
       this->Antialiasing->SetDelegatePass(this->Under);
@@ -315,9 +339,6 @@ void vtkMLAARenderView::UpdatePasses()
   if (pass)
   {
     this->SlotPass->Antialiasing = pass;
-    this->SlotPass->BackgroundUnder =
-      vtkIceTSynchronizedRenderers::SafeDownCast(
-        this->SynchronizedRenderers->GetParallelSynchronizer()) != nullptr;
     // The tone-mapping pass leaves the slot first (vtkPVRenderView only removes its own pass).
     this->Superclass::SetUseToneMapping(false);
     this->SynchronizedRenderers->SetImageProcessingPass(this->SlotPass);
