@@ -27,8 +27,9 @@ vtkStandardNewMacro(vtkMLAARenderView);
 
 namespace
 {
-// Under IceT, the image-processing pass reads the composited image over a transparent black
-// background; ParaView puts the background colour under it only when the image is shown. The
+// Under IceT, and on a pvserver rendering for its client, the image-processing pass reads the
+// image over a transparent black background; ParaView puts the background colour under it only
+// when the image is shown (after compositing, or on the client). The
 // antialiasing would then find (and blend) edges against black rather than against the
 // background the user sees: the measured DLAA result on two ranks differed from one rank's by
 // up to 34/255 at the silhouettes. This stage renders its delegate (the camera and IceT passes)
