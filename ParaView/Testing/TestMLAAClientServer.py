@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """Client and server: pvpython connected to a pvserver of one or more ranks renders the MLAA
 view's scene (TestMLAAView.py's) on the server, with MLAA and with DLAA, and its screenshots equal
-those of pvpython's built-in session within 2/255.
+those of pvpython's built-in session within 2/255; so do those the client renders itself from the
+geometry the server sends it (ParaView's choice for small data).
 
 Run by ParaView's client-server test driver, smTestDriver, which starts the server (under mpiexec,
 SMTESTDRIVER_MPI_NUMPROCS ranks, on a port the server picks), then this script in pvpython with
@@ -36,27 +37,27 @@ def loaded_plugins(information):
             if information.GetPluginLoaded(i)]
 
 
-def render(session):
-    """The scene in a new MLAA view of the active session, rendered where the data is (the
-    server, in client-server), with UseMLAA off, with MLAA and with DLAA: the screenshots, as
-    (y, x, RGB) rows by name."""
+def render(session, where="server"):
+    """The scene in a new MLAA view of the active session, with UseMLAA off, with MLAA and with
+    DLAA: the screenshots, as (y, x, RGB) rows by name. In client-server, rendered `where` says:
+    on the server, or on the client from the geometry the server sends it."""
     view = CreateView("MLAARenderView")
     size, sphere = t.show_view_scene(view)
-    # No geometry is sent to the client to render there, whatever its size: the server renders.
-    view.RemoteRenderThreshold = 0
+    # The data's size (in MB) above which the server renders: 0, always; 1000, never here.
+    view.RemoteRenderThreshold = 0 if where == "server" else 1000
     view.UseFXAA = 0
-    if args.ranks > 1 and session == "server":
+    if args.ranks > 1 and session == "client-server" and where == "server":
         t.check_split(sphere, args.ranks, "sphere")
     screenshots = {}
     for name, mlaa, dlaa in (("off", 0, 0), ("mlaa", 1, 0), ("dlaa", 0, 1)):
         view.UseMLAA = mlaa
         view.UseDLAA = dlaa
         # (Not simple.Render: the first one in a process resets the camera.)
-        path = os.path.join(args.output_dir, "%s-%s.png" % (session, name))
+        path = os.path.join(args.output_dir, "%s-%s-%s.png" % (session, where, name))
         SaveScreenshot(path, view, ImageResolution=size, TransparentBackground=0)
-        if session == "server":
-            t.check(view.GetClientSideObject().GetUseDistributedRenderingForRender(),
-                    "%s: the server rendered the image" % name)
+        if session == "client-server":
+            remote = view.GetClientSideObject().GetUseDistributedRenderingForRender()
+            t.check(remote == (where == "server"), "%s: the %s rendered the image" % (name, where))
         screenshots[name] = t.read_png(path)[:, :, :3]
     Delete(view)
     return screenshots
@@ -79,13 +80,15 @@ on_server = loaded_plugins(manager.GetRemoteInformation(sm.ActiveConnection.Sess
 t.check("MLAA" in on_client and "MLAA" in on_server,
         "the plugin is loaded on the client and on the server (client: %s; server: %s)"
         % (on_client, on_server))
-server = render("server")
+results = {where: render("client-server", where) for where in ("server", "client")}
 Disconnect()
 
-for name in ("off", "mlaa", "dlaa"):
-    difference = t.max_difference(server[name], built_in[name])
-    t.check(difference <= 2, "%s: the server's screenshot equals the built-in session's within "
-            "2/255 (max difference %d)" % (name, difference))
-for name in ("mlaa", "dlaa"):
-    changed = (server[name] != server["off"]).any(axis=2).sum()
-    t.check(changed > 200, "%s: %d edge pixels are antialiased on the server" % (name, changed))
+for where, screenshots in results.items():
+    for name in ("off", "mlaa", "dlaa"):
+        difference = t.max_difference(screenshots[name], built_in[name])
+        t.check(difference <= 2, "%s, rendered on the %s: the screenshot equals the built-in "
+                "session's within 2/255 (max difference %d)" % (name, where, difference))
+    for name in ("mlaa", "dlaa"):
+        changed = (screenshots[name] != screenshots["off"]).any(axis=2).sum()
+        t.check(changed > 200, "%s, rendered on the %s: %d edge pixels are antialiased"
+                % (name, where, changed))
