@@ -111,6 +111,11 @@ void vtkOpenGLAntialiasingPass::CopyTargetToColorTexture(
   const Frame& frame, unsigned int targetBinding, unsigned int targetBuffer)
 {
   vtkOpenGLState* ostate = frame.Window->GetState();
+  // A blit is clipped by the scissor test, and the delegate need not leave this renderer's box:
+  // a camera pass restores the one it found (in ParaView's client-server rendering, a square
+  // 300 x 300 in a 400 x 300 view, which left the rest of the image out).
+  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
+  ostate->vtkglDisable(GL_SCISSOR_TEST);
   this->DelegateFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
   this->DelegateFramebuffer->AddColorAttachment(0, this->ColorTexture);
   this->DelegateFramebuffer->ActivateDrawBuffer(0);

@@ -51,6 +51,50 @@ def load_plugin(path, namespace):
     simple.LoadPlugin(path, remote=False, ns=namespace)
 
 
+def show_view_scene(view):
+    """The MLAA view tests' scene in `view`, an MLAARenderView (TestMLAAView.py, and
+    TestMLAAClientServer.py, which compares a server's screenshots with the built-in session's):
+    flat-shaded objects (no lighting: each is one colour, so flat regions are truly flat) over a
+    background that is neither black nor white, seen by a fixed camera, 400 x 300 pixels. Under
+    IceT the pass works on the composited image, whose background is transparent: a wrong alpha
+    convention would leave halos of the wrong colour around the silhouettes, and the nearly black
+    sphere would have no edges at all against the transparent black IceT composites over.
+    Returns the view's size and the large sphere (split across the ranks when there are
+    several)."""
+    size = [400, 300]
+    view.ViewSize = size
+    view.OrientationAxesVisibility = 0
+    view.UseColorPaletteForBackground = 0
+    view.Background = [0.32, 0.34, 0.43]
+    sphere = simple.Sphere(ThetaResolution=64, PhiResolution=64, Radius=0.5)
+    for source, colour in (
+            (sphere, [0.9, 0.6, 0.1]),
+            (simple.Cone(Resolution=7, Center=[0.7, 0.2, 0.0], Radius=0.35), [0.2, 0.8, 0.3]),
+            (simple.Box(Center=[-0.6, -0.4, 0.2], XLength=0.5, YLength=0.3), [0.95, 0.95, 0.95]),
+            (simple.Sphere(Center=[-0.55, 0.45, 0.0], Radius=0.2), [0.03, 0.03, 0.04])):
+        display = simple.Show(source, view)
+        display.ColorArrayName = ['POINTS', '']
+        display.AmbientColor = colour
+        display.DiffuseColor = colour
+        display.Ambient = 1.0
+        display.Diffuse = 0.0
+    view.CameraPosition = [0.4, 0.5, 4.0]
+    view.CameraFocalPoint = [0.0, 0.0, 0.0]
+    view.CameraViewUp = [0.2, 1.0, 0.0]
+    view.CameraParallelProjection = 0
+    view.CameraViewAngle = 30
+    return size, sphere
+
+
+def check_split(source, ranks, what):
+    """Checks that the data of `source` lies on every one of `ranks` ranks (process ids 0 to
+    ranks - 1), so that IceT composites it."""
+    owners = sm.Fetch(simple.ProcessIdScalars(Input=source)).GetPointData().GetArray(
+        "ProcessId").GetRange()
+    check(owners == (0.0, ranks - 1.0),
+          "the %s is split across the ranks (process ids %s), so IceT composites" % (what, owners))
+
+
 def number_of_ranks():
     return sm.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
 

@@ -3,7 +3,6 @@
 #include "vtkMLAARenderView.h"
 
 #include "vtkDLAAOptions.h"
-#include "vtkIceTSynchronizedRenderers.h"
 #include "vtkImageProcessingPass.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -20,14 +19,17 @@
 #include "vtkOpenGLDLAAPass.h"
 #include "vtkOpenGLMLAAPass.h"
 #include "vtkPVSynchronizedRenderer.h"
+#include "vtkProcessModule.h"
+#include "vtkSynchronizedRenderers.h"
 #include "vtkRenderWindow.h"
 
 vtkStandardNewMacro(vtkMLAARenderView);
 
 namespace
 {
-// Under IceT, the image-processing pass reads the composited image over a transparent black
-// background; ParaView puts the background colour under it only when the image is shown. The
+// Under IceT, and on a pvserver rendering for its client, the image-processing pass reads the
+// image over a transparent black background; ParaView puts the background colour under it only
+// when the image is shown (after compositing, or on the client). The
 // antialiasing would then find (and blend) edges against black rather than against the
 // background the user sees: the measured DLAA result on two ranks differed from one rank's by
 // up to 34/255 at the silhouettes. This stage renders its delegate (the camera and IceT passes)
@@ -86,6 +88,26 @@ public:
     vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
     vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
     vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
+    vtkOpenGLState::ScopedglViewport viewportSaver(state);
+    vtkOpenGLState::ScopedglScissor scissorSaver(state);
+    // The whole of the renderer's viewport, set here: the camera pass that ParaView puts before
+    // IceT restores, on its way out, whatever viewport was current when it started, which need
+    // not be the renderer's (a square 300 x 300 in a 400 x 300 view was measured). The quad then
+    // covered part of the image only, the antialiasing read transparent black beyond it, and
+    // DLAA on two ranks differed from one rank by up to 39/255 at the edges near that border.
+    // (When the antialiasing pass renders its delegate into a framebuffer object of its own,
+    // that object is the target, whole.)
+    int size[2] = { 0, 0 }, origin[2] = { 0, 0 };
+    if (s->GetFrameBuffer())
+    {
+      s->GetWindowSize(size);
+    }
+    else
+    {
+      renderer->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
+    }
+    state->vtkglViewport(origin[0], origin[1], size[0], size[1]);
+    state->vtkglScissor(origin[0], origin[1], size[0], size[1]);
     state->vtkglEnable(GL_BLEND);
     state->vtkglBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
     state->vtkglDisable(GL_DEPTH_TEST);
@@ -115,11 +137,34 @@ private:
   vtkOpenGLQuadHelper* Quad = nullptr;
 };
 vtkStandardNewMacro(vtkMLAABackgroundUnderPass);
+
+
+// Whether this process renders the view over transparent black, for the background to be put
+// under the image later: the server processes' synchronizers do so (FixBackground) under IceT
+// (several ranks) and, in client-server, for the client (which blends the image it receives
+// over the background).
+bool RendersOverFixedBackground(vtkPVSynchronizedRenderer* renderers)
+{
+  if (vtkProcessModule::GetProcessType() == vtkProcessModule::PROCESS_CLIENT)
+  {
+    return false;
+  }
+  for (vtkSynchronizedRenderers* synchronizer :
+    { renderers->GetParallelSynchronizer(), renderers->GetCSSynchronizer() })
+  {
+    if (synchronizer && synchronizer->GetFixBackground())
+    {
+      return true;
+    }
+  }
+  return false;
+}
 }
 
 // What the view puts into the image-processing slot: the MLAA or DLAA pass, whose delegate is
 // the slot's delegate (the camera pass that ParaView or IceT gives it), with the background
-// put under the composited image first when IceT composites (see vtkMLAABackgroundUnderPass).
+// put under the image first where the process renders over transparent black (see
+// vtkMLAABackgroundUnderPass).
 // The wiring is made at every render, since ParaView sets the slot's delegate again whenever
 // the slot is set (after every selection, for one).
 class vtkMLAARenderView::vtkSlotPass : public vtkImageProcessingPass
@@ -129,7 +174,6 @@ public:
   vtkTypeMacro(vtkSlotPass, vtkImageProcessingPass);
 
   vtkSmartPointer<vtkImageProcessingPass> Antialiasing;
-  bool BackgroundUnder = false;
   vtkMLAARenderView* View = nullptr; // the view that owns this pass
 
   void Render(const vtkRenderState* s) override
@@ -139,7 +183,8 @@ public:
     {
       return;
     }
-    if (this->BackgroundUnder && this->View->GetSolidBackground(this->Under->Background))
+    if (RendersOverFixedBackground(this->View->SynchronizedRenderers) &&
+      this->View->GetSolidBackground(this->Under->Background))
     {
       this->Under->Delegate = this->DelegatePass;
       this->Antialiasing->SetDelegatePass(this->Under);
@@ -295,9 +340,6 @@ void vtkMLAARenderView::UpdatePasses()
   if (pass)
   {
     this->SlotPass->Antialiasing = pass;
-    this->SlotPass->BackgroundUnder =
-      vtkIceTSynchronizedRenderers::SafeDownCast(
-        this->SynchronizedRenderers->GetParallelSynchronizer()) != nullptr;
     // The tone-mapping pass leaves the slot first (vtkPVRenderView only removes its own pass).
     this->Superclass::SetUseToneMapping(false);
     this->SynchronizedRenderers->SetImageProcessingPass(this->SlotPass);
