@@ -5,6 +5,7 @@
 #include "vtkDLAAOptions.h"
 #include "vtkIceTSynchronizedRenderers.h"
 #include "vtkImageProcessingPass.h"
+#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
@@ -86,6 +87,26 @@ public:
     vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
     vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
     vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
+    vtkOpenGLState::ScopedglViewport viewportSaver(state);
+    vtkOpenGLState::ScopedglScissor scissorSaver(state);
+    // The whole image: IceT leaves a viewport of its own (measured: the background went under
+    // the first 300 columns of a 400 x 300 view only, which made an edge of the 301st column).
+    // The image is the renderer's viewport in the window, or the whole of a framebuffer object
+    // when the antialiasing pass renders its delegate into one.
+    int x = 0, y = 0, width = 0, height = 0;
+    if (vtkOpenGLFramebufferObject::SafeDownCast(s->GetFrameBuffer()))
+    {
+      int size[2];
+      s->GetWindowSize(size);
+      width = size[0];
+      height = size[1];
+    }
+    else
+    {
+      renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
+    }
+    state->vtkglViewport(x, y, width, height);
+    state->vtkglScissor(x, y, width, height);
     state->vtkglEnable(GL_BLEND);
     state->vtkglBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
     state->vtkglDisable(GL_DEPTH_TEST);
