@@ -1,7 +1,7 @@
 # SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
 # SPDX-License-Identifier: BSD-3-Clause
-"""The properties of the MLAAAntialiasing filter, the MLAA render view and the DLAAAntialiasing
-filter: their defaults are vtkMLAAOptions's and vtkDLAAOptions's own (read back from the server
+"""The properties of the MLAAAntialiasing filter, the ordinary render view (which the plugin
+extends), the older MLAA render view and the DLAAAntialiasing filter: their defaults are vtkMLAAOptions's and vtkDLAAOptions's own (read back from the server
 objects through the options proxies' information properties), and QualityPreset replaces the
 quality settings while it is chosen, whatever order the properties are set in, and gives them
 back under Custom."""
@@ -46,10 +46,13 @@ def close(a, b):
 image = Wavelet()
 mlaa = MLAAAntialiasing(Input=image)
 view = CreateView("MLAARenderView")
+render_view = CreateView("RenderView")
 # The options proxy of each is the one its exposed properties belong to.
 for label, proxy, options, prefix in (
         ("filter", mlaa, mlaa.GetProperty("Threshold").SMProperty.GetParent(), ""),
-        ("view", view, view.GetProperty("MLAAThreshold").SMProperty.GetParent(), "MLAA")):
+        ("render view", render_view,
+         render_view.GetProperty("MLAAThreshold").SMProperty.GetParent(), "MLAA"),
+        ("MLAA view", view, view.GetProperty("MLAAThreshold").SMProperty.GetParent(), "MLAA")):
     defaults = property_values(options)
     in_effect = effective(options)
     t.check(all(close(defaults[n], in_effect[n]) for n in settings),
