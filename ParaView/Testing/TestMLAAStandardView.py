@@ -13,7 +13,7 @@
   process's result changes, and under IceT nothing does;
 - backgrounds: a gradient is handled on one rank and under IceT (the image equals the tool's on
   the plain screenshot); a texture is handled on one rank and, under IceT, refused with a
-  warning (the image is left plain)."""
+  warning (the image is left plain); a sky box likewise."""
 
 import os
 
@@ -234,4 +234,17 @@ else:
             "under IceT, with a texture background, the image is left without MLAA")
     t.check(len(warnings) == 1 and "textured or sky-box background" in warnings[0],
             "... and the view says why, once: %r" % (warnings[:1],))
+# A sky box (the same texture on a sphere around the scene): the same on several ranks.
+view.BackgroundColorMode = "Skybox"
+view.AntialiasingMethod = "None or FXAA"
+skybox_path, skybox_plain = screenshot("skybox-none.png")
+view.AntialiasingMethod = "MLAA"
+_, skybox_mlaa = screenshot("skybox-mlaa.png")
+if args.ranks > 1:
+    t.check(np.array_equal(skybox_mlaa, skybox_plain) and len(warnings) == 2 and
+            "textured or sky-box background" in warnings[1],
+            "under IceT, with a sky box, the image is left without MLAA, with a warning")
+else:
+    check_against_tool("MLAA sky box", skybox_mlaa, skybox_path, skybox_plain, [])
+    t.check(not warnings, "one rank: no warning about the sky box")
 view.GetClientSideObject().RemoveObserver(observer)
