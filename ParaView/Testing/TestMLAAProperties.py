@@ -121,3 +121,9 @@ dlaa_options.UpdatePropertyInformation()
 t.check(close(dlaa_options.GetProperty("LambdaInfo").GetElement(0), 7.5) and
         dlaa_options.GetProperty("LumaFunctionInfo").GetElement(0) == 1,
         "DLAA filter: the properties reach vtkImageDLAA's options")
+
+# The GUI's name for the method: the DLAA filter's help (its tooltip in the Filters menu) names
+# it in full once, since "DLAA" most often means a learned method of the same initials now.
+short_help = dlaa.SMProxy.GetDocumentation().GetShortHelp()
+t.check("DLAA (Andreev 2011, directionally localized antialiasing)" in short_help,
+        "DLAA filter: its short help names the method in full (%r)" % short_help)

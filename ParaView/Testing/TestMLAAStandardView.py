@@ -55,6 +55,11 @@ expected = ["AntialiasingMethod", "AntialiasingKeepAlpha", "MLAALineLengths", "M
 t.check(all(name in antialiasing for name in expected),
         "the view's Antialiasing Options group holds %s (it has %d properties)"
         % (", ".join(expected), len(antialiasing)))
+undocumented = [name for name in antialiasing
+                if view.SMProxy.GetProperty(name).GetDocumentation() is None or
+                not view.SMProxy.GetProperty(name).GetDocumentation().GetDescription().strip()]
+t.check(not undocumented, "every property of the group has help text (undocumented: %s)"
+        % undocumented)
 documentation = view.GetProperty("AntialiasingMethod").SMProperty.GetDocumentation()
 t.check(documentation is not None and DLAA_LABEL[:-1] in " ".join(
             documentation.GetDescription().split()),
