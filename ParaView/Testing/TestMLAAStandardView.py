@@ -13,7 +13,8 @@
   process's result changes, and under IceT nothing does;
 - backgrounds: a gradient is handled on one rank and under IceT (the image equals the tool's on
   the plain screenshot); a texture is handled on one rank and, under IceT, refused with a
-  warning (the image is left plain); a sky box likewise."""
+  warning (the image is left plain); a sky box likewise;
+- views of other classes built on RenderView's proxy take the properties without error."""
 
 import os
 
@@ -94,10 +95,11 @@ view.CameraViewUp = [0.2, 1.0, 0.0]
 view.CameraViewAngle = 30
 
 
-def server_value(name):
-    """An information property of the view: what its server object holds."""
-    view.SMProxy.UpdatePropertyInformation()
-    return view.SMProxy.GetProperty(name).GetElement(0)
+def server_value(name, of=None):
+    """An information property of a view (default: `view`): what its server object holds."""
+    proxy = (of or view).SMProxy
+    proxy.UpdatePropertyInformation()
+    return proxy.GetProperty(name).GetElement(0)
 
 
 def screenshot(name, transparent=0):
@@ -253,3 +255,20 @@ else:
     check_against_tool("MLAA sky box", skybox_mlaa, skybox_path, skybox_plain, [])
     t.check(not warnings, "one rank: no warning about the sky box")
 view.GetClientSideObject().RemoveObserver(observer)
+
+# Views of other classes whose proxies are built on RenderView's (ParaView's Eye-Dome Lighting,
+# orthographic-slice and multi-slice views) inherit the properties; on them the properties do
+# nothing, and no error is reported (CTest fails the test on "ERR|").
+for name in ("RenderViewWithEDL", "OrthographicSliceView", "MultiSlice"):
+    other = CreateView(name)
+    other.ViewSize = [100, 80]
+    other.AntialiasingMethod = "MLAA"
+    other.AntialiasingKeepAlpha = 1
+    other.MLAAThreshold = 0.2
+    Show(sphere, other)
+    Render(other)
+    t.check(other.GetClientSideObject().GetClassName() != "vtkMLAARenderView" and
+            server_value("AntialiasingKeepAlphaInfo", other) == 0,
+            "%s (%s): the properties are there and inert" % (
+                name, other.GetClientSideObject().GetClassName()))
+    Delete(other)
