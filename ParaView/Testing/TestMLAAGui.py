@@ -6,11 +6,11 @@
 
 with MLAA_GUI_OUTPUT_DIR (where the screenshots go) and MLAA_TOOL (the main project's mlaa
 tool, the reference) in the environment; CTest gives the GUI a settings file without the
-welcome dialog. The plugin, loaded at start-up through PV_PLUGIN_PATH, gives the GUI's own session the
-antialiasing properties in its ordinary render view (the one the GUI opens at start-up) and the
-filters: with AntialiasingMethod MLAA, the view antialiases its screenshots (edge pixels change,
-flat regions do not, and the image equals the mlaa tool's on the screenshot with "None or FXAA"
-within 2/255), and MLAAAntialiasing runs.
+welcome dialog. The plugin, loaded at start-up through PV_PLUGIN_PATH, gives the GUI's own
+session the antialiasing properties in its ordinary render view (the one the GUI opens at
+start-up) and the filters: with AntialiasingMethod MLAA, the view antialiases its screenshots
+(edge pixels change, flat regions do not, and the image equals the mlaa tool's on the screenshot
+with "None or FXAA" within 2/255), and MLAAAntialiasing runs.
 
 The GUI keeps running after a start-up script, so this one ends the process itself with its
 exit status (0: passed) after writing what it checked to result.txt in the output directory."""
