@@ -2,14 +2,15 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The plugin in the ParaView GUI: run as the GUI's start-up script,
 
-    paraview --plugin-search-paths=DIR --plugins=MLAA --script=TestMLAAGui.py
+    PV_PLUGIN_PATH=DIR paraview --script=TestMLAAGui.py
 
 with MLAA_GUI_OUTPUT_DIR (where the screenshots go) and MLAA_TOOL (the main project's mlaa
 tool, the reference) in the environment; CTest gives the GUI a settings file without the
-welcome dialog. The plugin loaded by the command line gives the GUI's own session the MLAA
-render view and the filters: the view, placed in the GUI's layout like one the user opens,
-antialiases its screenshots (edge pixels change, flat regions do not, and the image equals the
-mlaa tool's on the screenshot with UseMLAA off within 2/255), and MLAAAntialiasing runs.
+welcome dialog. The plugin, loaded at start-up through PV_PLUGIN_PATH, gives the GUI's own
+session the antialiasing properties in its ordinary render view (the one the GUI opens at
+start-up) and the filters: with AntialiasingMethod MLAA, the view antialiases its screenshots
+(edge pixels change, flat regions do not, and the image equals the mlaa tool's on the screenshot
+with "None or FXAA" within 2/255), and MLAAAntialiasing runs.
 
 The GUI keeps running after a start-up script, so this one ends the process itself with its
 exit status (0: passed) after writing what it checked to result.txt in the output directory."""
@@ -42,16 +43,18 @@ def main():
     from paraview import simple
     import mlaa_pvtest
 
-    view = simple.CreateView("MLAARenderView")
-    check(view.GetXMLName() == "MLAARenderView" and view.UseMLAA == 1,
-          "the GUI's session has the MLAA render view, MLAA on")
-    # Into the GUI's layout, in place of the default render view, as a user would open it.
-    for other in list(simple.GetViews()):
-        if other is not view:
-            simple.Delete(other)
-    layouts = simple.GetLayouts()
-    layout = list(layouts.values())[0] if layouts else simple.CreateLayout("MLAA")
-    simple.AssignViewToLayout(view=view, layout=layout, hint=0)
+    # The render view the GUI opened at start-up, after loading the plugin: the ordinary
+    # RenderView, with the plugin's antialiasing properties.
+    view = simple.GetActiveView()
+    check(view is not None and view.GetXMLName() == "RenderView" and
+          view.GetProperty("AntialiasingMethod") is not None and
+          view.AntialiasingMethod == "None or FXAA",
+          "the GUI's own render view has AntialiasingMethod, None or FXAA by default")
+    labels = view.GetProperty("AntialiasingMethod").Available
+    check(labels == ["None or FXAA", "MLAA",
+                     "DLAA (Andreev 2011, directionally localized antialiasing)"],
+          "the method's labels in the GUI: %s" % labels)
+    view.AntialiasingMethod = "MLAA"
     # The GUI's settings turn FXAA on in every render view (UseFXAA is 1 here): the view holds
     # it off while MLAA is on, so the MLAA screenshot is taken as the settings leave it; the
     # screenshot with MLAA off, the reference's input, must be the plain render.
@@ -68,7 +71,7 @@ def main():
     # Screenshots at the view's own size (at another size ParaView renders again or resamples).
     size = list(view.ViewSize)
     simple.SaveScreenshot(mlaa_png, view, ImageResolution=size)
-    view.UseMLAA = 0
+    view.AntialiasingMethod = "None or FXAA"
     view.UseFXAA = 0
     simple.Render(view)
     simple.SaveScreenshot(plain_png, view, ImageResolution=size)

@@ -1,10 +1,11 @@
 # SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
 # SPDX-License-Identifier: BSD-3-Clause
-"""The properties of the MLAAAntialiasing filter, the MLAA render view and the DLAAAntialiasing
-filter: their defaults are vtkMLAAOptions's and vtkDLAAOptions's own (read back from the server
-objects through the options proxies' information properties), and QualityPreset replaces the
-quality settings while it is chosen, whatever order the properties are set in, and gives them
-back under Custom."""
+"""The properties of the MLAAAntialiasing filter, the ordinary render view (which the plugin
+extends), the older MLAA render view and the DLAAAntialiasing filter: their defaults are
+vtkMLAAOptions's and vtkDLAAOptions's own (read back from the server objects through the options
+proxies' information properties), and QualityPreset replaces the quality settings while it is
+chosen, whatever order the properties are set in, and gives them back under Custom. A state file
+keeps the render view's antialiasing."""
 
 import mlaa_pvtest as t
 
@@ -46,16 +47,19 @@ def close(a, b):
 image = Wavelet()
 mlaa = MLAAAntialiasing(Input=image)
 view = CreateView("MLAARenderView")
+render_view = CreateView("RenderView")
 # The options proxy of each is the one its exposed properties belong to.
 for label, proxy, options, prefix in (
         ("filter", mlaa, mlaa.GetProperty("Threshold").SMProperty.GetParent(), ""),
-        ("view", view, view.GetProperty("MLAAThreshold").SMProperty.GetParent(), "MLAA")):
+        ("render view", render_view,
+         render_view.GetProperty("MLAAThreshold").SMProperty.GetParent(), "MLAA"),
+        ("MLAA view", view, view.GetProperty("MLAAThreshold").SMProperty.GetParent(), "MLAA")):
     defaults = property_values(options)
     in_effect = effective(options)
     t.check(all(close(defaults[n], in_effect[n]) for n in settings),
             "%s: the properties' defaults are vtkMLAAOptions's (%s)" % (label, in_effect))
-    t.check(proxy.GetPropertyValue(prefix + "QualityPreset") == "Custom", "%s: QualityPreset is Custom"
-            % label)
+    t.check(proxy.GetPropertyValue(prefix + "QualityPreset") == "Custom",
+            "%s: QualityPreset is Custom" % label)
 
     # A preset and a setting set together, the setting first and then the other way round.
     for order in ("setting first", "preset first"):
@@ -118,3 +122,31 @@ dlaa_options.UpdatePropertyInformation()
 t.check(close(dlaa_options.GetProperty("LambdaInfo").GetElement(0), 7.5) and
         dlaa_options.GetProperty("LumaFunctionInfo").GetElement(0) == 1,
         "DLAA filter: the properties reach vtkImageDLAA's options")
+
+# The GUI's name for the method: the DLAA filter's help (its tooltip in the Filters menu) names
+# it in full once, since "DLAA" most often means a learned method of the same initials now.
+short_help = dlaa.SMProxy.GetDocumentation().GetShortHelp()
+t.check("DLAA (Andreev 2011, directionally localized antialiasing)" in short_help,
+        "DLAA filter: its short help names the method in full (%r)" % short_help)
+
+# A state file keeps the render view's antialiasing: saved, the session reset, loaded back.
+import os  # noqa: E402
+state = os.path.join(args.output_dir, "render-view.pvsm")
+dlaa_label = "DLAA (Andreev 2011, directionally localized antialiasing)"
+render_view.AntialiasingMethod = dlaa_label
+render_view.DLAALambda = 6.5
+render_view.MLAALineLengths = "RecursiveDoubling"
+SetActiveView(render_view)
+SaveState(state)
+ResetSession()
+t.check(not [v for v in GetViews() if v.GetXMLName() == "RenderView" and
+             v.GetProperty("AntialiasingMethod") is not None and v.DLAALambda == 6.5],
+        "after ResetSession no view has the saved settings")
+LoadState(state)
+restored = [v for v in GetViews() if v.GetXMLName() == "RenderView" and v.DLAALambda == 6.5]
+t.check(len(restored) == 1 and restored[0].AntialiasingMethod == dlaa_label and
+        restored[0].MLAALineLengths == "RecursiveDoubling",
+        "the state file restores AntialiasingMethod, DLAALambda and MLAALineLengths")
+restored[0].SMProxy.UpdatePropertyInformation()
+t.check(restored[0].SMProxy.GetProperty("MLAALineLengthsInfo").GetElement(0) == 2,
+        "... and they reach the restored view's object")

@@ -4,6 +4,7 @@
 
 #include "vtkDLAAOptions.h"
 #include "vtkImageProcessingPass.h"
+#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
@@ -23,20 +24,23 @@
 #include "vtkSynchronizedRenderers.h"
 #include "vtkRenderWindow.h"
 
+#include <algorithm>
+
 vtkStandardNewMacro(vtkMLAARenderView);
 
 namespace
 {
 // Under IceT, and on a pvserver rendering for its client, the image-processing pass reads the
-// image over a transparent black background; ParaView puts the background colour under it only
-// when the image is shown (after compositing, or on the client). The
+// image over a transparent black background; ParaView puts the background under it only when
+// the image is shown (after compositing, or on the client). The
 // antialiasing would then find (and blend) edges against black rather than against the
 // background the user sees: the measured DLAA result on two ranks differed from one rank's by
 // up to 34/255 at the silhouettes. This stage renders its delegate (the camera and IceT passes)
-// and then draws the renderer's background colour under that image ("under" blending: the
-// destination keeps its colour where it is opaque), so the antialiasing pass reads the image
-// that is shown. Solid backgrounds only (vtkMLAARenderView::GetSolidBackground): a gradient,
-// texture or sky box is left as it is.
+// and then draws the view's background under that image ("under" blending: the destination
+// keeps its colour where it is opaque), so the antialiasing pass reads the image that is shown.
+// The background is a vertical gradient from Bottom (the first row) to Top (the last), as
+// vtkOpenGLRenderer clears a gradient background; a single colour has Bottom equal to Top.
+// Textures and sky boxes are not drawn here (vtkMLAARenderView::GetDrawableBackground).
 class vtkMLAABackgroundUnderPass : public vtkRenderPass
 {
 public:
@@ -44,7 +48,8 @@ public:
   vtkTypeMacro(vtkMLAABackgroundUnderPass, vtkRenderPass);
 
   vtkSmartPointer<vtkRenderPass> Delegate;
-  double Background[3] = { 0.0, 0.0, 0.0 }; // the colour to put under the image
+  double Bottom[3] = { 0.0, 0.0, 0.0 }; // the background's colour at the bottom of the image
+  double Top[3] = { 0.0, 0.0, 0.0 };    // and at the top
 
   void Render(const vtkRenderState* s) override
   {
@@ -66,9 +71,10 @@ public:
       this->Quad = new vtkOpenGLQuadHelper(window, nullptr,
         "//VTK::System::Dec\n"
         "//VTK::Output::Dec\n"
-        "in vec2 texCoord; // unused, but the quad helper binds it\n"
-        "uniform vec3 background;\n"
-        "void main() { gl_FragData[0] = vec4(background, step(-1.0, texCoord.x)); }\n",
+        "in vec2 texCoord;\n"
+        "uniform vec3 bottom;\n"
+        "uniform vec3 top;\n"
+        "void main() { gl_FragData[0] = vec4(mix(bottom, top, texCoord.y), 1.0); }\n",
         "");
     }
     else
@@ -80,9 +86,12 @@ public:
       vtkErrorMacro("Could not build the background shader.");
       return;
     }
-    const float background[3] = { static_cast<float>(this->Background[0]),
-      static_cast<float>(this->Background[1]), static_cast<float>(this->Background[2]) };
-    this->Quad->Program->SetUniform3f("background", background);
+    const float bottom[3] = { static_cast<float>(this->Bottom[0]),
+      static_cast<float>(this->Bottom[1]), static_cast<float>(this->Bottom[2]) };
+    const float top[3] = { static_cast<float>(this->Top[0]), static_cast<float>(this->Top[1]),
+      static_cast<float>(this->Top[2]) };
+    this->Quad->Program->SetUniform3f("bottom", bottom);
+    this->Quad->Program->SetUniform3f("top", top);
     vtkOpenGLState* state = window->GetState();
     vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
     vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
@@ -90,24 +99,24 @@ public:
     vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
     vtkOpenGLState::ScopedglViewport viewportSaver(state);
     vtkOpenGLState::ScopedglScissor scissorSaver(state);
-    // The whole of the renderer's viewport, set here: the camera pass that ParaView puts before
-    // IceT restores, on its way out, whatever viewport was current when it started, which need
-    // not be the renderer's (a square 300 x 300 in a 400 x 300 view was measured). The quad then
-    // covered part of the image only, the antialiasing read transparent black beyond it, and
-    // DLAA on two ranks differed from one rank by up to 39/255 at the edges near that border.
-    // (When the antialiasing pass renders its delegate into a framebuffer object of its own,
-    // that object is the target, whole.)
-    int size[2] = { 0, 0 }, origin[2] = { 0, 0 };
-    if (s->GetFrameBuffer())
+    // The whole image: IceT leaves a viewport of its own (measured: the background went under
+    // the first 300 columns of a 400 x 300 view only, which made an edge of the 301st column).
+    // The image is the renderer's viewport in the window, or the whole of a framebuffer object
+    // when the antialiasing pass renders its delegate into one.
+    int x = 0, y = 0, width = 0, height = 0;
+    if (vtkOpenGLFramebufferObject::SafeDownCast(s->GetFrameBuffer()))
     {
+      int size[2];
       s->GetWindowSize(size);
+      width = size[0];
+      height = size[1];
     }
     else
     {
-      renderer->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
+      renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
     }
-    state->vtkglViewport(origin[0], origin[1], size[0], size[1]);
-    state->vtkglScissor(origin[0], origin[1], size[0], size[1]);
+    state->vtkglViewport(x, y, width, height);
+    state->vtkglScissor(x, y, width, height);
     state->vtkglEnable(GL_BLEND);
     state->vtkglBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
     state->vtkglDisable(GL_DEPTH_TEST);
@@ -138,7 +147,6 @@ private:
 };
 vtkStandardNewMacro(vtkMLAABackgroundUnderPass);
 
-
 // Whether this process renders the view over transparent black, for the background to be put
 // under the image later: the server processes' synchronizers do so (FixBackground) under IceT
 // (several ranks) and, in client-server, for the client (which blends the image it receives
@@ -163,8 +171,9 @@ bool RendersOverFixedBackground(vtkPVSynchronizedRenderer* renderers)
 
 // What the view puts into the image-processing slot: the MLAA or DLAA pass, whose delegate is
 // the slot's delegate (the camera pass that ParaView or IceT gives it), with the background
-// put under the image first where the process renders over transparent black (see
-// vtkMLAABackgroundUnderPass).
+// put under the image first where the process renders over transparent black (IceT, or a
+// pvserver rendering for its client: see vtkMLAABackgroundUnderPass); with a background that
+// cannot be put there, the image is left as it is.
 // The wiring is made at every render, since ParaView sets the slot's delegate again whenever
 // the slot is set (after every selection, for one).
 class vtkMLAARenderView::vtkSlotPass : public vtkImageProcessingPass
@@ -183,8 +192,16 @@ public:
     {
       return;
     }
-    if (RendersOverFixedBackground(this->View->SynchronizedRenderers) &&
-      this->View->GetSolidBackground(this->Under->Background))
+    const bool backgroundUnder = RendersOverFixedBackground(this->View->SynchronizedRenderers);
+    if (backgroundUnder &&
+      !this->View->GetDrawableBackground(this->Under->Bottom, this->Under->Top))
+    {
+      this->View->WarnUndrawableBackground();
+      this->DelegatePass->Render(s);
+      this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+      return;
+    }
+    if (backgroundUnder)
     {
       this->Under->Delegate = this->DelegatePass;
       this->Antialiasing->SetDelegatePass(this->Under);
@@ -243,6 +260,59 @@ vtkMLAARenderView::~vtkMLAARenderView()
 }
 
 //------------------------------------------------------------------------------
+void vtkMLAARenderView::SetAntialiasingMethod(int method)
+{
+  if (method < FXAA_OR_NONE || method > DLAA)
+  {
+    vtkErrorMacro("SetAntialiasingMethod: " << method
+                                            << " is not FXAA_OR_NONE (0), MLAA (1) or DLAA (2).");
+    return;
+  }
+  if (method != this->AntialiasingMethod)
+  {
+    this->AntialiasingMethod = method;
+    this->Modified();
+    this->UpdatePasses();
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkMLAARenderView::GetEffectiveAntialiasingMethod()
+{
+  if (this->AntialiasingMethod != FXAA_OR_NONE)
+  {
+    return this->AntialiasingMethod;
+  }
+  return this->UseMLAA ? MLAA : (this->UseDLAA ? DLAA : FXAA_OR_NONE);
+}
+
+//------------------------------------------------------------------------------
+void vtkMLAARenderView::SetAntialiasingKeepAlpha(bool keep)
+{
+  this->MLAAPass->SetKeepAlpha(keep);
+  this->DLAAPass->SetKeepAlpha(keep);
+}
+
+//------------------------------------------------------------------------------
+bool vtkMLAARenderView::GetAntialiasingKeepAlpha()
+{
+  // Both passes are only set together, here.
+  return this->MLAAPass->GetKeepAlpha() && this->DLAAPass->GetKeepAlpha();
+}
+
+//------------------------------------------------------------------------------
+void vtkMLAARenderView::SetMLAALineLengths(int method)
+{
+  this->MLAAPass->SetLineLengths(method);
+}
+
+//------------------------------------------------------------------------------
+int vtkMLAARenderView::GetMLAALineLengths()
+{
+  return this->MLAAPass->GetLineLengths();
+}
+
+//------------------------------------------------------------------------------
 void vtkMLAARenderView::SetUseMLAA(bool use)
 {
   if (use != this->UseMLAA)
@@ -284,19 +354,43 @@ void vtkMLAARenderView::SetBackgroundColorMode(int mode)
 }
 
 //------------------------------------------------------------------------------
-bool vtkMLAARenderView::GetSolidBackground(double colour[3])
+bool vtkMLAARenderView::GetDrawableBackground(double bottom[3], double top[3])
 {
   // The background as vtkPVRenderView::UpdateBackground chooses it (the renderer's own colour is
   // black while IceT composites).
   int mode = this->BackgroundMode;
-  this->GetBackground(colour);
+  this->GetBackground(bottom);
+  this->GetBackground2(top);
   if (this->GetUseRenderViewSettingsForBackground())
   {
     vtkPVRenderViewSettings* settings = vtkPVRenderViewSettings::GetInstance();
     mode = settings->GetBackgroundColorMode();
-    settings->GetBackgroundColor(colour);
+    settings->GetBackgroundColor(bottom);
+    settings->GetBackground2Color(top);
   }
-  return mode == vtkPVRenderView::DEFAULT;
+  if (mode == vtkPVRenderView::DEFAULT)
+  {
+    std::copy(bottom, bottom + 3, top);
+    return true;
+  }
+  return mode == vtkPVRenderView::GRADIENT;
+}
+
+//------------------------------------------------------------------------------
+void vtkMLAARenderView::WarnUndrawableBackground()
+{
+  int mode = this->GetUseRenderViewSettingsForBackground()
+    ? vtkPVRenderViewSettings::GetInstance()->GetBackgroundColorMode()
+    : this->BackgroundMode;
+  if (mode != this->WarnedBackgroundMode)
+  {
+    this->WarnedBackgroundMode = mode;
+    vtkWarningMacro("MLAA and DLAA are not applied: under parallel compositing (IceT) or on "
+                    "a pvserver, the view cannot put a textured or sky-box background under "
+                    "the rendered image, and antialiasing against black would blend wrong colours into the "
+                    "silhouettes. Use a single-colour or gradient background, or "
+                    "AntialiasingMethod 'None or FXAA'.");
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -334,9 +428,10 @@ void vtkMLAARenderView::SetUseToneMapping(bool use)
 //------------------------------------------------------------------------------
 void vtkMLAARenderView::UpdatePasses()
 {
-  vtkImageProcessingPass* pass = this->UseMLAA
+  const int method = this->GetEffectiveAntialiasingMethod();
+  vtkImageProcessingPass* pass = method == MLAA
     ? static_cast<vtkImageProcessingPass*>(this->MLAAPass)
-    : (this->UseDLAA ? static_cast<vtkImageProcessingPass*>(this->DLAAPass) : nullptr);
+    : (method == DLAA ? static_cast<vtkImageProcessingPass*>(this->DLAAPass) : nullptr);
   if (pass)
   {
     this->SlotPass->Antialiasing = pass;
@@ -360,6 +455,7 @@ void vtkMLAARenderView::UpdatePasses()
 void vtkMLAARenderView::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "AntialiasingMethod: " << this->AntialiasingMethod << "\n";
   os << indent << "UseMLAA: " << (this->UseMLAA ? "On" : "Off") << "\n";
   os << indent << "UseDLAA: " << (this->UseDLAA ? "On" : "Off") << "\n";
   os << indent << "RequestedFXAA: " << (this->RequestedFXAA ? "On" : "Off") << "\n";

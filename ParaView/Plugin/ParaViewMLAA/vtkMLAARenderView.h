@@ -6,9 +6,14 @@
  *          (vtkOpenGLMLAAPass) or DLAA (vtkOpenGLDLAAPass).
  *
  * vtkMLAARenderView is a vtkPVRenderView (every RenderView property still applies) that, while
- * UseMLAA is on, installs a vtkOpenGLMLAAPass as the image-processing pass of its synchronized
- * renderers; while UseMLAA is off and UseDLAA on, a vtkOpenGLDLAAPass (MLAA wins when both are
- * on). ParaView runs that pass on the final image: in parallel (IceT), after the ranks'
+ * AntialiasingMethod is MLAA, installs a vtkOpenGLMLAAPass as the image-processing pass of its
+ * synchronized renderers; while it is DLAA, a vtkOpenGLDLAAPass. The plugin makes it the class
+ * of ParaView's ordinary render view (an object-factory override of vtkPVRenderView), where
+ * AntialiasingMethod is FXAA_OR_NONE by default, so a view antialiases only when asked to.
+ * The older properties UseMLAA and UseDLAA (the plugin's separate "MLAARenderView", kept for
+ * scripts and state files that use it) choose the method while AntialiasingMethod is
+ * FXAA_OR_NONE: MLAA if UseMLAA is on, else DLAA if UseDLAA is on. ParaView runs that pass on
+ * the final image: in parallel (IceT), after the ranks'
  * images have been composited, on the process that shows or saves the image, so one rank and
  * several give the same result; in serial and built-in sessions, around the whole render. This
  * is the slot vtkPVRenderViewWithEDL and ParaView's tone mapping use.
@@ -21,6 +26,13 @@
  *   remembered and applies again when both are off), so the two never stack;
  * - tone mapping uses the same slot: while MLAA or DLAA is on, UseToneMapping is remembered but
  *   has no effect; turning them off brings tone mapping back if it was asked for.
+ *
+ * Backgrounds under IceT: the pass sees the composited image over transparent black, so the view
+ * draws the background under it first: a single colour and a gradient (Background at the bottom,
+ * Background2 at the top, as vtkRenderer draws it) are handled. A textured background or a sky
+ * box cannot be redrawn there: the view then leaves the image without MLAA or DLAA and warns
+ * once (antialiasing against black would blend wrong colours into every silhouette). In serial
+ * and built-in sessions the pass reads the rendered image with its background, whatever it is.
  *
  * The settings are those of the vtkMLAAOptions given to SetMLAAOptions (the MLAAOptions proxy's
  * vtkPVMLAAOptions in ParaView) and of the vtkDLAAOptions given to SetDLAAOptions, shared with
@@ -48,9 +60,54 @@ public:
   vtkTypeMacro(vtkMLAARenderView, vtkPVRenderView);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /**
+   * The values of AntialiasingMethod.
+   */
+  enum AntialiasingMethods
+  {
+    FXAA_OR_NONE = 0, ///< the view's own antialiasing: FXAA while UseFXAA is on, else none
+    MLAA = 1,         ///< vtkOpenGLMLAAPass on the final image (FXAA held off)
+    DLAA = 2          ///< vtkOpenGLDLAAPass on the final image (FXAA held off)
+  };
+
   ///@{
   /**
-   * Whether the final image is antialiased by MLAA. Default on.
+   * The antialiasing of the final image: FXAA_OR_NONE (default), MLAA or DLAA (Andreev 2011,
+   * directionally localized antialiasing). Other values are refused with an error.
+   */
+  void SetAntialiasingMethod(int method);
+  vtkGetMacro(AntialiasingMethod, int);
+  ///@}
+
+  /**
+   * The method in effect: AntialiasingMethod, or, while it is FXAA_OR_NONE, the one UseMLAA and
+   * UseDLAA choose.
+   */
+  int GetEffectiveAntialiasingMethod();
+
+  ///@{
+  /**
+   * Whether the alpha channel of the image is part of the antialiased result (both passes'
+   * vtkOpenGLAntialiasingPass::KeepAlpha). Default off.
+   */
+  void SetAntialiasingKeepAlpha(bool keep);
+  bool GetAntialiasingKeepAlpha(); // whether both passes keep alpha
+  ///@}
+
+  ///@{
+  /**
+   * How the MLAA pass finds line lengths (vtkOpenGLMLAAPass::SetLineLengths: AUTOMATIC,
+   * SEARCH_LOOP or RECURSIVE_DOUBLING). Default AUTOMATIC. The image is the same with each.
+   */
+  void SetMLAALineLengths(int method);
+  int GetMLAALineLengths();
+  ///@}
+
+  ///@{
+  /**
+   * The older switch of the separate MLAA view: while AntialiasingMethod is FXAA_OR_NONE, MLAA
+   * antialiases the final image when this is on. Default off (the MLAARenderView proxy turns it
+   * on).
    */
   void SetUseMLAA(bool use);
   vtkGetMacro(UseMLAA, bool);
@@ -72,7 +129,8 @@ public:
 
   ///@{
   /**
-   * Whether the final image is antialiased by DLAA while UseMLAA is off. Default off.
+   * The older switch for DLAA: while AntialiasingMethod is FXAA_OR_NONE and UseMLAA is off, DLAA
+   * antialiases the final image when this is on. Default off.
    */
   void SetUseDLAA(bool use);
   vtkGetMacro(UseDLAA, bool);
@@ -100,7 +158,7 @@ public:
   void SetUseToneMapping(bool use);
 
   /**
-   * Remembered (vtkPVRenderView has no getter) for GetSolidBackground.
+   * Remembered (vtkPVRenderView has no getter) for GetDrawableBackground.
    */
   void SetBackgroundColorMode(int mode) override;
 
@@ -115,9 +173,12 @@ private:
   // Puts the MLAA or DLAA pass into the synchronized renderers' image-processing slot, or gives
   // the slot back to tone mapping (or to nothing), and sets FXAA accordingly.
   void UpdatePasses();
-  // The view's background colour, as vtkPVRenderView::UpdateBackground chooses it; false when
-  // the background is not one colour (gradient, texture, sky box).
-  bool GetSolidBackground(double colour[3]);
+  // The view's background as vtkPVRenderView::UpdateBackground chooses it: its bottom and top
+  // colours (equal unless a gradient) and true, or false when it is a texture or a sky box,
+  // which cannot be drawn under the composited image.
+  bool GetDrawableBackground(double bottom[3], double top[3]);
+  // Warns, once per background mode, that the view does not antialias under IceT with it.
+  void WarnUndrawableBackground();
   // Whether the image-processing slot holds the view's pass (MLAA or DLAA).
   bool UsesOwnPass();
 
@@ -125,8 +186,10 @@ private:
   vtkNew<vtkSlotPass> SlotPass;
   vtkNew<vtkOpenGLMLAAPass> MLAAPass;
   vtkNew<vtkOpenGLDLAAPass> DLAAPass;
-  bool UseMLAA = true;
+  int AntialiasingMethod = FXAA_OR_NONE;
+  bool UseMLAA = false;
   bool UseDLAA = false;
+  int WarnedBackgroundMode = -1;
   int BackgroundMode = vtkPVRenderView::DEFAULT;
   bool RequestedFXAA = false;
   bool RequestedToneMapping = false;

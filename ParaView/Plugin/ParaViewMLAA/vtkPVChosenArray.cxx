@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkPVChosenArray.h"
 
+#include "vtkImageAntialiasingAlgorithm.h"
+
 #include "vtkAlgorithm.h"
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
@@ -87,4 +89,18 @@ int vtkPVChosenArray::RequestData(vtkAlgorithm* algorithm, vtkInformationVector*
     inputVector, inputVector + algorithm->GetNumberOfInputPorts());
   inputs[0] = substituteVector;
   return requestData(inputs.data());
+}
+
+//------------------------------------------------------------------------------
+void vtkPVChosenArray::ApplyValueRange(
+  vtkImageAntialiasingAlgorithm* filter, bool use, const double range[2])
+{
+  if (use)
+  {
+    filter->SetValueRange(range);
+  }
+  else
+  {
+    filter->SetValueRangeToTypeDefault();
+  }
 }

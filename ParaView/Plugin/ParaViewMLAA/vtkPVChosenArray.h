@@ -2,13 +2,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // What vtkPVImageMLAA and vtkPVImageDLAA share: running an antialiasing filter of the main
 // project, which reads the active point scalars, on the point array chosen with
-// SetInputArrayToProcess(0, ...). Internal to the plugin.
+// SetInputArrayToProcess(0, ...), and the ValueRange properties. Internal to the plugin.
 #ifndef vtkPVChosenArray_h
 #define vtkPVChosenArray_h
 
 #include <functional>
 
 class vtkAlgorithm;
+class vtkImageAntialiasingAlgorithm;
 class vtkInformation;
 class vtkInformationVector;
 
@@ -27,6 +28,10 @@ void AnnounceScalars(
 int RequestData(vtkAlgorithm* algorithm, vtkInformationVector** inputVector,
   vtkInformationVector* outputVector,
   const std::function<int(vtkInformationVector**)>& requestData);
+
+// The UseValueRange and ValueRange properties, which ParaView sets in either order: the filter's
+// ValueRange becomes `range` while `use` is on and its type's default range otherwise.
+void ApplyValueRange(vtkImageAntialiasingAlgorithm* filter, bool use, const double range[2]);
 }
 
 #endif

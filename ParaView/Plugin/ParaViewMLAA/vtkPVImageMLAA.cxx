@@ -36,7 +36,25 @@ int vtkPVImageMLAA::RequestData(
 }
 
 //------------------------------------------------------------------------------
+void vtkPVImageMLAA::SetUseValueRange(bool use)
+{
+  this->UseValueRange = use;
+  vtkPVChosenArray::ApplyValueRange(this, this->UseValueRange, this->ValueRangeSetting);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVImageMLAA::SetValueRangeSetting(double lo, double hi)
+{
+  this->ValueRangeSetting[0] = lo;
+  this->ValueRangeSetting[1] = hi;
+  vtkPVChosenArray::ApplyValueRange(this, this->UseValueRange, this->ValueRangeSetting);
+}
+
+//------------------------------------------------------------------------------
 void vtkPVImageMLAA::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "UseValueRange: " << (this->UseValueRange ? "On" : "Off") << "\n";
+  os << indent << "ValueRangeSetting: " << this->ValueRangeSetting[0] << " "
+     << this->ValueRangeSetting[1] << "\n";
 }

@@ -12,6 +12,9 @@
  * array's type and components as the output's in RequestInformation. Everything else, options,
  * padding of the requested extent and checks included, is vtkImageMLAA's.
  *
+ * The value range (vtkImageAntialiasingAlgorithm::SetValueRange) is given as two settings that
+ * ParaView may push in either order: UseValueRange and ValueRangeSetting.
+ *
  * @sa vtkImageMLAA vtkPVMLAAOptions
  */
 
@@ -28,6 +31,19 @@ public:
   vtkTypeMacro(vtkPVImageMLAA, vtkImageMLAA);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  ///@{
+  /**
+   * While UseValueRange is on (default off), the filter normalises values by ValueRangeSetting
+   * (default [0, 1]) instead of its scalar type's default range (SetValueRange,
+   * SetValueRangeToTypeDefault). A range that is not finite with lo < hi is reported as an
+   * error when the filter runs.
+   */
+  void SetUseValueRange(bool use);
+  vtkGetMacro(UseValueRange, bool);
+  void SetValueRangeSetting(double lo, double hi);
+  vtkGetVector2Macro(ValueRangeSetting, double);
+  ///@}
+
 protected:
   vtkPVImageMLAA() = default;
   ~vtkPVImageMLAA() override = default;
@@ -38,6 +54,9 @@ protected:
     vtkInformationVector* outputVector) override;
 
 private:
+  bool UseValueRange = false;
+  double ValueRangeSetting[2] = { 0.0, 1.0 };
+
   vtkPVImageMLAA(const vtkPVImageMLAA&) = delete;
   void operator=(const vtkPVImageMLAA&) = delete;
 };
