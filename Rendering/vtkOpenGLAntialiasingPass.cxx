@@ -2,19 +2,25 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkOpenGLAntialiasingPass.h"
 
+#include "vtkDualDepthPeelingPass.h"
 #include "vtkOpenGLAntialiasingPassInternals.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
+#include "vtkOrderIndependentTranslucentPass.h"
+#include "vtkProp.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
+#include "vtkTranslucentPass.h"
+#include "vtkVersionMacros.h"
 
 #include "vtk_glew.h" // For GL enums only: every call goes through VTK's classes
 
@@ -30,6 +36,15 @@ vtkOpenGLAntialiasingPass::~vtkOpenGLAntialiasingPass()
   {
     vtkErrorMacro("Graphics resources should have been released by "
                   "ReleaseGraphicsResources().");
+  }
+  // The translucent steps free their GL objects in ReleaseGraphicsResources (or report them).
+  for (vtkRenderPass* pass : { static_cast<vtkRenderPass*>(this->TranslucencyPass),
+         static_cast<vtkRenderPass*>(this->PeelingPass) })
+  {
+    if (pass)
+    {
+      pass->Delete();
+    }
   }
 }
 
@@ -104,6 +119,103 @@ void vtkOpenGLAntialiasingPass::RenderDelegateToTextures(
 
   this->DelegatePass->Render(&delegateState);
   this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
+}
+
+//------------------------------------------------------------------------------
+vtkOpenGLAntialiasingPass::StepsChange vtkOpenGLAntialiasingPass::UseRendererTranslucency(
+  const vtkRenderState* s, vtkRenderStepsPass* steps)
+{
+  // What vtkOpenGLRenderer does without a pass (UpdateGeometry and
+  // DeviceRenderTranslucentPolygonalGeometry), decided from its settings at this render.
+  StepsChange change;
+  vtkRenderPass* translucent = steps->GetTranslucentPass();
+  auto* renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  if (!renderer || !vtkTranslucentPass::SafeDownCast(translucent))
+  {
+    return change; // no translucent step, or the user's own: theirs to decide
+  }
+  bool hasTranslucent = false;
+  for (int i = 0; !hasTranslucent && i < s->GetPropArrayCount(); ++i)
+  {
+    hasTranslucent = s->GetPropArray()[i]->HasTranslucentPolygonalGeometry() != 0;
+  }
+  const bool peeling = renderer->GetUseDepthPeeling() != 0;
+  const bool dual = peeling && renderer->IsDualDepthPeelingSupported();
+  // Volumes go into dual depth peeling with UseDepthPeelingForVolumes (the renderer then renders
+  // them there, translucent geometry or not); without dual depth peeling they stay in the volume
+  // step, where they are not lost.
+  vtkRenderPass* volumetric = steps->GetVolumetricPass();
+  const bool peelVolumes = dual && renderer->GetUseDepthPeelingForVolumes() && volumetric;
+  if (!hasTranslucent && !peelVolumes)
+  {
+    return change; // the renderer skips the translucent step: so does the plain one
+  }
+
+  vtkRenderPass* wrapper = nullptr;
+  if (!peeling)
+  {
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 5, 0)
+    if (!renderer->GetUseOIT())
+    {
+      return change; // plain blending, as the delegate's step does
+    }
+#endif
+    if (!this->TranslucencyPass)
+    {
+      this->TranslucencyPass = vtkOrderIndependentTranslucentPass::New();
+    }
+    this->TranslucencyPass->SetTranslucentPass(translucent);
+    wrapper = this->TranslucencyPass;
+  }
+  else
+  {
+    if (this->PeelingPass && this->PeelingPass->IsA("vtkDualDepthPeelingPass") != dual)
+    {
+      DeleteObject(this->PeelingPass, renderer->GetRenderWindow()); // the support changed
+    }
+    if (!this->PeelingPass)
+    {
+      this->PeelingPass = dual ? vtkDualDepthPeelingPass::New() : vtkDepthPeelingPass::New();
+    }
+    this->PeelingPass->SetMaximumNumberOfPeels(renderer->GetMaximumNumberOfPeels());
+    this->PeelingPass->SetOcclusionRatio(renderer->GetOcclusionRatio());
+    this->PeelingPass->SetTranslucentPass(translucent);
+    if (peelVolumes)
+    {
+      static_cast<vtkDualDepthPeelingPass*>(this->PeelingPass)->SetVolumetricPass(volumetric);
+      change.Volumetric = volumetric;
+      steps->SetVolumetricPass(nullptr);
+    }
+    wrapper = this->PeelingPass;
+  }
+  change.Steps = steps;
+  change.Translucent = translucent;
+  steps->SetTranslucentPass(wrapper);
+  return change;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLAntialiasingPass::RestoreDelegateSteps(const StepsChange& change)
+{
+  if (!change.Steps)
+  {
+    return;
+  }
+  change.Steps->SetTranslucentPass(change.Translucent);
+  if (change.Volumetric)
+  {
+    change.Steps->SetVolumetricPass(change.Volumetric);
+    static_cast<vtkDualDepthPeelingPass*>(this->PeelingPass)->SetVolumetricPass(nullptr);
+  }
+  // Hold none of the user's passes between renders.
+  if (this->TranslucencyPass)
+  {
+    this->TranslucencyPass->SetTranslucentPass(nullptr);
+  }
+  if (this->PeelingPass)
+  {
+    this->PeelingPass->SetTranslucentPass(nullptr);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -243,9 +355,9 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
   unsigned int targetBinding = 0, targetBuffer = 0;
   ostate->GetCurrentDrawFramebufferState(targetBinding, targetBuffer);
 
-  vtkRenderStepsPass* steps =
-    this->AntialiasOverlays ? nullptr : vtkRenderStepsPass::SafeDownCast(this->DelegatePass);
-  vtkSmartPointer<vtkRenderPass> overlay = steps ? steps->GetOverlayPass() : nullptr;
+  vtkRenderStepsPass* steps = vtkRenderStepsPass::SafeDownCast(this->DelegatePass);
+  vtkSmartPointer<vtkRenderPass> overlay =
+    steps && !this->AntialiasOverlays ? steps->GetOverlayPass() : nullptr;
   bool done = false;
   {
     // Save the state this pass changes; restored at the end of this block.
@@ -266,6 +378,8 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
     {
       steps->SetOverlayPass(nullptr);
     }
+    const StepsChange stepsChange =
+      steps ? this->UseRendererTranslucency(s, steps) : StepsChange();
     if (frame.InPlace)
     {
       this->DelegatePass->Render(s);
@@ -280,6 +394,7 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
       this->RenderDelegateToTextures(s, frame.Width, frame.Height, frame.Composite);
       ostate->PopFramebufferBindings();
     }
+    this->RestoreDelegateSteps(stepsChange);
     if (overlay)
     {
       steps->SetOverlayPass(overlay);
@@ -309,6 +424,8 @@ void vtkOpenGLAntialiasingPass::ReleaseGraphicsResources(vtkWindow* w)
   DeleteObject(this->WorkFramebuffer, w);
   DeleteObject(this->ColorTexture, w);
   DeleteObject(this->DepthTexture, w);
+  DeleteObject(this->TranslucencyPass, w);
+  DeleteObject(this->PeelingPass, w);
 }
 
 //------------------------------------------------------------------------------

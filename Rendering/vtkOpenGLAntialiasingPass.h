@@ -20,6 +20,15 @@
  *   premultiplied "over" blending; its alpha takes part in the antialiasing;
  * - overlays: the overlay step of a vtkRenderStepsPass delegate (text, 2D actors) is drawn after
  *   the antialiasing, untouched, unless AntialiasOverlays is on;
+ * - translucency: a vtkRenderStepsPass delegate whose translucent step is VTK's plain
+ *   vtkTranslucentPass (its default) draws translucent geometry, at each render, the way the
+ *   renderer would without a pass, from its current settings: order-independent translucency
+ *   (vtkOrderIndependentTranslucentPass), or with UseDepthPeeling, dual depth peeling
+ *   (vtkDualDepthPeelingPass, with volumes when UseDepthPeelingForVolumes is on) or, where the
+ *   renderer reports dual depth peeling unsupported, vtkDepthPeelingPass, with the renderer's
+ *   MaximumNumberOfPeels and OcclusionRatio. The delegate's own translucent step does the drawing
+ *   inside them and is put back after each render; a translucent step of any other class (the
+ *   user's own) is left alone, as is any other delegate;
  * - picking: while a vtkHardwareSelector renders, the renderer is drawn without the delegate and
  *   without antialiasing, as vtkOpenGLRenderer does without a pass, so ids are not blended;
  * - KeepAlpha (whether alpha is part of the result), floating-point targets (the copy is floating
@@ -41,9 +50,12 @@
 
 #include <string> // For std::string
 
+class vtkDepthPeelingPass;
 class vtkOpenGLFramebufferObject;
+class vtkOrderIndependentTranslucentPass;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
+class vtkRenderStepsPass;
 class vtkShaderProgram;
 class vtkTextureObject;
 
@@ -176,6 +188,24 @@ private:
   // Copies the viewport of the target framebuffer (binding and colour buffer) into ColorTexture.
   void CopyTargetToColorTexture(
     const Frame& frame, unsigned int targetBinding, unsigned int targetBuffer);
+  // What UseRendererTranslucency changed on a vtkRenderStepsPass delegate, for
+  // RestoreDelegateSteps.
+  struct StepsChange
+  {
+    vtkRenderStepsPass* Steps = nullptr;
+    vtkRenderPass* Translucent = nullptr; // the step wrapped (held by its wrapper meanwhile)
+    vtkRenderPass* Volumetric = nullptr;  // the volume step moved into dual depth peeling
+  };
+  // Gives the delegate's translucent step the translucency the renderer would use without a pass
+  // (see the class description), wrapping the step; returns what it changed.
+  StepsChange UseRendererTranslucency(const vtkRenderState* s, vtkRenderStepsPass* steps);
+  // Puts the delegate's steps back as they were before UseRendererTranslucency.
+  void RestoreDelegateSteps(const StepsChange& change);
+
+  // The translucent steps of UseRendererTranslucency, made when first needed.
+  vtkOrderIndependentTranslucentPass* TranslucencyPass = nullptr;
+  vtkDepthPeelingPass* PeelingPass = nullptr; // a vtkDualDepthPeelingPass where supported
+
   // Renders the delegate into ColorTexture and DepthTexture (cleared to transparent black first
   // when compositing over the target).
   void RenderDelegateToTextures(const vtkRenderState* s, int width, int height, bool composite);
