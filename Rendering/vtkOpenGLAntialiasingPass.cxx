@@ -3,6 +3,7 @@
 #include "vtkOpenGLAntialiasingPass.h"
 
 #include "vtkDualDepthPeelingPass.h"
+#include "vtkObjectFactory.h"
 #include "vtkOpenGLAntialiasingPassInternals.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -22,9 +23,37 @@
 #include "vtkTranslucentPass.h"
 #include "vtkVersionMacros.h"
 
+#include "vtkAntialiasingAlphaFS.h"
+
 #include "vtk_glew.h" // For GL enums only: every call goes through VTK's classes
 
 using namespace vtkOpenGLAntialiasingPassInternals;
+
+//------------------------------------------------------------------------------
+class vtkOpenGLAntialiasingPass::CompositedTranslucency : public vtkRenderPass
+{
+public:
+  static CompositedTranslucency* New();
+  vtkTypeMacro(CompositedTranslucency, vtkRenderPass);
+
+  vtkOpenGLAntialiasingPass* Owner = nullptr; // not held: the owner holds this
+  vtkRenderPass* Translucent = nullptr;       // the delegate's step, during a render
+
+  void Render(const vtkRenderState* s) override
+  {
+    this->Owner->RenderCompositedTranslucency(s, this->Translucent);
+    this->NumberOfRenderedProps = this->Owner->TranslucencyPass->GetNumberOfRenderedProps();
+  }
+
+protected:
+  CompositedTranslucency() = default;
+  ~CompositedTranslucency() override = default;
+
+private:
+  CompositedTranslucency(const CompositedTranslucency&) = delete;
+  void operator=(const CompositedTranslucency&) = delete;
+};
+vtkStandardNewMacro(vtkOpenGLAntialiasingPass::CompositedTranslucency);
 
 //------------------------------------------------------------------------------
 vtkOpenGLAntialiasingPass::vtkOpenGLAntialiasingPass() = default;
@@ -39,7 +68,8 @@ vtkOpenGLAntialiasingPass::~vtkOpenGLAntialiasingPass()
   }
   // The translucent steps free their GL objects in ReleaseGraphicsResources (or report them).
   for (vtkRenderPass* pass : { static_cast<vtkRenderPass*>(this->TranslucencyPass),
-         static_cast<vtkRenderPass*>(this->PeelingPass) })
+         static_cast<vtkRenderPass*>(this->PeelingPass),
+         static_cast<vtkRenderPass*>(this->CompositedPass) })
   {
     if (pass)
     {
@@ -123,7 +153,7 @@ void vtkOpenGLAntialiasingPass::RenderDelegateToTextures(
 
 //------------------------------------------------------------------------------
 vtkOpenGLAntialiasingPass::StepsChange vtkOpenGLAntialiasingPass::UseRendererTranslucency(
-  const vtkRenderState* s, vtkRenderStepsPass* steps)
+  const vtkRenderState* s, vtkRenderStepsPass* steps, bool composite)
 {
   // What vtkOpenGLRenderer does without a pass (UpdateGeometry and
   // DeviceRenderTranslucentPolygonalGeometry), decided from its settings at this render.
@@ -166,6 +196,16 @@ vtkOpenGLAntialiasingPass::StepsChange vtkOpenGLAntialiasingPass::UseRendererTra
     }
     this->TranslucencyPass->SetTranslucentPass(translucent);
     wrapper = this->TranslucencyPass;
+    if (composite)
+    {
+      if (!this->CompositedPass)
+      {
+        this->CompositedPass = CompositedTranslucency::New();
+        this->CompositedPass->Owner = this;
+      }
+      this->CompositedPass->Translucent = translucent;
+      wrapper = this->CompositedPass;
+    }
   }
   else
   {
@@ -212,10 +252,83 @@ void vtkOpenGLAntialiasingPass::RestoreDelegateSteps(const StepsChange& change)
   {
     this->TranslucencyPass->SetTranslucentPass(nullptr);
   }
+  if (this->CompositedPass)
+  {
+    this->CompositedPass->Translucent = nullptr;
+  }
   if (this->PeelingPass)
   {
     this->PeelingPass->SetTranslucentPass(nullptr);
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLAntialiasingPass::RenderCompositedTranslucency(
+  const vtkRenderState* s, vtkRenderPass* translucent)
+{
+  auto* renWin = static_cast<vtkOpenGLRenderWindow*>(s->GetRenderer()->GetRenderWindow());
+  vtkOpenGLState* ostate = renWin->GetState();
+  const int width = static_cast<int>(this->ColorTexture->GetWidth());
+  const int height = static_cast<int>(this->ColorTexture->GetHeight());
+  if (!this->AlphaTexture)
+  {
+    this->AlphaTexture = NewTexture(renWin);
+  }
+  AllocateColorTarget(this->AlphaTexture, width, height, 1,
+    this->ColorTexture->GetVTKDataType() == VTK_FLOAT ? VTK_FLOAT : VTK_UNSIGNED_CHAR, false);
+
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
+  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
+  vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
+  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+
+  // Keep the alpha of the opaque steps (the delegate's framebuffer is bound: its colour is
+  // ColorTexture).
+  ostate->PushFramebufferBindings();
+  this->BeginWorkPass(renWin, this->AlphaTexture, width, height);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglDepthMask(GL_FALSE);
+  bool kept = this->ReadyQuad(renWin, this->KeepAlphaQuad, vtkAntialiasingAlphaFS,
+    Define("ANTIALIASING_KEEP_ALPHA", true));
+  if (kept)
+  {
+    this->ColorTexture->Activate();
+    this->KeepAlphaQuad.Quad->Program->SetUniformi(
+      "source", this->ColorTexture->GetTextureUnit());
+    this->KeepAlphaQuad.Quad->Render();
+    this->ColorTexture->Deactivate();
+  }
+  ostate->PopFramebufferBindings();
+
+  this->TranslucencyPass->Render(s);
+  if (!kept || !this->ReadyQuad(renWin, this->RestoreAlphaQuad, vtkAntialiasingAlphaFS, ""))
+  {
+    return;
+  }
+
+  // The kept alpha back, colour untouched...
+  ostate->vtkglViewport(0, 0, width, height);
+  ostate->vtkglScissor(0, 0, width, height);
+  ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglDepthMask(GL_FALSE);
+  this->AlphaTexture->Activate();
+  this->RestoreAlphaQuad.Quad->Program->SetUniformi(
+    "source", this->AlphaTexture->GetTextureUnit());
+  this->RestoreAlphaQuad.Quad->Render();
+  this->AlphaTexture->Deactivate();
+
+  // ... and the coverage of the translucent geometry in front of the opaque depth blended into it:
+  // a = a_i + (1 - a_i) a, which does not depend on the order of the fragments, leaves
+  // 1 - (1 - a) * (transmittance), the alpha the colour was premultiplied with.
+  ostate->vtkglEnable(GL_BLEND);
+  ostate->vtkglBlendFuncSeparate(GL_ZERO, GL_ONE, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  translucent->Render(s);
 }
 
 //------------------------------------------------------------------------------
@@ -379,7 +492,7 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
       steps->SetOverlayPass(nullptr);
     }
     const StepsChange stepsChange =
-      steps ? this->UseRendererTranslucency(s, steps) : StepsChange();
+      steps ? this->UseRendererTranslucency(s, steps, frame.Composite) : StepsChange();
     if (frame.InPlace)
     {
       this->DelegatePass->Render(s);
@@ -426,6 +539,10 @@ void vtkOpenGLAntialiasingPass::ReleaseGraphicsResources(vtkWindow* w)
   DeleteObject(this->DepthTexture, w);
   DeleteObject(this->TranslucencyPass, w);
   DeleteObject(this->PeelingPass, w);
+  DeleteObject(this->CompositedPass, w);
+  DeleteObject(this->AlphaTexture, w);
+  this->KeepAlphaQuad.Release(w);
+  this->RestoreAlphaQuad.Release(w);
 }
 
 //------------------------------------------------------------------------------
@@ -434,7 +551,7 @@ vtkIdType vtkOpenGLAntialiasingPass::GetTargetMemorySize()
   const int colorBytes =
     (this->ColorTexture && this->ColorTexture->GetVTKDataType() == VTK_FLOAT) ? 16 : 4;
   return TextureBytes(this->ColorTexture, colorBytes) + TextureBytes(this->DepthTexture, 4) +
-    this->GetMethodTargetMemorySize();
+    TextureBytes(this->AlphaTexture, colorBytes / 4) + this->GetMethodTargetMemorySize();
 }
 
 //------------------------------------------------------------------------------

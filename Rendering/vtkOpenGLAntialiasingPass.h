@@ -28,7 +28,10 @@
  *   renderer reports dual depth peeling unsupported, vtkDepthPeelingPass, with the renderer's
  *   MaximumNumberOfPeels and OcclusionRatio. The delegate's own translucent step does the drawing
  *   inside them and is put back after each render; a translucent step of any other class (the
- *   user's own) is left alone, as is any other delegate;
+ *   user's own) is left alone, as is any other delegate. In a composited renderer (layers),
+ *   order-independent translucency leaves the right premultiplied colour but not its coverage in
+ *   alpha: the pass keeps the alpha of the opaque steps in a texture of its own and blends the
+ *   translucent geometry's coverage into it (one more draw of the translucent geometry);
  * - picking: while a vtkHardwareSelector renders, the renderer is drawn without the delegate and
  *   without antialiasing, as vtkOpenGLRenderer does without a pass, so ids are not blended;
  * - KeepAlpha (whether alpha is part of the result), floating-point targets (the copy is floating
@@ -99,8 +102,9 @@ public:
 
   /**
    * Bytes of GPU memory held by the pass's render targets at the last render: the copy of the
-   * delegate's colour, its depth when the pass renders it into its own textures, and the subclass's
-   * targets.
+   * delegate's colour, its depth when the pass renders it into its own textures, the alpha kept
+   * across order-independent translucency in a composited renderer, and the subclass's targets
+   * (not the textures of VTK's translucency passes).
    */
   virtual vtkIdType GetTargetMemorySize();
 
@@ -170,7 +174,8 @@ protected:
   // destructor reports it once; subclasses report their own targets only when these are gone.
   bool HoldsSharedResources() const
   {
-    return this->ColorTexture || this->DelegateFramebuffer || this->WorkFramebuffer;
+    return this->ColorTexture || this->DelegateFramebuffer || this->WorkFramebuffer ||
+      this->AlphaTexture;
   }
 
   vtkOpenGLFramebufferObject* DelegateFramebuffer = nullptr;
@@ -197,14 +202,28 @@ private:
     vtkRenderPass* Volumetric = nullptr;  // the volume step moved into dual depth peeling
   };
   // Gives the delegate's translucent step the translucency the renderer would use without a pass
-  // (see the class description), wrapping the step; returns what it changed.
-  StepsChange UseRendererTranslucency(const vtkRenderState* s, vtkRenderStepsPass* steps);
+  // (see the class description), wrapping the step; returns what it changed. `composite`: the
+  // delegate renders into ColorTexture to be composited (see CompositedTranslucency).
+  StepsChange UseRendererTranslucency(
+    const vtkRenderState* s, vtkRenderStepsPass* steps, bool composite);
   // Puts the delegate's steps back as they were before UseRendererTranslucency.
   void RestoreDelegateSteps(const StepsChange& change);
+
+  // The translucent step of a composited renderer with order-independent translucency: runs
+  // RenderCompositedTranslucency.
+  class CompositedTranslucency;
+  // vtkOrderIndependentTranslucentPass (TranslucencyPass, wrapping `translucent`) leaves the
+  // right premultiplied colour in ColorTexture, but an alpha that is not the coverage it was
+  // premultiplied with: keeps the alpha before it in AlphaTexture, writes it back afterwards and
+  // blends the coverage of `translucent`'s geometry into it.
+  void RenderCompositedTranslucency(const vtkRenderState* s, vtkRenderPass* translucent);
 
   // The translucent steps of UseRendererTranslucency, made when first needed.
   vtkOrderIndependentTranslucentPass* TranslucencyPass = nullptr;
   vtkDepthPeelingPass* PeelingPass = nullptr; // a vtkDualDepthPeelingPass where supported
+  CompositedTranslucency* CompositedPass = nullptr;
+  vtkTextureObject* AlphaTexture = nullptr;
+  ShaderVariant KeepAlphaQuad, RestoreAlphaQuad;
 
   // Renders the delegate into ColorTexture and DepthTexture (cleared to transparent black first
   // when compositing over the target).

@@ -17,7 +17,10 @@
 // volume (GPU ray casting) with translucent and opaque geometry, with the volume in its own step
 // and with UseDepthPeelingForVolumes (volumes peeled with the geometry); translucent geometry on
 // a transparent background (BackgroundAlpha 0, KeepAlpha, read back as RGBA), with each
-// translucency method; for MLAA, depth edges (the delegate renders into the pass's own
+// translucency method; the spheres on layer 1 over an opaque sphere on layer 0 (the pass
+// composites layer 1's premultiplied image: the filter runs on layer 1's image alone, as the
+// renderer draws it, composited over layer 0's), with order-independent translucency and dual
+// depth peeling; for MLAA, depth edges (the delegate renders into the pass's own
 // framebuffer: its depth buffer must serve OIT and peeling) against the filter given the window's
 // z-buffer. Last, a translucent step of the user's own (not a vtkTranslucentPass) is left alone:
 // it renders, stays in place, and the result is the filter on the render of those steps without
@@ -151,11 +154,12 @@ private:
   vtkNew<vtkTranslucentPass> Plain;
 };
 
-// What the pass gives against the method's filter on `plain` (within 2/255 on >= 99.5 % of
-// the pixels; the renderer's own pixels, within 1/255, away from what the filter changes;
-// antialiased) and that the delegate's steps are as they were.
+// The pass's `result` against `expected`, what the method's filter makes of the renderer's own
+// image `plain`: within 2/255 on >= 99.5 % of the pixels; away from the pixels where `expected`
+// differs from `plain` (by more than `edgeTolerance`), the renderer's own within 1/255;
+// antialiased.
 void CheckAgainst(const PassMethod& method, vtkImageData* plain, vtkImageData* result,
-  vtkImageData* expected, const std::string& what)
+  vtkImageData* expected, const std::string& what, double edgeTolerance = 0.0)
 {
   const Difference parity = Compare(expected, result, 2.0);
   const double share =
@@ -172,7 +176,7 @@ void CheckAgainst(const PassMethod& method, vtkImageData* plain, vtkImageData* r
     {
       for (int k = 0; k < components; ++k)
       {
-        if (GetValue(expected, x, y, k) != GetValue(plain, x, y, k))
+        if (std::abs(GetValue(expected, x, y, k) - GetValue(plain, x, y, k)) > edgeTolerance)
         {
           edge[static_cast<size_t>(y) * dims[0] + x] = true;
         }
@@ -261,6 +265,39 @@ void CheckCase(const PassMethod& method, vtkRenderWindow* window, vtkRenderer* r
   Check(StepsSnapshot(pass) == before, (what + ": the delegate's steps as they were").c_str(),
     __FILE__, __LINE__);
   CheckAgainst(method, plain, result, method.Filter(pass, plain), what);
+}
+
+// The image of the layer-1 renderer of `window` alone as the renderer draws it, premultiplied
+// RGBA (what the pass composites): its colour over opaque black is the premultiplied colour, and
+// its colour over opaque white less that is (1 - alpha) white. (Read back, the alpha VTK's
+// order-independent translucency leaves is not the coverage.) `lower`: the layer-0 renderer.
+vtkSmartPointer<vtkImageData> LayerImage(vtkRenderWindow* window, vtkRenderer* lower)
+{
+  double background[3];
+  lower->GetBackground(background);
+  SetVisibility(lower, false, false);
+  lower->SetBackground(0.0, 0.0, 0.0);
+  auto black = vtkMLAAScenes::Capture(window);
+  lower->SetBackground(1.0, 1.0, 1.0);
+  auto white = vtkMLAAScenes::Capture(window);
+  lower->SetBackground(background);
+  SetVisibility(lower, true, true);
+  int dims[3];
+  black->GetDimensions(dims);
+  auto layer = MakeImage(dims[0], dims[1], 4);
+  FillImage(layer, [&](int x, int y, int, int k) {
+    if (k < 3)
+    {
+      return GetValue(black, x, y, k);
+    }
+    double transmitted = 0.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      transmitted += (GetValue(white, x, y, c) - GetValue(black, x, y, c)) / 3.0;
+    }
+    return std::round(255.0 - transmitted);
+  });
+  return layer;
 }
 
 // A 400 x 300 window with one renderer.
@@ -362,6 +399,38 @@ int TestAntialiasingPassTranslucency(int, char*[])
                 << " pixels differ" << std::endl;
       MLAA_CHECK(Compare(volumeStep, peeled, 0.0).Pixels > 100);
       CheckCase(method, w.RenderWindow, w.Renderer, pass, "volume, peeled with the geometry");
+    }
+    {
+      // A renderer on layer 1 (composited over layer 0 by the pass).
+      vtkSmartPointer<vtkRenderWindow> window = vtkMLAAScenes::NewOffscreenWindow(400, 300);
+      window->SetNumberOfLayers(2);
+      vtkNew<vtkRenderer> lower;
+      lower->SetBackground(0.3, 0.3, 0.35);
+      AddSphere(lower, 0.0, 0.0, -2.5, 0.9, 0.8, 0.2, 1.0);
+      vtkNew<vtkRenderer> upper;
+      upper->SetLayer(1);
+      BuildSpheres(upper);
+      lower->SetActiveCamera(upper->GetActiveCamera());
+      window->AddRenderer(lower);
+      window->AddRenderer(upper);
+      vtkSmartPointer<vtkOpenGLAntialiasingPass> pass = method.Use(upper);
+      method.UsePremultipliedAlpha(pass);
+      messages->Watch(pass);
+      for (const bool peeling : { false, true })
+      {
+        upper->SetUseDepthPeeling(peeling);
+        upper->SetPass(nullptr);
+        auto plain = vtkMLAAScenes::Capture(window);
+        SetVisibility(upper, false, false);
+        auto lowerOnly = vtkMLAAScenes::Capture(window);
+        SetVisibility(upper, true, true);
+        auto layer = LayerImage(window, lower);
+        upper->SetPass(pass);
+        auto result = vtkMLAAScenes::Capture(window);
+        CheckAgainst(method, plain, result, Over(method.Filter(pass, layer), lowerOnly),
+          peeling ? "layer 1, dual depth peeling" : "layer 1, order-independent", 1.0);
+      }
+      StopPass(upper, window);
     }
     if (std::string(method.Name) == "vtkOpenGLMLAAPass")
     {
