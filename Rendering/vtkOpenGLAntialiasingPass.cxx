@@ -41,8 +41,12 @@ public:
 
   void Render(const vtkRenderState* s) override
   {
-    this->Owner->RenderCompositedTranslucency(s, this->Translucent);
-    this->NumberOfRenderedProps = this->Owner->TranslucencyPass->GetNumberOfRenderedProps();
+    this->NumberOfRenderedProps = 0;
+    if (this->Owner && this->Translucent)
+    {
+      this->Owner->RenderCompositedTranslucency(s, this->Translucent);
+      this->NumberOfRenderedProps = this->Owner->TranslucencyPass->GetNumberOfRenderedProps();
+    }
   }
 
 protected:
@@ -67,6 +71,11 @@ vtkOpenGLAntialiasingPass::~vtkOpenGLAntialiasingPass()
                   "ReleaseGraphicsResources().");
   }
   // The translucent steps free their GL objects in ReleaseGraphicsResources (or report them).
+  // The delegate's step sequence may hold the last one used until its next render.
+  if (this->CompositedPass)
+  {
+    this->CompositedPass->Owner = nullptr;
+  }
   for (vtkRenderPass* pass : { static_cast<vtkRenderPass*>(this->TranslucencyPass),
          static_cast<vtkRenderPass*>(this->PeelingPass),
          static_cast<vtkRenderPass*>(this->CompositedPass) })
@@ -539,6 +548,10 @@ void vtkOpenGLAntialiasingPass::ReleaseGraphicsResources(vtkWindow* w)
   DeleteObject(this->DepthTexture, w);
   DeleteObject(this->TranslucencyPass, w);
   DeleteObject(this->PeelingPass, w);
+  if (this->CompositedPass)
+  {
+    this->CompositedPass->Owner = nullptr; // the delegate's step sequence may still hold it
+  }
   DeleteObject(this->CompositedPass, w);
   DeleteObject(this->AlphaTexture, w);
   this->KeepAlphaQuad.Release(w);
