@@ -178,17 +178,16 @@ vtkOpenGLAntialiasingPass::StepsChange vtkOpenGLAntialiasingPass::UseRendererTra
   {
     hasTranslucent = s->GetPropArray()[i]->HasTranslucentPolygonalGeometry() != 0;
   }
+  if (!hasTranslucent)
+  {
+    return change; // the renderer skips the translucent step (volumes stay in their own)
+  }
   const bool peeling = renderer->GetUseDepthPeeling() != 0;
   const bool dual = peeling && renderer->IsDualDepthPeelingSupported();
-  // Volumes go into dual depth peeling with UseDepthPeelingForVolumes (the renderer then renders
-  // them there, translucent geometry or not); without dual depth peeling they stay in the volume
-  // step, where they are not lost.
+  // With UseDepthPeelingForVolumes, volumes are peeled along with the translucent geometry, by
+  // dual depth peeling only (the renderer turns the setting off where that is unsupported).
   vtkRenderPass* volumetric = steps->GetVolumetricPass();
   const bool peelVolumes = dual && renderer->GetUseDepthPeelingForVolumes() && volumetric;
-  if (!hasTranslucent && !peelVolumes)
-  {
-    return change; // the renderer skips the translucent step: so does the plain one
-  }
 
   vtkRenderPass* wrapper = nullptr;
   if (!peeling)

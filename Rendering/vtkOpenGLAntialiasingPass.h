@@ -24,7 +24,8 @@
  *   vtkTranslucentPass (its default) draws translucent geometry, at each render, the way the
  *   renderer would without a pass, from its current settings: order-independent translucency
  *   (vtkOrderIndependentTranslucentPass), or with UseDepthPeeling, dual depth peeling
- *   (vtkDualDepthPeelingPass, with volumes when UseDepthPeelingForVolumes is on) or, where the
+ *   (vtkDualDepthPeelingPass, which with UseDepthPeelingForVolumes also peels the volumes of a
+ *   render that has translucent geometry) or, where the
  *   renderer reports dual depth peeling unsupported, vtkDepthPeelingPass, with the renderer's
  *   MaximumNumberOfPeels and OcclusionRatio. The delegate's own translucent step does the drawing
  *   inside them and is put back after each render; a translucent step of any other class (the

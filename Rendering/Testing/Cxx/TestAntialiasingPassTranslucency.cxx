@@ -15,7 +15,9 @@
 // order-independent translucency again: decided at each render from the renderer's settings;
 // vtkDepthPeelingPass (VTK_USE_LEGACY_DEPTH_PEELING set, as the renderer then uses it); a
 // volume (GPU ray casting) with translucent and opaque geometry, with the volume in its own step
-// and with UseDepthPeelingForVolumes (volumes peeled with the geometry); translucent geometry on
+// and with UseDepthPeelingForVolumes (volumes peeled with the geometry), and, as the renderer
+// does, in its own step with UseDepthPeelingForVolumes but without UseDepthPeeling or without
+// translucent geometry; translucent geometry on
 // a transparent background (BackgroundAlpha 0, KeepAlpha, read back as RGBA), with each
 // translucency method; the spheres on layer 1 over an opaque sphere on layer 0 (the pass
 // composites layer 1's premultiplied image: the filter runs on layer 1's image alone, as the
@@ -82,8 +84,8 @@ void BuildSpheres(vtkRenderer* renderer)
 }
 
 // A volume (the wavelet, ray cast on the GPU) with a translucent sphere through it and an opaque
-// cone beside it, on a dark background.
-void BuildVolumeScene(vtkRenderer* renderer)
+// cone beside it, on a dark background; returns the sphere.
+vtkActor* BuildVolumeScene(vtkRenderer* renderer)
 {
   renderer->SetBackground(0.1, 0.1, 0.2);
   vtkNew<vtkRTAnalyticSource> wavelet;
@@ -133,6 +135,7 @@ void BuildVolumeScene(vtkRenderer* renderer)
   renderer->ResetCamera();
   renderer->GetActiveCamera()->Azimuth(25);
   renderer->GetActiveCamera()->Elevation(15);
+  return sphereActor;
 }
 
 // A translucent step of the user's own: draws with VTK's plain (unsorted) blending through a
@@ -386,7 +389,7 @@ int TestAntialiasingPassTranslucency(int, char*[])
       // A volume with geometry: in the volume step (order-independent translucency for the
       // geometry), and peeled with the geometry.
       Window w;
-      BuildVolumeScene(w.Renderer);
+      vtkActor* sphere = BuildVolumeScene(w.Renderer);
       vtkSmartPointer<vtkOpenGLAntialiasingPass> pass = method.Use(w.Renderer);
       messages->Watch(pass);
       CheckCase(method, w.RenderWindow, w.Renderer, pass, "volume, order-independent");
@@ -399,6 +402,14 @@ int TestAntialiasingPassTranslucency(int, char*[])
                 << " pixels differ" << std::endl;
       MLAA_CHECK(Compare(volumeStep, peeled, 0.0).Pixels > 100);
       CheckCase(method, w.RenderWindow, w.Renderer, pass, "volume, peeled with the geometry");
+      // The renderer peels volumes only along with translucent geometry, and only when it peels.
+      w.Renderer->UseDepthPeelingOff();
+      CheckCase(method, w.RenderWindow, w.Renderer, pass,
+        "volume, UseDepthPeelingForVolumes without UseDepthPeeling");
+      w.Renderer->UseDepthPeelingOn();
+      sphere->GetProperty()->SetOpacity(1.0);
+      CheckCase(method, w.RenderWindow, w.Renderer, pass,
+        "volume, UseDepthPeelingForVolumes without translucent geometry");
     }
     {
       // A renderer on layer 1 (composited over layer 0 by the pass).
