@@ -25,11 +25,11 @@
  *   renderer would without a pass, from its current settings: order-independent translucency
  *   (vtkOrderIndependentTranslucentPass), or with UseDepthPeeling, dual depth peeling
  *   (vtkDualDepthPeelingPass, which with UseDepthPeelingForVolumes also peels the volumes of a
- *   render that has translucent geometry) or, where the
- *   renderer reports dual depth peeling unsupported, vtkDepthPeelingPass, with the renderer's
- *   MaximumNumberOfPeels and OcclusionRatio. The delegate's own translucent step does the drawing
- *   inside them and is put back after each render; a translucent step of any other class (the
- *   user's own) is left alone, as is any other delegate. In a composited renderer (layers),
+ *   render that has translucent geometry) or, where the renderer reports dual depth peeling
+ *   unsupported, vtkDepthPeelingPass, with the renderer's MaximumNumberOfPeels and
+ *   OcclusionRatio. The delegate's own translucent step does the drawing inside them and is put
+ *   back after each render; a translucent step of any other class (the user's own) is left
+ *   alone, as is any other delegate. In a composited renderer (layers),
  *   order-independent translucency leaves the right premultiplied colour but not its coverage in
  *   alpha: the pass keeps the alpha of the opaque steps in a texture of its own and blends the
  *   translucent geometry's coverage into it (one more draw of the translucent geometry);
@@ -56,9 +56,9 @@
 
 class vtkDepthPeelingPass;
 class vtkOpenGLFramebufferObject;
-class vtkOrderIndependentTranslucentPass;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
+class vtkOrderIndependentTranslucentPass;
 class vtkRenderStepsPass;
 class vtkShaderProgram;
 class vtkTextureObject;
