@@ -35,6 +35,7 @@
 #include "vtkColorTransferFunction.h"
 #include "vtkConeSource.h"
 #include "vtkGPUVolumeRayCastMapper.h"
+#include "vtkOpenGLRenderer.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
@@ -328,6 +329,8 @@ vtkSmartPointer<vtkImageData> ZBuffer(vtkRenderWindow* window)
 
 int TestAntialiasingPassTranslucency(int, char*[])
 {
+  // The cases named "dual depth peeling" are dual where the driver allows it.
+  unsetenv("VTK_USE_LEGACY_DEPTH_PEELING");
   ForEachPassMethod([](const PassMethod& method, MessageObserver* messages) {
     {
       // Each translucency method in turn on one renderer and pass: chosen at each render.
@@ -368,6 +371,8 @@ int TestAntialiasingPassTranslucency(int, char*[])
       BuildSpheres(dual.Renderer);
       dual.Renderer->UseDepthPeelingOn();
       auto dualImage = vtkMLAAScenes::Capture(dual.RenderWindow);
+      const bool dualSupported =
+        vtkOpenGLRenderer::SafeDownCast(dual.Renderer)->IsDualDepthPeelingSupported();
       setenv("VTK_USE_LEGACY_DEPTH_PEELING", "1", 1);
       {
         Window w;
@@ -378,7 +383,7 @@ int TestAntialiasingPassTranslucency(int, char*[])
           Compare(dualImage, vtkMLAAScenes::Capture(w.RenderWindow), 0.0).Pixels;
         std::cout << "depth peeling against dual depth peeling: " << differ << " pixels differ"
                   << std::endl;
-        MLAA_CHECK(differ > 100);
+        MLAA_CHECK(!dualSupported || differ > 100);
         vtkSmartPointer<vtkOpenGLAntialiasingPass> pass = method.Use(w.Renderer);
         messages->Watch(pass);
         CheckCase(method, w.RenderWindow, w.Renderer, pass, "spheres, depth peeling");
