@@ -11,20 +11,19 @@
 //   and no error is reported.
 // Cases: three spheres (one opaque, two of opacity 0.4 and 0.5) on white with order-independent
 // translucency (UseDepthPeeling off), then, on the same renderer and pass, dual depth peeling
-// (UseDepthPeeling on), dual depth peeling stopped after one peel (MaximumNumberOfPeels 1) and
-// order-independent translucency again: decided at each render from the renderer's settings;
+// (UseDepthPeeling on), dual depth peeling stopped after one peel (MaximumNumberOfPeels 1) or
+// early by OcclusionRatio 0.5, and order-independent translucency again: decided at each render from the renderer's settings;
 // vtkDepthPeelingPass (VTK_USE_LEGACY_DEPTH_PEELING set, as the renderer then uses it); a
 // volume (GPU ray casting) with translucent and opaque geometry, with the volume in its own step
 // and with UseDepthPeelingForVolumes (volumes peeled with the geometry), and, as the renderer
 // does, in its own step with UseDepthPeelingForVolumes but without UseDepthPeeling or without
-// translucent geometry; translucent geometry on
-// a transparent background (BackgroundAlpha 0, KeepAlpha, read back as RGBA), with each
-// translucency method; the spheres on layer 1 over an opaque sphere on layer 0 (the pass
-// composites layer 1's premultiplied image: the filter runs on layer 1's image alone, as the
-// renderer draws it, composited over layer 0's), with order-independent translucency and dual
-// depth peeling; for MLAA, depth edges (the delegate renders into the pass's own
-// framebuffer: its depth buffer must serve OIT and peeling) against the filter given the window's
-// z-buffer. Last, a translucent step of the user's own (not a vtkTranslucentPass) is left alone:
+// translucent geometry; translucent geometry on a transparent background (BackgroundAlpha 0,
+// KeepAlpha, read back as RGBA), with each translucency method; the spheres on layer 1 over an
+// opaque sphere on layer 0 (the pass composites layer 1's premultiplied image: the filter runs
+// on layer 1's image alone, as the renderer draws it, composited over layer 0's), with
+// order-independent translucency and dual depth peeling; for MLAA, depth edges (the delegate
+// renders into the pass's own framebuffer: its depth buffer must serve OIT and peeling) against
+// the filter given the window's z-buffer. Last, a translucent step of the user's own (not a vtkTranslucentPass) is left alone:
 // it renders, stays in place, and the result is the filter on the render of those steps without
 // antialiasing, which differs from the renderer's order-independent translucency (so the
 // scene tells the two apart).
@@ -351,6 +350,15 @@ int TestAntialiasingPassTranslucency(int, char*[])
                 << " pixels differ" << std::endl;
       MLAA_CHECK(Compare(allPeels, onePeel, 0.0).Pixels > 100);
       CheckCase(method, w.RenderWindow, w.Renderer, pass, "spheres, one peel");
+      w.Renderer->SetMaximumNumberOfPeels(100);
+      w.Renderer->SetOcclusionRatio(0.5);
+      w.Renderer->SetPass(nullptr);
+      const vtkIdType occluded =
+        Compare(allPeels, vtkMLAAScenes::Capture(w.RenderWindow), 0.0).Pixels;
+      std::cout << "occlusion ratio 0.5 against 0: " << occluded << " pixels differ" << std::endl;
+      MLAA_CHECK(occluded > 100);
+      CheckCase(method, w.RenderWindow, w.Renderer, pass, "spheres, occlusion ratio 0.5");
+      w.Renderer->SetOcclusionRatio(0.0);
       w.Renderer->UseDepthPeelingOff();
       CheckCase(method, w.RenderWindow, w.Renderer, pass, "spheres, order-independent again");
 
