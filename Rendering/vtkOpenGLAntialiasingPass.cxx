@@ -2,23 +2,62 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkOpenGLAntialiasingPass.h"
 
+#include "vtkDualDepthPeelingPass.h"
+#include "vtkObjectFactory.h"
 #include "vtkOpenGLAntialiasingPassInternals.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
+#include "vtkOrderIndependentTranslucentPass.h"
+#include "vtkProp.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
+#include "vtkTranslucentPass.h"
+#include "vtkVersionMacros.h"
+
+#include "vtkAntialiasingAlphaFS.h"
 
 #include "vtk_glew.h" // For GL enums only: every call goes through VTK's classes
 
 using namespace vtkOpenGLAntialiasingPassInternals;
+
+//------------------------------------------------------------------------------
+class vtkOpenGLAntialiasingPass::CompositedTranslucency : public vtkRenderPass
+{
+public:
+  static CompositedTranslucency* New();
+  vtkTypeMacro(CompositedTranslucency, vtkRenderPass);
+
+  vtkOpenGLAntialiasingPass* Owner = nullptr; // not held: the owner holds this
+  vtkRenderPass* Translucent = nullptr;       // the delegate's step, during a render
+
+  void Render(const vtkRenderState* s) override
+  {
+    this->NumberOfRenderedProps = 0;
+    if (this->Owner && this->Translucent)
+    {
+      this->Owner->RenderCompositedTranslucency(s, this->Translucent);
+      this->NumberOfRenderedProps = this->Owner->TranslucencyPass->GetNumberOfRenderedProps();
+    }
+  }
+
+protected:
+  CompositedTranslucency() = default;
+  ~CompositedTranslucency() override = default;
+
+private:
+  CompositedTranslucency(const CompositedTranslucency&) = delete;
+  void operator=(const CompositedTranslucency&) = delete;
+};
+vtkStandardNewMacro(vtkOpenGLAntialiasingPass::CompositedTranslucency);
 
 //------------------------------------------------------------------------------
 vtkOpenGLAntialiasingPass::vtkOpenGLAntialiasingPass() = default;
@@ -30,6 +69,21 @@ vtkOpenGLAntialiasingPass::~vtkOpenGLAntialiasingPass()
   {
     vtkErrorMacro("Graphics resources should have been released by "
                   "ReleaseGraphicsResources().");
+  }
+  // The translucent steps free their GL objects in ReleaseGraphicsResources (or report them).
+  // The delegate's step sequence may hold the last one used until its next render.
+  if (this->CompositedPass)
+  {
+    this->CompositedPass->Owner = nullptr;
+  }
+  for (vtkRenderPass* pass : { static_cast<vtkRenderPass*>(this->TranslucencyPass),
+         static_cast<vtkRenderPass*>(this->PeelingPass),
+         static_cast<vtkRenderPass*>(this->CompositedPass) })
+  {
+    if (pass)
+    {
+      pass->Delete();
+    }
   }
 }
 
@@ -104,6 +158,185 @@ void vtkOpenGLAntialiasingPass::RenderDelegateToTextures(
 
   this->DelegatePass->Render(&delegateState);
   this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
+}
+
+//------------------------------------------------------------------------------
+vtkOpenGLAntialiasingPass::StepsChange vtkOpenGLAntialiasingPass::UseRendererTranslucency(
+  const vtkRenderState* s, vtkRenderStepsPass* steps, bool composite)
+{
+  // What vtkOpenGLRenderer does without a pass (UpdateGeometry and
+  // DeviceRenderTranslucentPolygonalGeometry), decided from its settings at this render.
+  StepsChange change;
+  vtkRenderPass* translucent = steps->GetTranslucentPass();
+  auto* renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  if (!renderer || !vtkTranslucentPass::SafeDownCast(translucent))
+  {
+    return change; // no translucent step, or the user's own: theirs to decide
+  }
+  bool hasTranslucent = false;
+  for (int i = 0; !hasTranslucent && i < s->GetPropArrayCount(); ++i)
+  {
+    hasTranslucent = s->GetPropArray()[i]->HasTranslucentPolygonalGeometry() != 0;
+  }
+  if (!hasTranslucent)
+  {
+    return change; // the renderer skips the translucent step (volumes stay in their own)
+  }
+  const bool peeling = renderer->GetUseDepthPeeling() != 0;
+  const bool dual = peeling && renderer->IsDualDepthPeelingSupported();
+  // With UseDepthPeelingForVolumes, volumes are peeled along with the translucent geometry, by
+  // dual depth peeling only (the renderer turns the setting off where that is unsupported).
+  vtkRenderPass* volumetric = steps->GetVolumetricPass();
+  const bool peelVolumes = dual && renderer->GetUseDepthPeelingForVolumes() && volumetric;
+
+  vtkRenderPass* wrapper = nullptr;
+  if (!peeling)
+  {
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 5, 0)
+    if (!renderer->GetUseOIT())
+    {
+      return change; // plain blending, as the delegate's step does
+    }
+#endif
+    if (!this->TranslucencyPass)
+    {
+      this->TranslucencyPass = vtkOrderIndependentTranslucentPass::New();
+    }
+    this->TranslucencyPass->SetTranslucentPass(translucent);
+    wrapper = this->TranslucencyPass;
+    if (composite)
+    {
+      if (!this->CompositedPass)
+      {
+        this->CompositedPass = CompositedTranslucency::New();
+        this->CompositedPass->Owner = this;
+      }
+      this->CompositedPass->Translucent = translucent;
+      wrapper = this->CompositedPass;
+    }
+  }
+  else
+  {
+    if (this->PeelingPass && this->PeelingPass->IsA("vtkDualDepthPeelingPass") != dual)
+    {
+      DeleteObject(this->PeelingPass, renderer->GetRenderWindow()); // the support changed
+    }
+    if (!this->PeelingPass)
+    {
+      this->PeelingPass = dual ? vtkDualDepthPeelingPass::New() : vtkDepthPeelingPass::New();
+    }
+    this->PeelingPass->SetMaximumNumberOfPeels(renderer->GetMaximumNumberOfPeels());
+    this->PeelingPass->SetOcclusionRatio(renderer->GetOcclusionRatio());
+    this->PeelingPass->SetTranslucentPass(translucent);
+    if (peelVolumes)
+    {
+      static_cast<vtkDualDepthPeelingPass*>(this->PeelingPass)->SetVolumetricPass(volumetric);
+      change.Volumetric = volumetric;
+      steps->SetVolumetricPass(nullptr);
+    }
+    wrapper = this->PeelingPass;
+  }
+  change.Steps = steps;
+  change.Translucent = translucent;
+  steps->SetTranslucentPass(wrapper);
+  return change;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLAntialiasingPass::RestoreDelegateSteps(const StepsChange& change)
+{
+  if (!change.Steps)
+  {
+    return;
+  }
+  change.Steps->SetTranslucentPass(change.Translucent);
+  if (change.Volumetric)
+  {
+    change.Steps->SetVolumetricPass(change.Volumetric);
+    static_cast<vtkDualDepthPeelingPass*>(this->PeelingPass)->SetVolumetricPass(nullptr);
+  }
+  // Hold none of the user's passes between renders.
+  if (this->TranslucencyPass)
+  {
+    this->TranslucencyPass->SetTranslucentPass(nullptr);
+  }
+  if (this->CompositedPass)
+  {
+    this->CompositedPass->Translucent = nullptr;
+  }
+  if (this->PeelingPass)
+  {
+    this->PeelingPass->SetTranslucentPass(nullptr);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLAntialiasingPass::RenderCompositedTranslucency(
+  const vtkRenderState* s, vtkRenderPass* translucent)
+{
+  auto* renWin = static_cast<vtkOpenGLRenderWindow*>(s->GetRenderer()->GetRenderWindow());
+  vtkOpenGLState* ostate = renWin->GetState();
+  const int width = static_cast<int>(this->ColorTexture->GetWidth());
+  const int height = static_cast<int>(this->ColorTexture->GetHeight());
+  if (!this->AlphaTexture)
+  {
+    this->AlphaTexture = NewTexture(renWin);
+  }
+  AllocateColorTarget(this->AlphaTexture, width, height, 1,
+    this->ColorTexture->GetVTKDataType() == VTK_FLOAT ? VTK_FLOAT : VTK_UNSIGNED_CHAR, false);
+
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
+  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
+  vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
+  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+
+  // Keep the alpha of the opaque steps (the delegate's framebuffer is bound: its colour is
+  // ColorTexture).
+  ostate->PushFramebufferBindings();
+  this->BeginWorkPass(renWin, this->AlphaTexture, width, height);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglDepthMask(GL_FALSE);
+  bool kept = this->ReadyQuad(renWin, this->KeepAlphaQuad, vtkAntialiasingAlphaFS,
+    Define("ANTIALIASING_KEEP_ALPHA", true));
+  if (kept)
+  {
+    this->ColorTexture->Activate();
+    this->KeepAlphaQuad.Quad->Program->SetUniformi(
+      "source", this->ColorTexture->GetTextureUnit());
+    this->KeepAlphaQuad.Quad->Render();
+    this->ColorTexture->Deactivate();
+  }
+  ostate->PopFramebufferBindings();
+
+  this->TranslucencyPass->Render(s);
+  if (!kept || !this->ReadyQuad(renWin, this->RestoreAlphaQuad, vtkAntialiasingAlphaFS, ""))
+  {
+    return;
+  }
+
+  // The kept alpha back, colour untouched...
+  ostate->vtkglViewport(0, 0, width, height);
+  ostate->vtkglScissor(0, 0, width, height);
+  ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglDepthMask(GL_FALSE);
+  this->AlphaTexture->Activate();
+  this->RestoreAlphaQuad.Quad->Program->SetUniformi(
+    "source", this->AlphaTexture->GetTextureUnit());
+  this->RestoreAlphaQuad.Quad->Render();
+  this->AlphaTexture->Deactivate();
+
+  // ... and the coverage of the translucent geometry in front of the opaque depth blended into it:
+  // a = a_i + (1 - a_i) a, which does not depend on the order of the fragments, leaves
+  // 1 - (1 - a) * (transmittance), the alpha the colour was premultiplied with.
+  ostate->vtkglEnable(GL_BLEND);
+  ostate->vtkglBlendFuncSeparate(GL_ZERO, GL_ONE, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  translucent->Render(s);
 }
 
 //------------------------------------------------------------------------------
@@ -248,9 +481,9 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
   unsigned int targetBinding = 0, targetBuffer = 0;
   ostate->GetCurrentDrawFramebufferState(targetBinding, targetBuffer);
 
-  vtkRenderStepsPass* steps =
-    this->AntialiasOverlays ? nullptr : vtkRenderStepsPass::SafeDownCast(this->DelegatePass);
-  vtkSmartPointer<vtkRenderPass> overlay = steps ? steps->GetOverlayPass() : nullptr;
+  vtkRenderStepsPass* steps = vtkRenderStepsPass::SafeDownCast(this->DelegatePass);
+  vtkSmartPointer<vtkRenderPass> overlay =
+    steps && !this->AntialiasOverlays ? steps->GetOverlayPass() : nullptr;
   bool done = false;
   {
     // Save the state this pass changes; restored at the end of this block.
@@ -271,6 +504,8 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
     {
       steps->SetOverlayPass(nullptr);
     }
+    const StepsChange stepsChange =
+      steps ? this->UseRendererTranslucency(s, steps, frame.Composite) : StepsChange();
     if (frame.InPlace)
     {
       this->DelegatePass->Render(s);
@@ -285,6 +520,7 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
       this->RenderDelegateToTextures(s, frame.Width, frame.Height, frame.Composite);
       ostate->PopFramebufferBindings();
     }
+    this->RestoreDelegateSteps(stepsChange);
     if (overlay)
     {
       steps->SetOverlayPass(overlay);
@@ -314,6 +550,16 @@ void vtkOpenGLAntialiasingPass::ReleaseGraphicsResources(vtkWindow* w)
   DeleteObject(this->WorkFramebuffer, w);
   DeleteObject(this->ColorTexture, w);
   DeleteObject(this->DepthTexture, w);
+  DeleteObject(this->TranslucencyPass, w);
+  DeleteObject(this->PeelingPass, w);
+  if (this->CompositedPass)
+  {
+    this->CompositedPass->Owner = nullptr; // the delegate's step sequence may still hold it
+  }
+  DeleteObject(this->CompositedPass, w);
+  DeleteObject(this->AlphaTexture, w);
+  this->KeepAlphaQuad.Release(w);
+  this->RestoreAlphaQuad.Release(w);
 }
 
 //------------------------------------------------------------------------------
@@ -322,7 +568,7 @@ vtkIdType vtkOpenGLAntialiasingPass::GetTargetMemorySize()
   const int colorBytes =
     (this->ColorTexture && this->ColorTexture->GetVTKDataType() == VTK_FLOAT) ? 16 : 4;
   return TextureBytes(this->ColorTexture, colorBytes) + TextureBytes(this->DepthTexture, 4) +
-    this->GetMethodTargetMemorySize();
+    TextureBytes(this->AlphaTexture, colorBytes / 4) + this->GetMethodTargetMemorySize();
 }
 
 //------------------------------------------------------------------------------

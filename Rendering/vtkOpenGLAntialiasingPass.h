@@ -20,6 +20,19 @@
  *   premultiplied "over" blending; its alpha takes part in the antialiasing;
  * - overlays: the overlay step of a vtkRenderStepsPass delegate (text, 2D actors) is drawn after
  *   the antialiasing, untouched, unless AntialiasOverlays is on;
+ * - translucency: a vtkRenderStepsPass delegate whose translucent step is VTK's plain
+ *   vtkTranslucentPass (its default) draws translucent geometry, at each render, the way the
+ *   renderer would without a pass, from its current settings: order-independent translucency
+ *   (vtkOrderIndependentTranslucentPass), or with UseDepthPeeling, dual depth peeling
+ *   (vtkDualDepthPeelingPass, which with UseDepthPeelingForVolumes also peels the volumes of a
+ *   render that has translucent geometry) or, where the renderer reports dual depth peeling
+ *   unsupported, vtkDepthPeelingPass, with the renderer's MaximumNumberOfPeels and
+ *   OcclusionRatio. The delegate's own translucent step does the drawing inside them and is put
+ *   back after each render; a translucent step of any other class (the user's own) is left
+ *   alone, as is any other delegate. In a composited renderer (layers),
+ *   order-independent translucency leaves the right premultiplied colour but not its coverage in
+ *   alpha: the pass keeps the alpha of the opaque steps in a texture of its own and blends the
+ *   translucent geometry's coverage into it (one more draw of the translucent geometry);
  * - picking: while a vtkHardwareSelector renders, the renderer is drawn without the delegate and
  *   without antialiasing, as vtkOpenGLRenderer does without a pass, so ids are not blended;
  * - KeepAlpha (whether alpha is part of the result), floating-point targets (the copy is floating
@@ -41,9 +54,12 @@
 
 #include <string> // For std::string
 
+class vtkDepthPeelingPass;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
+class vtkOrderIndependentTranslucentPass;
+class vtkRenderStepsPass;
 class vtkShaderProgram;
 class vtkTextureObject;
 
@@ -87,8 +103,9 @@ public:
 
   /**
    * Bytes of GPU memory held by the pass's render targets at the last render: the copy of the
-   * delegate's colour, its depth when the pass renders it into its own textures, and the subclass's
-   * targets.
+   * delegate's colour, its depth when the pass renders it into its own textures, the alpha kept
+   * across order-independent translucency in a composited renderer, and the subclass's targets
+   * (not the textures of VTK's translucency passes).
    */
   virtual vtkIdType GetTargetMemorySize();
 
@@ -158,7 +175,8 @@ protected:
   // destructor reports it once; subclasses report their own targets only when these are gone.
   bool HoldsSharedResources() const
   {
-    return this->ColorTexture || this->DelegateFramebuffer || this->WorkFramebuffer;
+    return this->ColorTexture || this->DelegateFramebuffer || this->WorkFramebuffer ||
+      this->AlphaTexture;
   }
 
   vtkOpenGLFramebufferObject* DelegateFramebuffer = nullptr;
@@ -176,6 +194,38 @@ private:
   // Copies the viewport of the target framebuffer (binding and colour buffer) into ColorTexture.
   void CopyTargetToColorTexture(
     const Frame& frame, unsigned int targetBinding, unsigned int targetBuffer);
+  // What UseRendererTranslucency changed on a vtkRenderStepsPass delegate, for
+  // RestoreDelegateSteps.
+  struct StepsChange
+  {
+    vtkRenderStepsPass* Steps = nullptr;
+    vtkRenderPass* Translucent = nullptr; // the step wrapped (held by its wrapper meanwhile)
+    vtkRenderPass* Volumetric = nullptr;  // the volume step moved into dual depth peeling
+  };
+  // Gives the delegate's translucent step the translucency the renderer would use without a pass
+  // (see the class description), wrapping the step; returns what it changed. `composite`: the
+  // delegate renders into ColorTexture to be composited (see CompositedTranslucency).
+  StepsChange UseRendererTranslucency(
+    const vtkRenderState* s, vtkRenderStepsPass* steps, bool composite);
+  // Puts the delegate's steps back as they were before UseRendererTranslucency.
+  void RestoreDelegateSteps(const StepsChange& change);
+
+  // The translucent step of a composited renderer with order-independent translucency: runs
+  // RenderCompositedTranslucency.
+  class CompositedTranslucency;
+  // vtkOrderIndependentTranslucentPass (TranslucencyPass, wrapping `translucent`) leaves the
+  // right premultiplied colour in ColorTexture, but an alpha that is not the coverage it was
+  // premultiplied with: keeps the alpha before it in AlphaTexture, writes it back afterwards and
+  // blends the coverage of `translucent`'s geometry into it.
+  void RenderCompositedTranslucency(const vtkRenderState* s, vtkRenderPass* translucent);
+
+  // The translucent steps of UseRendererTranslucency, made when first needed.
+  vtkOrderIndependentTranslucentPass* TranslucencyPass = nullptr;
+  vtkDepthPeelingPass* PeelingPass = nullptr; // a vtkDualDepthPeelingPass where supported
+  CompositedTranslucency* CompositedPass = nullptr;
+  vtkTextureObject* AlphaTexture = nullptr;
+  ShaderVariant KeepAlphaQuad, RestoreAlphaQuad;
+
   // Renders the delegate into ColorTexture and DepthTexture (cleared to transparent black first
   // when compositing over the target).
   void RenderDelegateToTextures(const vtkRenderState* s, int width, int height, bool composite);

@@ -163,6 +163,20 @@ inline vtkSmartPointer<vtkImageData> Crop(vtkImageData* image, int x0, int y0, i
   return out;
 }
 
+// The premultiplied RGBA `upper` composited over the RGB `lower`: upper + (1 - alpha) lower.
+inline vtkSmartPointer<vtkImageData> Over(vtkImageData* upper, vtkImageData* lower)
+{
+  int dims[3];
+  lower->GetDimensions(dims);
+  auto out = MakeImage(dims[0], dims[1], 3);
+  FillImage(out, [&](int x, int y, int, int k) {
+    const double a = GetValue(upper, x, y, 3) / 255.0;
+    return std::min(
+      255.0, std::round(GetValue(upper, x, y, k) + (1.0 - a) * GetValue(lower, x, y, k)));
+  });
+  return out;
+}
+
 // Shows or hides the 3D actors and the 2D actors (overlays) of a renderer.
 inline void SetVisibility(vtkRenderer* renderer, bool actors3D, bool actors2D)
 {

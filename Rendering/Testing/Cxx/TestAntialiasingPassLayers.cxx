@@ -94,19 +94,6 @@ std::vector<bool> Near(vtkImageData* mask, vtkImageData* background, int radius)
   return near;
 }
 
-// The premultiplied RGBA `upper` composited over the RGB `lower`: upper + (1 - alpha) lower.
-vtkSmartPointer<vtkImageData> Over(vtkImageData* upper, vtkImageData* lower)
-{
-  int dims[3];
-  lower->GetDimensions(dims);
-  auto out = MakeImage(dims[0], dims[1], 3);
-  FillImage(out, [&](int x, int y, int, int k) {
-    const double a = GetValue(upper, x, y, 3) / 255.0;
-    return std::min(255.0, std::round(GetValue(upper, x, y, k) + (1.0 - a) * GetValue(lower, x, y, k)));
-  });
-  return out;
-}
-
 // Checks the pass on `upper`, drawn after `lower` in `window` with its colour buffer preserved.
 void CheckComposite(const PassMethod& method, vtkRenderWindow* window, vtkRenderer* lower,
   vtkRenderer* upper, const char* what)

@@ -3,7 +3,8 @@
 """The render pass from Python: a small scene rendered offscreen without antialiasing and with
 vtkmlaa.enable(renderer), saved to PNG; the pass changes edge pixels, leaves pixels without an
 edge alone, and gives the image vtkImageMLAA gives on the screenshot without antialiasing (within
-2/255 on at least 99.5 % of the pixels, as the C++ test TestMLAAPassMatchesFilter requires).
+2/255 on at least 99.5 % of the pixels, as the C++ test TestMLAAPassMatchesFilter requires), also
+with translucent geometry, depth peeling off and on (issue 21).
 Needs a display (ctest runs under scripts/with-xvfb.sh). Usage: TestPythonRenderPass.py OUT_DIR"""
 import os
 import sys
@@ -101,5 +102,50 @@ for method, filter_class in (("mlaa", vtkmlaa.vtkImageMLAA), ("dlaa", vtkmlaa.vt
     check(vtkmlaa.disable(renderer), method + ": disable")
     check((screenshot(window) == plain).all(), method + ": after disable, the plain image again")
     window.Finalize()
+
+
+def translucent_scene():
+    """Three overlapping spheres, one opaque and two translucent, on white (issue 21)."""
+    window, renderer = scene()
+    renderer.RemoveAllViewProps()
+    renderer.SetBackground(1, 1, 1)
+    for centre, opacity, colour in (((-0.5, 0, -0.6), 1.0, (0.9, 0.3, 0.2)),
+                                    ((0, 0, 0), 0.4, (0.2, 0.5, 0.9)),
+                                    ((0.5, 0.1, 0.5), 0.5, (0.3, 0.8, 0.3))):
+        source = vtkSphereSource()
+        source.SetCenter(*centre)
+        source.SetThetaResolution(32)
+        source.SetPhiResolution(24)
+        mapper = vtkPolyDataMapper()
+        mapper.SetInputConnection(source.GetOutputPort())
+        actor = vtkActor()
+        actor.SetMapper(mapper)
+        actor.GetProperty().SetColor(*colour)
+        actor.GetProperty().SetOpacity(opacity)
+        renderer.AddActor(actor)
+    window.SetMultiSamples(0)
+    renderer.ResetCamera()
+    renderer.GetActiveCamera().Azimuth(30)
+    return window, renderer
+
+
+# Translucent geometry: enable() draws it as the renderer does on its own (order-independent
+# translucency, or depth peeling with UseDepthPeeling), so the pass still gives the filter's
+# result on the renderer's own screenshot.
+for method in ("mlaa", "dlaa"):
+    for peeling in (False, True):
+        window, renderer = translucent_scene()
+        renderer.SetUseDepthPeeling(peeling)
+        plain = screenshot(window)
+        vtkmlaa.enable(renderer, method=method)
+        shot = screenshot(window)
+        expected = vtkmlaa.antialias_array(plain, method=method)
+        share = within(shot, expected)
+        what = "%s, translucent spheres, depth peeling %s" % (method, "on" if peeling else "off")
+        print("%s: %.4f %% of pixels within 2/255 of the filter" % (what, 100 * share))
+        check(share >= 0.995, "%s: pass and filter agree on %.4f of the pixels" % (what, share))
+        check((shot != plain).any(axis=2).sum() > 100, what + ": antialiased")
+        vtkmlaa.disable(renderer)
+        window.Finalize()
 
 check.finish()
