@@ -4,6 +4,7 @@
  * mlaa: morphological antialiasing of image files.
  *
  *   mlaa [options] INPUT OUTPUT
+ *   mlaa [options] --format NAME INPUT|- -      (- : standard input / standard output)
  *   mlaa [options] --output-dir DIR INPUT...
  *   mlaa --area-texture D OUTPUT
  *

@@ -8,6 +8,8 @@
 #include <fcntl.h>
 #include <sys/stat.h>
 
+#include <cstdlib>
+
 namespace mlaaToolTest
 {
 namespace
@@ -200,7 +202,7 @@ void InputOpenedOnce()
 }
 
 // A damaged compressed TIFF: the message says what failed, in the tool's words, then the
-// library's text (OpenImageIO alone says "ZLib error:" or "Decoding error at scanline N").
+// library's text (libtiff's, through OpenImageIO: "Decoding error at scanline N" here).
 void DamagedCompressedTIFF()
 {
   const fs::path path = WorkFile("damaged.tif");
@@ -319,6 +321,21 @@ void StandardStreams()
     MLAA_CHECK(run.Status == r.Status && IsOneMlaaLine(run.Err) && run.Out.empty());
     MLAA_CHECK(run.Err.compare(0, r.Message.size(), r.Message) == 0);
     MLAA_CHECK(Listing(Where().Work) == listing);
+  }
+
+  // A terminal as standard input: the user forgot the redirection; refused, not waited on.
+  const int master = posix_openpt(O_RDWR | O_NOCTTY);
+  if (MLAA_CHECK(master >= 0 && grantpt(master) == 0 && unlockpt(master) == 0))
+  {
+    const Run run = RunTool({ "-", WorkFile("from-terminal.png").string() }, {}, 30.0, false,
+      ptsname(master));
+    MLAA_CHECK(run.Status == Failure && !run.TimedOut && IsOneMlaaLine(run.Err));
+    MLAA_CHECK(run.Err.find("mlaa: standard input: is a terminal") == 0);
+    MLAA_CHECK(!fs::exists(WorkFile("from-terminal.png")));
+  }
+  if (master >= 0)
+  {
+    close(master);
   }
 }
 } // namespace

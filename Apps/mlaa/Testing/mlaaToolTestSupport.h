@@ -206,7 +206,8 @@ void RoundTrip(vtkImageData* pixels, OIIO::TypeDesc fileType, const std::string&
   const std::string& outputName, const std::vector<std::string>& options = {},
   const std::function<void(vtkImageMLAA*)>& configure = nullptr);
 
-// Names in `directory` that are temporary outputs of the tool (".NAME.mlaa-XXXXXX.ext").
+// Names in `directory` that are named temporary outputs of the tool (".NAME.mlaa-PID-XXXXXX.ext",
+// the fallback where files without a name cannot be made, or an output being put in place).
 int TemporaryFiles(const fs::path& directory);
 
 // A valid input image for the error cases.
