@@ -21,6 +21,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -617,8 +618,8 @@ std::set<std::string>& SweptDirectories()
   return swept;
 }
 
-// Where O_TMPFILE cannot be used, the image goes to a named temporary; this file test hook
-// forces that path (MLAA_TEST_NAMED_TEMPORARY=1).
+// Where O_TMPFILE cannot be used, the image goes to a named temporary; in mlaa-test-hooks,
+// MLAA_TEST_NAMED_TEMPORARY=1 takes that path everywhere, for the tests of the fallback.
 bool UnnamedFilesAllowed()
 {
 #ifdef MLAA_TEST_HOOKS

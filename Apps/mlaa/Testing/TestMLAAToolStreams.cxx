@@ -222,11 +222,42 @@ void DamagedCompressedTIFF()
     MLAA_CHECK(out->write_image(OIIO::TypeDesc::UINT8, last, 3, -row));
     MLAA_CHECK(out->close());
   }
+  // The compressed data of every tile damaged past its zlib header: TileOffsets (324) and
+  // TileByteCounts (325) of the first directory of the little-endian file OpenImageIO writes.
   std::string bytes = ReadText(path);
-  MLAA_CHECK(bytes.size() > 200);
-  for (size_t k = bytes.size() / 2; k < bytes.size() / 2 + 30; ++k)
+  auto number = [&bytes](size_t at, int size) -> size_t
   {
-    bytes[k] = static_cast<char>(bytes[k] ^ 0xff); // inside the compressed tiles
+    size_t value = 0;
+    for (int k = size - 1; k >= 0 && at + k < bytes.size(); --k)
+    {
+      value = value * 256 + static_cast<unsigned char>(bytes[at + k]);
+    }
+    return value;
+  };
+  if (!MLAA_CHECK(bytes.compare(0, 4, std::string("II*\0", 4)) == 0))
+  {
+    return;
+  }
+  const size_t directory = number(4, 4);
+  std::vector<size_t> offsets, counts;
+  for (size_t entry = 0; entry < number(directory, 2); ++entry)
+  {
+    const size_t at = directory + 2 + 12 * entry;
+    const size_t tag = number(at, 2), type = number(at + 2, 2), count = number(at + 4, 4);
+    const int size = type == 3 ? 2 : 4; // SHORT or LONG
+    const size_t values = count * size <= 4 ? at + 8 : number(at + 8, 4);
+    for (size_t k = 0; (tag == 324 || tag == 325) && k < count; ++k)
+    {
+      (tag == 324 ? offsets : counts).push_back(number(values + k * size, size));
+    }
+  }
+  MLAA_CHECK(!offsets.empty() && offsets.size() == counts.size());
+  for (size_t tile = 0; tile < offsets.size() && tile < counts.size(); ++tile)
+  {
+    for (size_t k = 2; k < counts[tile] && k < 40 && offsets[tile] + k < bytes.size(); ++k)
+    {
+      bytes[offsets[tile] + k] = static_cast<char>(bytes[offsets[tile] + k] ^ 0x5a);
+    }
   }
   WriteText(path, bytes);
   const fs::path output = WorkFile("damaged-out.png");
