@@ -4,6 +4,7 @@
  * mlaa: morphological antialiasing of image files.
  *
  *   mlaa [options] INPUT OUTPUT
+ *   mlaa [options] --format NAME INPUT|- -      (- : standard input / standard output)
  *   mlaa [options] --output-dir DIR INPUT...
  *   mlaa --area-texture D OUTPUT
  *
@@ -40,6 +41,8 @@
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkStringOutputWindow.h"
+
+#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -167,7 +170,7 @@ private:
 //------------------------------------------------------------------------------
 // The two things the tool does
 
-void WriteAreaTexture(int cellSize, const std::string& path)
+void WriteAreaTexture(int cellSize, const std::string& path, const std::string& format)
 {
   vtkNew<vtkMLAAAreaTexture> texture;
   texture->SetMaxDistance(cellSize - 1);
@@ -177,7 +180,8 @@ void WriteAreaTexture(int cellSize, const std::string& path)
   const int size = texture->GetTextureSize();
   const double unitRange[2] = { 0.0, 1.0 };
   const std::string note = mlaa::WriteImageFile(image, path,
-    OIIO::ImageSpec(size, size, 3, OIIO::TypeDesc::UINT8), OIIO::TypeDesc::UINT8, unitRange);
+    OIIO::ImageSpec(size, size, 3, OIIO::TypeDesc::UINT8), OIIO::TypeDesc::UINT8, unitRange,
+    format);
   if (!note.empty())
   {
     std::cerr << "mlaa: warning: " << mlaa::Printable(note, 600) << std::endl;
@@ -286,7 +290,7 @@ void Antialias(const CommandLine& cl, const std::string& inputPath, const std::s
   const std::string error = messages.GetError();
   if (!error.empty() || !scalars || dims[0] != input.Spec.width || dims[1] != input.Spec.height)
   {
-    throw mlaa::Error(mlaa::Printable(inputPath) +
+    throw mlaa::Error(mlaa::DisplayName(inputPath, false) +
       ": cannot antialias: " +
       (error.empty() ? std::string(filter->GetClassName()) + " produced no image" : error));
   }
@@ -313,7 +317,7 @@ void Antialias(const CommandLine& cl, const std::string& inputPath, const std::s
     pixelType = OIIO::TypeDesc::UINT8;
   }
   const std::string note =
-    mlaa::WriteImageFile(result, outputPath, description, pixelType, valueRange);
+    mlaa::WriteImageFile(result, outputPath, description, pixelType, valueRange, cl.Format);
   if (!note.empty())
   {
     std::cerr << "mlaa: warning: " << mlaa::Printable(note, 600) << std::endl;
@@ -367,6 +371,8 @@ int AntialiasBatch(const CommandLine& cl)
   mlaa::SetImagesInFlight(settings.Jobs);
   std::string backend;
   PrepareBatch(cl, backend);
+  // Once for every file: the children inherit that it was done.
+  mlaa::SweepStaleTemporaries(cl.OutputDirectory);
   settings.ProcessFile = [&](const mlaa::BatchFile& file)
   {
     vtkSMPTools::SetBackend(backend.c_str());
@@ -405,17 +411,30 @@ int main(int argc, char* argv[])
       facts.Processors = mlaa::CountProcessors();
       mlaa::PrintUsage(std::cout, facts);
     }
-    else if (cl.AreaTextureCellSize)
-    {
-      WriteAreaTexture(cl.AreaTextureCellSize, cl.Files[0]);
-    }
     else if (cl.Batch)
     {
       status = AntialiasBatch(cl);
     }
     else
     {
-      Antialias(cl, cl.Files[0], cl.Files[1]);
+      // Refused before any work: an unknown --format, and binary data for a terminal.
+      if (!cl.Format.empty())
+      {
+        mlaa::CheckOutputFormat(cl.Format);
+      }
+      if (cl.Files.back() == "-" && isatty(STDOUT_FILENO))
+      {
+        throw UsageError("standard output is a terminal: redirect it (mlaa ... - > out.png) or "
+                         "name an OUTPUT file");
+      }
+      if (cl.AreaTextureCellSize)
+      {
+        WriteAreaTexture(cl.AreaTextureCellSize, cl.Files[0], cl.Format);
+      }
+      else
+      {
+        Antialias(cl, cl.Files[0], cl.Files[1]);
+      }
     }
   }
   catch (const UsageError& e)

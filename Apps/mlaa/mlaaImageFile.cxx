@@ -8,19 +8,26 @@
 #include "vtkPointData.h"
 #include "vtkType.h"
 
+#include <dirent.h>
+#include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <memory>
+#include <random>
+#include <set>
 #include <sstream>
 #include <type_traits>
 #include <vector>
@@ -70,14 +77,6 @@ size_t PrintableUTF8Length(const std::string& text, size_t i)
     return 0;
   }
   return length;
-}
-
-// An error of OpenImageIO's (possibly empty) as one line, or `fallback` if it says nothing.
-std::string OneLine(const std::string& text, const std::string& fallback = "")
-{
-  const std::string line = Printable(text);
-  return line.empty() ? (fallback.empty() ? std::string("OpenImageIO gave no reason") : fallback)
-                      : line;
 }
 
 // Where several channels have their own types (an EXR file with half colour and float depth,
@@ -159,88 +158,6 @@ double IntegerTypeMaximum(OIIO::TypeDesc type)
   }
 }
 
-// The file that an image is written to before it replaces the destination: created empty, with
-// the permissions the destination has (or would get), and removed again unless Commit()ed.
-class TemporaryFile
-{
-public:
-  explicit TemporaryFile(const std::string& destination)
-  {
-    namespace fs = std::filesystem;
-    const fs::path target(destination);
-    fs::path directory = target.parent_path();
-    if (directory.empty())
-    {
-      directory = ".";
-    }
-    // Hidden, unique, and with the destination's extension so that OpenImageIO writes the same
-    // format: "dir/.name.mlaa-XXXXXX.ext".
-    const std::string extension = target.extension().string();
-    std::string pattern =
-      (directory / ("." + target.stem().string() + ".mlaa-XXXXXX" + extension)).string();
-    std::vector<char> name(pattern.begin(), pattern.end());
-    name.push_back('\0');
-    const int fd = mkstemps(name.data(), static_cast<int>(extension.size()));
-    if (fd < 0)
-    {
-      throw Error(Printable(destination) + ": cannot create a file in '" +
-        Printable(directory.string()) + "': " + std::strerror(errno));
-    }
-    this->Path = name.data();
-    SetTemporaryOutput(this->Path.c_str()); // removed even if a library crashes
-
-    // mkstemps creates the file for its owner only; give it the permissions of the file it
-    // replaces, or those a newly created file gets.
-    struct stat existing;
-    mode_t mode;
-    if (stat(destination.c_str(), &existing) == 0 && S_ISREG(existing.st_mode))
-    {
-      mode = existing.st_mode & 07777;
-    }
-    else
-    {
-      const mode_t mask = umask(0);
-      umask(mask);
-      mode = 0666 & ~mask;
-    }
-    const int chmodResult = fchmod(fd, mode);
-    const int chmodErrno = errno;
-    close(fd);
-    if (chmodResult != 0)
-    {
-      throw Error(Printable(destination) + ": cannot set the permissions of '" +
-        Printable(this->Path) + "': " + std::strerror(chmodErrno));
-    }
-  }
-
-  ~TemporaryFile()
-  {
-    if (!this->Path.empty())
-    {
-      std::remove(this->Path.c_str());
-      SetTemporaryOutput(nullptr);
-    }
-  }
-
-  const std::string& GetPath() const { return this->Path; }
-
-  // Renames the file over `destination`; from then on it is no longer removed.
-  void Commit(const std::string& destination)
-  {
-    if (std::rename(this->Path.c_str(), destination.c_str()) != 0)
-    {
-      throw Error(Printable(destination) + ": cannot replace it: " + std::strerror(errno));
-    }
-    this->Path.clear();
-    SetTemporaryOutput(nullptr);
-  }
-
-private:
-  TemporaryFile(const TemporaryFile&) = delete;
-  void operator=(const TemporaryFile&) = delete;
-
-  std::string Path;
-};
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -415,15 +332,11 @@ std::string Name(const std::string& path)
   return Printable(path, 160, false);
 }
 
-// Only regular files are read: a FIFO blocks the reader, /dev/zero and its kind never end, a
-// directory or socket is no image. Checked before any library opens the file.
-void CheckRegularFile(const std::string& path)
+// What a file's status says it is, if it is not an image file that can be read: only regular
+// files are read (a FIFO blocks the reader, /dev/zero and its kind never end, a directory or
+// socket is no image), and an empty file holds nothing.
+void CheckStatus(const struct stat& status, const std::string& name)
 {
-  struct stat status;
-  if (stat(path.c_str(), &status) != 0)
-  {
-    throw Error(Name(path) + ": " + std::strerror(errno));
-  }
   const char* kind = S_ISDIR(status.st_mode) ? "a directory"
     : S_ISFIFO(status.st_mode)               ? "a FIFO (named pipe)"
     : S_ISCHR(status.st_mode)                ? "a character device"
@@ -432,16 +345,548 @@ void CheckRegularFile(const std::string& path)
                                              : nullptr;
   if (kind)
   {
-    throw Error(Name(path) + ": is " + kind + ", not a regular file");
+    throw Error(name + ": is " + kind + ", not a regular file");
   }
   if (!S_ISREG(status.st_mode))
   {
-    throw Error(Name(path) + ": is not a regular file");
+    throw Error(name + ": is not a regular file");
   }
   if (status.st_size == 0)
   {
-    throw Error(Name(path) + ": the file is empty");
+    throw Error(name + ": the file is empty");
   }
+}
+
+// "/proc/self/fd/N": the open file `fd` under a name that libraries which open files by name
+// (OpenImageIO's readers and writers) can open, reaching that very file whatever happens to
+// its own name meanwhile; "" where /proc is not mounted.
+std::string DescriptorPath(int fd)
+{
+  const std::string path = "/proc/self/fd/" + std::to_string(fd);
+  struct stat byName, byDescriptor;
+  if (stat(path.c_str(), &byName) != 0 || fstat(fd, &byDescriptor) != 0 ||
+    byName.st_dev != byDescriptor.st_dev || byName.st_ino != byDescriptor.st_ino)
+  {
+    return "";
+  }
+  return path;
+}
+
+// `text` with every `from` replaced by `to` (the descriptor path by the user's name in
+// OpenImageIO's messages).
+std::string ReplaceAll(std::string text, const std::string& from, const std::string& to)
+{
+  if (from.empty())
+  {
+    return text;
+  }
+  for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+  {
+    text.replace(at, from.size(), to);
+  }
+  return text;
+}
+
+// Writes all of `size` bytes to `fd`; false (errno set) on failure.
+bool WriteAll(int fd, const char* data, size_t size)
+{
+  while (size > 0)
+  {
+    const ssize_t done = write(fd, data, size);
+    if (done < 0 && errno == EINTR)
+    {
+      continue;
+    }
+    if (done <= 0)
+    {
+      return false;
+    }
+    data += done;
+    size -= static_cast<size_t>(done);
+  }
+  return true;
+}
+
+#ifdef MLAA_TEST_HOOKS
+// For tests only: MLAA_TEST_REPLACE_INPUT_BEFORE_OPEN=PATH (or ..._AFTER_OPEN) renames PATH
+// over the input between the tool's check of its name and its open() (or after the open()),
+// as another process could, so that the tests can show that what is read is what was checked.
+void ReplaceInputForTests(const char* variable, const std::string& input)
+{
+  const char* replacement = std::getenv(variable);
+  if (replacement && *replacement && std::rename(replacement, input.c_str()) != 0)
+  {
+    std::fprintf(stderr, "%s: cannot rename %s: %s\n", variable, replacement, std::strerror(errno));
+    std::exit(4);
+  }
+}
+#endif
+
+// The input, opened once: a regular file by name (checked by name first, so that a device is
+// never even opened, then checked again on the open descriptor, which is what is read), or
+// standard input ("-"), copied into a file without a name so that readers can seek in it.
+class InputFile
+{
+public:
+  explicit InputFile(const std::string& path)
+    : Shown(DisplayName(path, false))
+  {
+    if (path == "-")
+    {
+      this->ReadStandardInput();
+      return;
+    }
+    struct stat status;
+    if (stat(path.c_str(), &status) != 0)
+    {
+      throw Error(this->Shown + ": " + std::strerror(errno));
+    }
+    CheckStatus(status, this->Shown);
+#ifdef MLAA_TEST_HOOKS
+    ReplaceInputForTests("MLAA_TEST_REPLACE_INPUT_BEFORE_OPEN", path);
+#endif
+    // O_NONBLOCK: a FIFO put in the file's place after the check must not block the open.
+    this->Fd = open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY | O_NONBLOCK);
+    if (this->Fd < 0)
+    {
+      throw Error(this->Shown + ": " + std::strerror(errno));
+    }
+    if (fstat(this->Fd, &status) != 0)
+    {
+      throw Error(this->Shown + ": " + std::strerror(errno));
+    }
+    CheckStatus(status, this->Shown);
+    fcntl(this->Fd, F_SETFL, fcntl(this->Fd, F_GETFL) & ~O_NONBLOCK);
+#ifdef MLAA_TEST_HOOKS
+    ReplaceInputForTests("MLAA_TEST_REPLACE_INPUT_AFTER_OPEN", path);
+#endif
+    this->ReadPath = DescriptorPath(this->Fd);
+    if (this->ReadPath.empty())
+    {
+      this->ReadPath = path; // no /proc: by name, as checked just before
+    }
+    else
+    {
+      // Readers are tried in the order OpenImageIO would for the name: its extension's first.
+      this->FormatHint = std::filesystem::path(path).extension().string();
+      if (this->FormatHint.size() > 1)
+      {
+        this->FormatHint.erase(0, 1);
+      }
+    }
+  }
+
+  ~InputFile()
+  {
+    if (this->Fd >= 0)
+    {
+      close(this->Fd);
+    }
+  }
+
+  /** The name to give OpenImageIO. */
+  const std::string& GetReadPath() const { return this->ReadPath; }
+  /** The extension of the input's name ("" for standard input). */
+  const std::string& GetFormatHint() const { return this->FormatHint; }
+  /** OpenImageIO's message with the descriptor path replaced by the input's name. */
+  std::string Explain(const std::string& message) const
+  {
+    return ReplaceAll(message, this->ReadPath, this->Shown);
+  }
+
+private:
+  InputFile(const InputFile&) = delete;
+  void operator=(const InputFile&) = delete;
+
+  void ReadStandardInput()
+  {
+    if (isatty(STDIN_FILENO))
+    {
+      throw Error(this->Shown + ": is a terminal; pipe an image into it (mlaa - OUT.png < IN.png)");
+    }
+    this->Fd = CreateAnonymousFile();
+    if (this->Fd < 0)
+    {
+      throw Error(this->Shown + ": cannot create a file to hold it: " + std::strerror(errno));
+    }
+    std::vector<char> buffer(1 << 16);
+    off_t total = 0;
+    for (;;)
+    {
+      const ssize_t got = read(STDIN_FILENO, buffer.data(), buffer.size());
+      if (got < 0 && errno == EINTR)
+      {
+        continue;
+      }
+      if (got < 0)
+      {
+        throw Error(this->Shown + ": " + std::strerror(errno));
+      }
+      if (got == 0)
+      {
+        break;
+      }
+      if (!WriteAll(this->Fd, buffer.data(), static_cast<size_t>(got)))
+      {
+        throw Error(this->Shown + ": cannot hold it in a temporary file: " + std::strerror(errno));
+      }
+      total += got;
+    }
+    if (total == 0)
+    {
+      throw Error(this->Shown + ": is empty");
+    }
+    this->ReadPath = DescriptorPath(this->Fd);
+    if (this->ReadPath.empty())
+    {
+      throw Error(this->Shown + ": cannot be read without /proc/self/fd (is /proc mounted?)");
+    }
+  }
+
+  std::string Shown;
+  std::string ReadPath;
+  std::string FormatHint;
+  int Fd = -1;
+};
+
+// Opens `path` for reading the way OpenImageIO's ImageInput::open does, but with the reader
+// for `hint` (an extension or format name, may be "") tried first: `path` may be a descriptor
+// path without an extension. On failure, the first reader's error is the one kept.
+std::unique_ptr<OIIO::ImageInput> OpenReader(
+  const std::string& path, const std::string& hint, const OIIO::ImageSpec* config, std::string& error)
+{
+  if (!hint.empty())
+  {
+    std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::create(hint, false, config);
+    OIIO::geterror();
+    if (input)
+    {
+      OIIO::ImageSpec spec;
+      if (config ? input->open(path, spec, *config) : input->open(path, spec))
+      {
+        return input;
+      }
+      error = input->geterror();
+    }
+  }
+  std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::open(path, config);
+  const std::string generic = input ? std::string() : OIIO::geterror();
+  if (!input && error.empty())
+  {
+    error = generic;
+  }
+  return input;
+}
+
+// Stale temporaries of ours: ".NAME.mlaa-PID-XXXXXX.EXT", regular, ours, untouched for this
+// long, and their process gone.
+constexpr time_t StaleTemporarySeconds = 3600;
+
+// The process id in a name of our temporaries' pattern, or 0 if it is not one.
+long TemporaryOwner(const std::string& name)
+{
+  const size_t mark = name.rfind(".mlaa-");
+  if (name.empty() || name[0] != '.' || mark == std::string::npos || mark == 0)
+  {
+    return 0;
+  }
+  size_t at = mark + 6;
+  long pid = 0;
+  const size_t digits = at;
+  while (at < name.size() && name[at] >= '0' && name[at] <= '9' && at - digits < 10)
+  {
+    pid = pid * 10 + (name[at++] - '0');
+  }
+  if (at == digits || at >= name.size() || name[at] != '-' || name.size() < at + 7)
+  {
+    return 0;
+  }
+  for (size_t k = at + 1; k < at + 7; ++k)
+  {
+    if (!std::isalnum(static_cast<unsigned char>(name[k])))
+    {
+      return 0;
+    }
+  }
+  return at + 7 == name.size() || name[at + 7] == '.' ? pid : 0;
+}
+
+// Directories already swept by this process (or by the batch's parent before it forked).
+std::set<std::string>& SweptDirectories()
+{
+  static std::set<std::string> swept;
+  return swept;
+}
+
+// Where O_TMPFILE cannot be used, the image goes to a named temporary; in mlaa-test-hooks,
+// MLAA_TEST_NAMED_TEMPORARY=1 takes that path everywhere, for the tests of the fallback.
+bool UnnamedFilesAllowed()
+{
+#ifdef MLAA_TEST_HOOKS
+  const char* named = std::getenv("MLAA_TEST_NAMED_TEMPORARY");
+  return !(named && *named == '1');
+#else
+  return true;
+#endif
+}
+
+// A new name for a temporary beside `destination`, of the pattern TemporaryOwner reads, as a
+// mkstemps template ("XXXXXX" to fill), and the length of its suffix.
+std::string TemporaryTemplate(const std::string& destination, int& suffixLength)
+{
+  namespace fs = std::filesystem;
+  const fs::path target(destination);
+  fs::path directory = target.parent_path();
+  if (directory.empty())
+  {
+    directory = ".";
+  }
+  const std::string extension = target.extension().string();
+  suffixLength = static_cast<int>(extension.size());
+  return (directory / ("." + target.stem().string() + ".mlaa-" + std::to_string(getpid()) +
+                        "-XXXXXX" + extension))
+    .string();
+}
+
+// Where an image is written before it becomes the output: the output's directory or standard
+// output gets the image only once it is complete and read back (Commit), and nothing stays
+// behind whatever ends the process.
+//
+// - A file: a file without a name in the destination's directory (O_TMPFILE), which OpenImageIO
+//   writes through /proc/self/fd/N and which is linked into place on success (linkat, then a
+//   rename where the destination exists); a process killed by anything, SIGKILL included,
+//   leaves nothing. Where the file system or the kernel has no O_TMPFILE (or /proc is not
+//   mounted), a hidden named temporary ".NAME.mlaa-PID-XXXXXX.EXT" is written and renamed
+//   instead: removed on errors and on signals that can be caught, and, should SIGKILL leave one,
+//   removed by a later run of the tool in that directory (SweepStaleTemporaries).
+// - Standard output ("-"): a file without a name in $TMPDIR, copied to standard output once it
+//   is complete, so that nothing partial reaches the pipe.
+class OutputFile
+{
+public:
+  explicit OutputFile(const std::string& destination)
+    : Destination(destination)
+  {
+    if (destination == "-")
+    {
+      this->Fd = CreateAnonymousFile();
+      this->WritePath = this->Fd >= 0 ? DescriptorPath(this->Fd) : std::string();
+      if (this->WritePath.empty())
+      {
+        throw Error(DisplayName(destination, true) + ": cannot create a file to hold the image " +
+          "before it is sent (" +
+          (this->Fd < 0 ? std::string(std::strerror(errno)) : "is /proc mounted?") + ")");
+      }
+      return;
+    }
+
+    namespace fs = std::filesystem;
+    fs::path directory = fs::path(destination).parent_path();
+    if (directory.empty())
+    {
+      directory = ".";
+    }
+    this->Directory = directory.string();
+    // The permissions of the file it replaces, or those a newly created file gets.
+    struct stat existing;
+    mode_t mode;
+    if (stat(destination.c_str(), &existing) == 0 && S_ISREG(existing.st_mode))
+    {
+      mode = existing.st_mode & 07777;
+    }
+    else
+    {
+      const mode_t mask = umask(0);
+      umask(mask);
+      mode = 0666 & ~mask;
+    }
+
+    if (UnnamedFilesAllowed())
+    {
+      this->Fd = open(this->Directory.c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0600);
+      if (this->Fd >= 0 && fchmod(this->Fd, mode) == 0)
+      {
+        this->WritePath = DescriptorPath(this->Fd);
+      }
+      if (!this->WritePath.empty())
+      {
+        return;
+      }
+      if (this->Fd >= 0)
+      {
+        close(this->Fd);
+        this->Fd = -1;
+      }
+    }
+
+    // A named temporary; first the stale ones a SIGKILL may have left here.
+    SweepStaleTemporaries(this->Directory);
+    int suffixLength = 0;
+    const std::string pattern = TemporaryTemplate(destination, suffixLength);
+    std::vector<char> name(pattern.begin(), pattern.end());
+    name.push_back('\0');
+    const int fd = mkstemps(name.data(), suffixLength);
+    if (fd < 0)
+    {
+      throw Error(Name(destination) + ": cannot create a file in '" + Name(this->Directory) +
+        "': " + std::strerror(errno));
+    }
+    this->Named = name.data();
+    SetTemporaryOutput(this->Named.c_str()); // removed even if a library crashes
+    const int chmodResult = fchmod(fd, mode);
+    const int chmodErrno = errno;
+    close(fd);
+    if (chmodResult != 0)
+    {
+      throw Error(Name(destination) + ": cannot set the permissions of '" + Name(this->Named) +
+        "': " + std::strerror(chmodErrno));
+    }
+    this->WritePath = this->Named;
+  }
+
+  ~OutputFile()
+  {
+    if (this->Fd >= 0)
+    {
+      close(this->Fd);
+    }
+    if (!this->Named.empty())
+    {
+      std::remove(this->Named.c_str());
+      SetTemporaryOutput(nullptr);
+    }
+  }
+
+  /** The name OpenImageIO writes (and reads back). */
+  const std::string& GetWritePath() const { return this->WritePath; }
+
+  /** The write path replaced by the destination's name in a message. */
+  std::string Explain(const std::string& message) const
+  {
+    return ReplaceAll(message, this->WritePath, DisplayName(this->Destination, true));
+  }
+
+  /** Makes the written file the output. */
+  void Commit()
+  {
+    if (this->Destination == "-")
+    {
+      this->CopyToStandardOutput();
+    }
+    else if (this->Named.empty())
+    {
+      this->LinkIntoPlace();
+    }
+    else
+    {
+      this->RenameOver(this->Named);
+    }
+  }
+
+private:
+  OutputFile(const OutputFile&) = delete;
+  void operator=(const OutputFile&) = delete;
+
+  void RenameOver(const std::string& from)
+  {
+    if (std::rename(from.c_str(), this->Destination.c_str()) != 0)
+    {
+      throw Error(Name(this->Destination) + ": cannot replace it: " + std::strerror(errno));
+    }
+    this->Named.clear();
+    SetTemporaryOutput(nullptr);
+  }
+
+  void LinkIntoPlace()
+  {
+    // A new output appears whole under its name at once.
+    if (linkat(AT_FDCWD, this->WritePath.c_str(), AT_FDCWD, this->Destination.c_str(),
+          AT_SYMLINK_FOLLOW) == 0)
+    {
+      return;
+    }
+    if (errno != EEXIST)
+    {
+      throw Error(Name(this->Destination) + ": cannot create it: " + std::strerror(errno));
+    }
+    // An existing one is replaced by a rename, from a name it has only for that moment.
+    SweepStaleTemporaries(this->Directory);
+    int suffixLength = 0;
+    const std::string pattern = TemporaryTemplate(this->Destination, suffixLength);
+    const size_t x = pattern.size() - static_cast<size_t>(suffixLength) - 6;
+    std::random_device random;
+    const char* letters = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789";
+    for (int attempt = 0; attempt < 100; ++attempt)
+    {
+      std::string name = pattern;
+      for (size_t k = 0; k < 6; ++k)
+      {
+        name[x + k] = letters[random() % 62];
+      }
+      this->Named = name;
+      SetTemporaryOutput(this->Named.c_str());
+      if (linkat(AT_FDCWD, this->WritePath.c_str(), AT_FDCWD, name.c_str(), AT_SYMLINK_FOLLOW) == 0)
+      {
+        this->RenameOver(name);
+        return;
+      }
+      const int linkErrno = errno;
+      this->Named.clear();
+      SetTemporaryOutput(nullptr);
+      if (linkErrno != EEXIST)
+      {
+        throw Error(Name(this->Destination) + ": cannot replace it: " + std::strerror(linkErrno));
+      }
+    }
+    throw Error(Name(this->Destination) + ": cannot replace it: no free temporary name");
+  }
+
+  void CopyToStandardOutput()
+  {
+    std::vector<char> buffer(1 << 16);
+    if (lseek(this->Fd, 0, SEEK_SET) != 0)
+    {
+      throw Error("standard output: cannot read back the image: " + std::string(std::strerror(errno)));
+    }
+    for (;;)
+    {
+      const ssize_t got = read(this->Fd, buffer.data(), buffer.size());
+      if (got < 0 && errno == EINTR)
+      {
+        continue;
+      }
+      if (got < 0)
+      {
+        throw Error("standard output: cannot read back the image: " + std::string(std::strerror(errno)));
+      }
+      if (got == 0)
+      {
+        return;
+      }
+      if (!WriteAll(STDOUT_FILENO, buffer.data(), static_cast<size_t>(got)))
+      {
+        throw Error("standard output: " + std::string(std::strerror(errno)));
+      }
+    }
+  }
+
+  std::string Destination;
+  std::string Directory;
+  std::string WritePath;
+  std::string Named; // the named temporary to remove, or ""
+  int Fd = -1;       // the file without a name, or -1
+};
+
+// OpenImageIO's error `text` as the end of a message: one line, the dangling ':' of messages
+// such as "ZLib error:" dropped, or `fallback` if it says nothing.
+std::string LibraryText(const std::string& text, const std::string& fallback)
+{
+  std::string line = Printable(text);
+  while (!line.empty() && (line.back() == ':' || line.back() == ' '))
+  {
+    line.pop_back();
+  }
+  return line.empty() ? fallback : line;
 }
 
 // What a writer of OpenImageIO 2.4 does with an image of 1 to 4 channels, found by writing
@@ -539,6 +984,18 @@ void SimulateLibraryCrashForTests(const std::string& path)
   }
   if (std::strcmp(crash, "sleep") == 0)
   {
+    // MLAA_TEST_WRITING_MARKER=PREFIX: PREFIX.PID is created once the writer has started, for
+    // tests that must know when (the file being written may have no name).
+    const char* marker = std::getenv("MLAA_TEST_WRITING_MARKER");
+    if (marker && *marker)
+    {
+      const std::string name = std::string(marker) + "." + std::to_string(getpid());
+      const int fd = open(name.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0600);
+      if (fd >= 0)
+      {
+        close(fd);
+      }
+    }
     for (int second = 0; second < 60; ++second)
     {
       sleep(1);
@@ -563,23 +1020,80 @@ void SimulateLibraryCrashForTests(const std::string& path)
 } // namespace
 
 //------------------------------------------------------------------------------
+std::string DisplayName(const std::string& path, bool output)
+{
+  return path == "-" ? (output ? "standard output" : "standard input") : Name(path);
+}
+
+//------------------------------------------------------------------------------
+void CheckOutputFormat(const std::string& format)
+{
+  std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create(format);
+  OIIO::geterror();
+  if (!output || format.find_first_of("/.") != std::string::npos)
+  {
+    throw UsageError("--format '" + Printable(format, 40, false) +
+      "': OpenImageIO has no writer of that name (give a format or an extension: png, tif, exr, "
+      "jpg, ...)");
+  }
+}
+
+//------------------------------------------------------------------------------
+void SweepStaleTemporaries(const std::string& directory)
+{
+  if (!SweptDirectories().insert(directory).second)
+  {
+    return;
+  }
+  DIR* listing = opendir(directory.c_str());
+  if (!listing)
+  {
+    return;
+  }
+  const int fd = dirfd(listing);
+  const time_t now = time(nullptr);
+  while (const dirent* entry = readdir(listing))
+  {
+    const long pid = TemporaryOwner(entry->d_name);
+    struct stat status;
+    if (pid <= 0 || pid == getpid() ||
+      fstatat(fd, entry->d_name, &status, AT_SYMLINK_NOFOLLOW) != 0 ||
+      !S_ISREG(status.st_mode) || status.st_uid != geteuid() ||
+      now - status.st_mtime < StaleTemporarySeconds)
+    {
+      continue;
+    }
+    // Its writer must be gone: a process that still runs (or that this user may not signal)
+    // keeps its file.
+    if (kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH)
+    {
+      continue;
+    }
+    unlinkat(fd, entry->d_name, 0);
+  }
+  closedir(listing);
+}
+
+//------------------------------------------------------------------------------
 ImageFile ReadImageFile(const std::string& path, std::uint64_t maxPixels)
 {
-  const std::string what = Name(path) + ": ";
-  CheckRegularFile(path);
+  const std::string what = DisplayName(path, false) + ": ";
+  const InputFile source(path);
 
-  CapturedStderr messages(Name(path), "OpenImageIO was reading it");
+  CapturedStderr messages(DisplayName(path, false), "OpenImageIO was reading it");
   // Keep unassociated alpha as stored (PNG, TIFF): premultiplying it on reading and dividing
   // it out again on writing would change pixels that antialiasing leaves alone.
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
-  std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::open(path, &config);
+  std::string openError;
+  std::unique_ptr<OIIO::ImageInput> input =
+    OpenReader(source.GetReadPath(), source.GetFormatHint(), &config, openError);
   if (!input)
   {
     const std::string printed = messages.Finish();
-    throw Error(what +
-      OneLine(OIIO::geterror() + "\n" + printed,
-        "OpenImageIO cannot read it (no reader knows it, or the file is damaged)"));
+    throw Error(what + "cannot open it as an image: " +
+      LibraryText(source.Explain(openError + "\n" + printed),
+        "no reader of OpenImageIO knows it, or the file is damaged"));
   }
 
   ImageFile file;
@@ -649,10 +1163,13 @@ ImageFile ReadImageFile(const std::string& path, std::uint64_t maxPixels)
   {
     const std::string error = input->geterror();
     const std::string printed = messages.Finish();
-    throw Error(what +
-      OneLine(error + "\n" + printed,
-        "cannot read the pixels (OpenImageIO's " + file.FormatName +
-          " reader gave no reason: the file is probably truncated or damaged)"));
+    const std::string compression = spec.get_string_attribute("compression");
+    throw Error(what + "cannot read the pixels of this " + file.FormatName + " file" +
+      (compression.empty() || compression == "none" ? std::string()
+                                                    : " (" + Printable(compression, 40) + " compressed)") +
+      ": " +
+      LibraryText(source.Explain(error + "\n" + printed),
+        "OpenImageIO's reader gave no reason; the file is probably truncated or damaged"));
   }
   input->close();
   const std::string printed = Printable(messages.Finish());
@@ -665,9 +1182,10 @@ ImageFile ReadImageFile(const std::string& path, std::uint64_t maxPixels)
 
 //------------------------------------------------------------------------------
 std::string WriteImageFile(vtkImageData* image, const std::string& path,
-  const OIIO::ImageSpec& description, OIIO::TypeDesc pixelType, const double valueRange[2])
+  const OIIO::ImageSpec& description, OIIO::TypeDesc pixelType, const double valueRange[2],
+  const std::string& format)
 {
-  const std::string what = Name(path) + ": ";
+  const std::string what = DisplayName(path, true) + ": ";
   vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
   int dims[3] = { 0, 0, 0 };
   if (image)
@@ -691,20 +1209,29 @@ std::string WriteImageFile(vtkImageData* image, const std::string& path,
   }
   // Only a file is replaced: not a directory, a device or a FIFO.
   struct stat existing;
-  if (stat(path.c_str(), &existing) == 0 && !S_ISREG(existing.st_mode))
+  if (path != "-" && stat(path.c_str(), &existing) == 0 && !S_ISREG(existing.st_mode))
   {
     throw Error(what + "exists and is not a regular file; OUTPUT must name a file");
   }
+  if (path == "-" && format.empty())
+  {
+    throw UsageError("OUTPUT - (standard output) needs --format NAME, e.g. --format png");
+  }
 
-  CapturedStderr messages(Name(path), "OpenImageIO was writing it"); // also covers the writer's destruction
-  // The writer comes from the destination's extension, before any file is created.
-  std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create(path);
+  // The writer comes from --format or the destination's extension, before any file is created.
+  if (!format.empty())
+  {
+    CheckOutputFormat(format);
+  }
+  CapturedStderr messages(DisplayName(path, true), "OpenImageIO was writing it"); // also covers the writer's destruction
+  std::unique_ptr<OIIO::ImageOutput> output =
+    OIIO::ImageOutput::create(format.empty() ? path : format);
   if (!output)
   {
     OIIO::geterror(); // consumed: the message below says it in one line
     throw Error(what +
       "OpenImageIO has no writer for files named like this (unsupported format '" +
-      Printable(std::filesystem::path(path).extension().string(), 40) + "')");
+      Printable(std::filesystem::path(path).extension().string(), 40) + "'; --format NAME chooses one)");
   }
   const std::string formatName = output->format_name();
 
@@ -749,7 +1276,7 @@ std::string WriteImageFile(vtkImageData* image, const std::string& path,
     spec.erase_attribute(name);
   }
 
-  TemporaryFile temporary(path);
+  OutputFile temporary(path);
   // On failure the writer is destroyed before the temporary file is removed: writers that
   // write on closing (HEIF) would otherwise create it again.
   struct WriterFirst
@@ -757,10 +1284,12 @@ std::string WriteImageFile(vtkImageData* image, const std::string& path,
     std::unique_ptr<OIIO::ImageOutput>& Output;
     ~WriterFirst() { this->Output.reset(); }
   } writerFirst{ output };
-  if (!output->open(temporary.GetPath(), spec))
+  if (!output->open(temporary.GetWritePath(), spec))
   {
     const std::string error = output->geterror();
-    throw Error(what + OneLine(error + "\n" + messages.Finish()));
+    throw Error(what + "cannot start writing it as " + formatName + ": " +
+      LibraryText(temporary.Explain(error + "\n" + messages.Finish()),
+        "OpenImageIO's writer gave no reason"));
   }
   const OIIO::TypeDesc writtenType = output->spec().format;
 #ifdef MLAA_TEST_HOOKS
@@ -817,24 +1346,31 @@ std::string WriteImageFile(vtkImageData* image, const std::string& path,
   if (!ok)
   {
     const std::string error = output->geterror();
-    throw Error(what + OneLine(error + "\n" + messages.Finish()));
+    throw Error(what + "cannot write the pixels as " + formatName + ": " +
+      LibraryText(temporary.Explain(error + "\n" + messages.Finish()),
+        "OpenImageIO's writer gave no reason"));
   }
   if (!output->close())
   {
     const std::string error = output->geterror();
-    throw Error(what + OneLine(error + "\n" + messages.Finish()));
+    throw Error(what + "cannot finish writing it as " + formatName + ": " +
+      LibraryText(temporary.Explain(error + "\n" + messages.Finish()),
+        "OpenImageIO's writer gave no reason"));
   }
   output.reset();
 
   // Read back before it replaces anything: a writer that reported success may still have
   // written something else.
   {
-    std::unique_ptr<OIIO::ImageInput> check = OIIO::ImageInput::open(temporary.GetPath());
+    std::string error;
+    std::unique_ptr<OIIO::ImageInput> check =
+      OpenReader(temporary.GetWritePath(), formatName, nullptr, error);
     if (!check)
     {
-      const std::string error = OIIO::geterror();
       throw Error(what + "OpenImageIO's " + formatName +
-        " writer wrote a file that cannot be read back (" + OneLine(error + "\n" + messages.Finish()) +
+        " writer wrote a file that cannot be read back (" +
+        LibraryText(temporary.Explain(error + "\n" + messages.Finish()),
+          "OpenImageIO gave no reason") +
         ")");
     }
     const OIIO::ImageSpec& back = check->spec();
@@ -848,7 +1384,7 @@ std::string WriteImageFile(vtkImageData* image, const std::string& path,
     }
     check->close();
   }
-  temporary.Commit(path);
+  temporary.Commit();
 
   const std::string printed = Printable(messages.Finish());
   std::string note = printed.empty() ? "" : what + "while writing: " + printed;

@@ -18,10 +18,16 @@
  * mlaaCrashReport.h): it is part of OpenImageIO's error message on failure, and a warning
  * otherwise.
  *
- * Hostile files: only regular files are opened (a FIFO would block, a device never ends), the
- * image size in the header is checked against a limit before anything is allocated, writers are
- * given only what they are known to handle (see WriteImageFile), and every written file is read
- * back before it replaces the destination.
+ * Hostile files: only regular files are opened (a FIFO would block, a device never ends), and
+ * each is opened once: the name is checked, opened (without blocking), and the open descriptor
+ * checked again and read through /proc/self/fd/N, so that a file replaced between the check and
+ * the open is never read. The image size in the header is checked against a limit before
+ * anything is allocated, writers are given only what they are known to handle (see
+ * WriteImageFile), and every written file is read back before it becomes the output.
+ *
+ * "-" is standard input for ReadImageFile (read whole into a file without a name, the format
+ * found from its bytes) and standard output for WriteImageFile (the complete file is sent once
+ * it has been read back: nothing partial reaches the pipe).
  */
 
 #ifndef mlaaImageFile_h
@@ -94,6 +100,23 @@ int GetVTKScalarType(OIIO::TypeDesc type);
  */
 ImageFile ReadImageFile(const std::string& path, std::uint64_t maxPixels = 0);
 
+/** `path` as messages show it: "standard input" or "standard output" for "-". */
+std::string DisplayName(const std::string& path, bool output);
+
+/**
+ * Throws UsageError unless OpenImageIO has a writer for `format`, a format name or an extension
+ * without its dot ("png", "tif", "openexr").
+ */
+void CheckOutputFormat(const std::string& format);
+
+/**
+ * Removes, from `directory`, the named temporaries of WriteImageFile's fallback that a process
+ * killed by SIGKILL left: hidden files named ".NAME.mlaa-PID-XXXXXX.EXT", regular, owned by this
+ * user, unmodified for an hour, whose process PID no longer exists. Each directory is swept once
+ * per process (a batch sweeps its output directory before it forks).
+ */
+void SweepStaleTemporaries(const std::string& directory);
+
 /**
  * Writes `image` (bottom row first, 2D, scalars of any pixel type of GetVTKScalarType) to
  * `path`, in the format of the file name's extension, with pixels of type `pixelType` or, where
@@ -111,16 +134,23 @@ ImageFile ReadImageFile(const std::string& path, std::uint64_t maxPixels = 0);
  * one channel in Zfile; and every JPEG 2000 (unreadable files), FITS (truncated or transposed
  * images), RLA (bad headers), null and term output.
  *
- * The image goes to a new temporary file in the destination's directory, with the same
- * extension, which is read back (size and channels) before it is renamed over `path`. On any
- * failure the temporary file is removed and an existing `path` is left untouched; `path` must
- * not name anything but a regular file.
+ * The format is `format` (a format name or extension; required when `path` is "-"), else that
+ * of `path`'s extension.
+ *
+ * The image goes to a new file without a name (O_TMPFILE) in the destination's directory, which
+ * is read back (size and channels) and then linked into place (over an existing `path` by a
+ * rename); whatever ends the process, nothing is left behind. Where O_TMPFILE is not available,
+ * a hidden temporary ".NAME.mlaa-PID-XXXXXX.EXT" beside `path` takes its place (removed on
+ * failure and on catchable signals; after a SIGKILL, by SweepStaleTemporaries). On any failure
+ * an existing `path` is left untouched; `path` must not name anything but a regular file. For
+ * "-", the file is written in $TMPDIR and copied to standard output once it is complete.
  *
  * Returns a one-line note when the written pixel type or channels differ from the image's or
  * the image libraries printed something, else "".
  */
 std::string WriteImageFile(vtkImageData* image, const std::string& path,
-  const OIIO::ImageSpec& description, OIIO::TypeDesc pixelType, const double valueRange[2]);
+  const OIIO::ImageSpec& description, OIIO::TypeDesc pixelType, const double valueRange[2],
+  const std::string& format = std::string());
 } // namespace mlaa
 
 #endif

@@ -210,9 +210,9 @@ const std::vector<Option> OptionTable = {
     [](const CommandLine& d, const UsageFacts&, const std::string&)
     {
       return "The method: mlaa (morphological antialiasing: recognises the staircases of edges "
-             "and revectorises them; sharpest on still images) or dlaa (directionally localized "
-             "antialiasing, Andreev, GDC 2011: blurs each edge along its own direction; steadier "
-             "in animation). The options from --threshold to --debug are MLAA's, the --dlaa-* and "
+             "and revectorises them; sharpest on still images) or dlaa (DLAA, Andreev 2011, "
+             "directionally localized antialiasing: blurs each edge along its own direction; "
+             "steadier in animation). The options from --threshold to --debug are MLAA's, the --dlaa-* and "
              "--long-edges ones DLAA's; giving one to the other method is an error. Default: " +
         MethodNames()[d.Method] + ".";
     } },
@@ -500,6 +500,19 @@ const std::vector<Option> OptionTable = {
                   "what fits in half of the memory available now (about ",
         facts.DefaultMaxPixels,
         " RGBA 8-bit pixels), shared by the files a batch processes at the same time.");
+    } },
+
+  { "--format", nullptr, "NAME", ValueKind::Text, ToolSetting, 0, "a format name", nullptr,
+    nullptr, nullptr, [](CommandLine& cl, const OptionValue& v) { cl.Format = v.Text; },
+    [](const CommandLine&) { return std::string("OUTPUT's extension"); },
+    [](const CommandLine&, const UsageFacts&, const std::string&)
+    {
+      return std::string(
+        "The format OUTPUT is written in, as an OpenImageIO format name or extension (png, tif, "
+        "exr, jpg, ...); needed when OUTPUT is - (standard output). INPUT - is standard input, "
+        "its format found from its bytes; with -, the whole image is read before antialiasing "
+        "starts, and written to standard output only once it is complete. Not for batches. "
+        "Default: OUTPUT's extension.");
     } },
 
   { "--output-dir", nullptr, "DIR", ValueKind::Text, ToolSetting, 0, "a directory name", nullptr,
@@ -906,6 +919,15 @@ void ParseCommandLine(const std::vector<std::string>& args, CommandLine& cl)
   {
     throw UsageError(cl.BatchOnly.front() + " is an option of batches: add --output-dir DIR");
   }
+  if (!cl.Format.empty() && cl.Batch)
+  {
+    throw UsageError("--format cannot be used with --output-dir (a batch writes each output in "
+                     "its input's format)");
+  }
+  if (cl.Batch && std::find(cl.Files.begin(), cl.Files.end(), "-") != cl.Files.end())
+  {
+    throw UsageError("- (standard input) cannot be an INPUT of a batch (--output-dir)");
+  }
   if (cl.AreaTextureCellSize)
   {
     if (cl.Batch)
@@ -920,6 +942,10 @@ void ParseCommandLine(const std::vector<std::string>& args, CommandLine& cl)
     {
       throw UsageError(cl.Files.empty() ? std::string("--area-texture needs OUTPUT")
                                         : "unexpected argument '" + cl.Files[1] + "'");
+    }
+    if (cl.Files[0] == "-" && cl.Format.empty())
+    {
+      throw UsageError("OUTPUT - (standard output) needs --format NAME, e.g. --format png");
     }
     return;
   }
@@ -946,6 +972,14 @@ void ParseCommandLine(const std::vector<std::string>& args, CommandLine& cl)
   else if (cl.Files.size() > 2)
   {
     throw UsageError("unexpected argument '" + cl.Files[2] + "'");
+  }
+  if (!cl.Batch && cl.Files.back() == "-" && cl.Format.empty())
+  {
+    throw UsageError("OUTPUT - (standard output) needs --format NAME, e.g. --format png");
+  }
+  if (!cl.Batch && cl.Files[0] == "-" && cl.DepthImage == "-")
+  {
+    throw UsageError("INPUT and --depth-image cannot both be - (standard input)");
   }
   if (cl.Method == MethodDLAA && !cl.MLAAOnly.empty())
   {
@@ -983,13 +1017,15 @@ void PrintUsage(std::ostream& os, const UsageFacts& facts)
   PrintWrapped(os, "", 0,
     "Removes staircase aliasing from the image INPUT with morphological antialiasing (MLAA: "
     "Jimenez et al., \"Practical Morphological Antialiasing\", GPU Pro 2, chapter 4; VTK's "
-    "vtkImageMLAA), or with directionally localized antialiasing (--method dlaa; vtkImageDLAA), "
-    "and writes the result to OUTPUT.");
+    "vtkImageMLAA), or with DLAA (--method dlaa; Andreev 2011, directionally localized "
+    "antialiasing, not the learned method of the same initials; VTK's vtkImageDLAA), and writes "
+    "the result to OUTPUT.");
   os << "\n";
   PrintWrapped(os, "", 0,
     "INPUT may be any image OpenImageIO reads (PNG, TIFF, OpenEXR, JPEG, ...): 8- or 16-bit, "
     "half or float, with 1 to 4 channels (grey, grey + alpha, RGB, RGBA); only its first "
-    "subimage is read. OUTPUT's format comes from its extension. OUTPUT has INPUT's size, "
+    "subimage is read. OUTPUT's format comes from its extension, or from --format. Either may be "
+    "- (standard input or output; see --format). OUTPUT has INPUT's size, "
     "channels and pixel type; where its format cannot hold that type, OpenImageIO's closest "
     "type is written and a warning says so (floating-point values written as integers are "
     "scaled by --value-range and clamped). Pixels are used as stored: no colour-space "

@@ -80,6 +80,7 @@ struct CommandLine
   std::vector<std::string> MLAAOnly;      // of those, the ones only MLAA takes
   std::vector<std::string> DLAAOnly;      // of those, the ones only DLAA takes
   std::vector<std::string> Files;
+  std::string Format; // --format: the output's format ("": OUTPUT's extension)
   // Batch mode (--output-dir).
   bool Batch = false;
   std::string OutputDirectory;

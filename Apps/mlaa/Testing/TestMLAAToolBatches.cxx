@@ -456,7 +456,13 @@ void BatchInterrupted()
       out.string() };
     const std::vector<std::string> names = Strings(inputs);
     command.insert(command.end(), names.begin(), names.end());
-    const SpawnVectors spawn(command, { "MLAA_TEST_CRASH_WHILE_WRITING=sleep" });
+    // The files being written have no name: each writer says when it has started.
+    const fs::path markers = WorkFile("writing");
+    fs::remove_all(markers);
+    fs::create_directory(markers);
+    const SpawnVectors spawn(command,
+      { "MLAA_TEST_CRASH_WHILE_WRITING=sleep",
+        "MLAA_TEST_WRITING_MARKER=" + (markers / "pid").string() });
     posix_spawnattr_t attributes;
     posix_spawnattr_init(&attributes);
     if (group)
@@ -478,12 +484,13 @@ void BatchInterrupted()
     }
     // Wait until three files are being written.
     const auto start = std::chrono::steady_clock::now();
-    while (TemporaryFiles(out) < 3 &&
+    while (Listing(markers).size() < 3 &&
       std::chrono::steady_clock::now() - start < std::chrono::seconds(60))
     {
       usleep(10000);
     }
-    MLAA_CHECK(TemporaryFiles(out) == 3);
+    MLAA_CHECK(Listing(markers).size() == 3);
+    MLAA_CHECK(Listing(out).empty()); // written without names
     kill(group ? -pid : pid, sig);
     int status = 0;
     waitpid(pid, &status, 0);

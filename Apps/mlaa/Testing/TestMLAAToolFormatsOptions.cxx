@@ -33,8 +33,11 @@ void HelpListsEveryOption()
            "--reconstruction on|off", "--preset NAME", "--method mlaa|dlaa", "--dlaa-epsilon E",
            "--dlaa-lambda L", "--dlaa-luma NAME", "--long-edges on|off",
            "-h, --help", "Usage: mlaa [options] INPUT OUTPUT", "--output-dir DIR",
-           "--frames RANGE", "--jobs N", "-q, --quiet",
-           "mlaa [options] --output-dir DIR INPUT..." })
+           "--frames RANGE", "--jobs N", "-q, --quiet", "--format NAME",
+           "mlaa [options] --output-dir DIR INPUT...",
+           // The name DLAA is said once with what it is (a learned method has the same initials).
+           "DLAA (--method dlaa; Andreev 2011, directionally localized antialiasing, not the "
+           "learned method of the same initials" })
     {
       if (!MLAA_CHECK(words.find(option) != std::string::npos))
       {

@@ -503,11 +503,19 @@ void CrashSurfaced()
   // user still sees what happened and what it printed, and no temporary file stays behind.
   const fs::path input = GoodInput();
   const fs::path output = WorkFile("out.png");
-  for (const char* how : { "abort", "segv", "exit" })
+  // Both ways of writing: the file without a name, and the named temporary of the fallback.
+  for (const char* how : { "abort", "segv", "exit", "abort-named", "segv-named", "exit-named" })
   {
+    const std::string crash(how);
+    const bool named = crash.find("-named") != std::string::npos;
     const std::set<std::string> before = Listing(Where().Work);
-    const Run run =
-      RunTool({ input.string(), output.string() }, { std::string("MLAA_TEST_CRASH_WHILE_WRITING=") + how });
+    std::vector<std::string> environment = { "MLAA_TEST_CRASH_WHILE_WRITING=" +
+      crash.substr(0, crash.find('-')) };
+    if (named)
+    {
+      environment.push_back("MLAA_TEST_NAMED_TEMPORARY=1");
+    }
+    const Run run = RunTool({ input.string(), output.string() }, environment);
     // 128 + the signal, or 3 for exit(3); under AddressSanitizer a SEGV ends with its status 1.
     MLAA_CHECK(run.Status != 0 && !run.TimedOut);
     MLAA_CHECK(run.Err.find("mlaa: " + output.string() + ": crashed while OpenImageIO was writing it") == 0);

@@ -143,19 +143,19 @@ int FileTexel(const fs::path& path, int column, int row, int channel)
 
 Run RunTool(const std::vector<std::string>& args,
   const std::vector<std::string>& environment, double timeoutSeconds,
-  bool quiet)
+  bool quiet, const std::string& standardInput)
 {
   const fs::path outPath = Where().Logs / "stdout";
   const fs::path errPath = Where().Logs / "stderr";
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 0, standardInput.c_str(), O_RDONLY, 0);
   posix_spawn_file_actions_addopen(
     &actions, 1, outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawn_file_actions_addopen(
     &actions, 2, errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   const bool hooked = std::any_of(environment.begin(), environment.end(),
-    [](const std::string& variable) { return variable.rfind("MLAA_TEST_CRASH", 0) == 0; });
+    [](const std::string& variable) { return variable.rfind("MLAA_TEST_", 0) == 0; });
   std::vector<std::string> command = { hooked ? Where().HookedTool : Where().Tool };
   command.insert(command.end(), args.begin(), args.end());
   const SpawnVectors spawn(command, environment);

@@ -143,11 +143,12 @@ struct Run
   double Seconds = 0.0;
 };
 
-// Runs the tool with `args` (and `environment` added to this process's), killing it after
-// `timeoutSeconds`: Status is then -1 and TimedOut true.
+// Runs the tool with `args` (and `environment` added to this process's; a variable of the test
+// hooks, MLAA_TEST_*, runs mlaa-test-hooks instead), its standard input read from
+// `standardInput`, killing it after `timeoutSeconds`: Status is then -1 and TimedOut true.
 Run RunTool(const std::vector<std::string>& args,
   const std::vector<std::string>& environment = {}, double timeoutSeconds = 120.0,
-  bool quiet = false);
+  bool quiet = false, const std::string& standardInput = "/dev/null");
 
 // stderr is exactly one line, starting with "mlaa: ".
 bool IsOneMlaaLine(const std::string& err);
@@ -205,7 +206,8 @@ void RoundTrip(vtkImageData* pixels, OIIO::TypeDesc fileType, const std::string&
   const std::string& outputName, const std::vector<std::string>& options = {},
   const std::function<void(vtkImageMLAA*)>& configure = nullptr);
 
-// Names in `directory` that are temporary outputs of the tool (".NAME.mlaa-XXXXXX.ext").
+// Names in `directory` that are named temporary outputs of the tool (".NAME.mlaa-PID-XXXXXX.ext",
+// the fallback where files without a name cannot be made, or an output being put in place).
 int TemporaryFiles(const fs::path& directory);
 
 // A valid input image for the error cases.

@@ -3,7 +3,10 @@
 """The vtkmlaa package after `cmake --install BUILD --prefix PREFIX`: a fresh /usr/bin/python3
 with only PYTHONPATH=PREFIX/<site-packages> set (no LD_LIBRARY_PATH, no build tree on any path)
 imports every class from the prefix, loads the project's libraries from PREFIX/lib (found through
-the extension modules' $ORIGIN-relative RPATH), and runs the filter.
+the extension modules' $ORIGIN-relative RPATH), and runs the filter. Then
+`DESTDIR=STAGE cmake --install BUILD --prefix /usr/local` puts the package where this interpreter
+looks for packages under /usr/local without PYTHONPATH (site.getsitepackages(), and the same
+directory for /usr when the interpreter's prefix is /usr).
 Usage: TestPythonInstalledPackage.py BUILD_DIR WORK_DIR SITE_PACKAGES_SUFFIX [CMAKE]"""
 import os
 import shutil
@@ -47,4 +50,24 @@ print("installed package OK:", vtkmlaa.__file__, sorted(ours))
 environment = {"PATH": "/usr/bin:/bin", "PYTHONPATH": os.path.join(prefix, suffix),
                "HOME": work_dir, "PYTHONNOUSERSITE": "1"}
 result = subprocess.run([sys.executable, "-c", child, prefix], env=environment, cwd=work_dir)
-sys.exit(result.returncode)
+if result.returncode != 0:
+    sys.exit(result.returncode)
+
+# An install into /usr/local (staged with DESTDIR, as packagers do) lands on sys.path.
+stage = os.path.join(work_dir, "stage")
+subprocess.run([cmake, "--install", build_dir, "--prefix", "/usr/local"], check=True,
+               stdout=subprocess.DEVNULL, env=dict(os.environ, DESTDIR=stage))
+staged = os.path.join(stage, "usr/local", suffix, "vtkmlaa", "__init__.py")
+if not os.path.isfile(staged):
+    sys.exit("DESTDIR install: not installed: " + staged)
+ask = "import site, sys; print(sys.prefix); print('\\n'.join(site.getsitepackages()))"
+answer = subprocess.run([sys.executable, "-c", ask], check=True, capture_output=True, text=True,
+                        env={"PATH": "/usr/bin:/bin", "HOME": work_dir}).stdout.split("\n")
+python_prefix, searched = answer[0], [os.path.normpath(p) for p in answer[1:] if p]
+for install_prefix in ["/usr/local"] + (["/usr"] if python_prefix == "/usr" else []):
+    where = os.path.normpath(os.path.join(install_prefix, suffix))
+    if where not in searched:
+        sys.exit("%s does not look in %s for packages installed under %s (it looks in %s)"
+                 % (sys.executable, where, install_prefix, searched))
+print("installed with --prefix /usr/local into %s, where %s looks" % (
+    os.path.join("/usr/local", suffix), sys.executable))

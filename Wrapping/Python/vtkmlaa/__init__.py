@@ -2,6 +2,9 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """Morphological antialiasing (MLAA) and DLAA for VTK, from Python.
 
+DLAA here is DLAA (Andreev 2011, directionally localized antialiasing), which blurs each edge
+along its own direction; not the learned method of the same initials.
+
 The classes are VTK's own Python wrappings of the C++ classes (the same names and methods;
 ``help(vtkmlaa.vtkImageMLAA)`` shows their documentation):
 
