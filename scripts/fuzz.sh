@@ -53,7 +53,7 @@ for target in "${targets[@]}"; do
   fi
   ASAN_OPTIONS="$asan_options$unwind" "$build_dir/bin/$target" "$corpus_root/$target" \
     "$source_dir/Testing/Fuzz/corpus/$target" "${memory[@]}" \
-    -max_total_time="$seconds" -timeout=30 -close_fd_mask=2 \
+    -max_total_time="$seconds" -timeout=60 -close_fd_mask=2 \
     -print_final_stats=1 -artifact_prefix="$corpus_root/findings/$target/" \
     >"$corpus_root/logs/$target.log" 2>&1 &
   pids+=($!)

@@ -10,11 +10,12 @@ edges (staircases, a checker) of every scalar type, 1 to 4 components, odd, one-
 and 3D extents, NaN and infinities, and the options of both filters; image files of the
 formats the tool reads (written by oiiotool from a staircase made here), with command lines.
 The byte layouts are those the targets' file comments describe. BUILD_FUZZ_DIR (scripts/fuzz.sh
-builds it) gives mlaa_tool_fuzzer, which lists the options it picks from, so that seeds name
-options, not their places in the tool's table. Old seeds are replaced.
+builds it) gives mlaa_tool_fuzzer, which lists the options and extensions it picks from, so
+that seeds name options and extensions, not their places in the target. Old seeds are
+replaced, with the same bytes but for the GIF and SGI files: OpenImageIO 2.4's writers of
+those put bytes it never initialised into the file (in SGI's header, what look like pointers).
 """
 
-import math
 import os
 import shutil
 import struct
@@ -143,12 +144,10 @@ def write_pfm(path, w, h, grey):
 
 
 def tool_seeds(fuzzer):
-    env = dict(os.environ, MLAA_FUZZ_LIST_OPTIONS="1")
-    names = subprocess.run([fuzzer], env=env, check=True, capture_output=True,
-                           text=True).stdout.split()
-    inputs = ["png", "tif", "jpg", "pnm", "pfm", "exr", "bmp", "tga", "hdr", "sgi", "gif",
-              "webp", "psd", "dds", "ico"]
-    outputs = ["png", "tif", "exr", "jpg", "ppm", "bmp", "tga", "sgi", "hdr"]
+    env = dict(os.environ, MLAA_FUZZ_LIST="1")
+    lines = subprocess.run([fuzzer], env=env, check=True, capture_output=True,
+                           text=True).stdout.splitlines()
+    names, inputs, outputs = (line.split() for line in lines[:3])
     oiiotool = shutil.which("oiiotool")
     if not oiiotool:
         sys.exit("make-corpus: needs oiiotool (openimageio-tools)")
@@ -184,6 +183,7 @@ def tool_seeds(fuzzer):
         ("gif", "gif", ["-d", "uint8"], "png", False, [option("--diagonals", 1)]),
         ("ico", "ico", ["-d", "uint8"], "png", False, [option("--corners", 0)]),
         ("png-one-pixel", "png", ["--resize", "1x1", "-d", "uint8"], "png", False, []),
+        ("heic", "heic", ["-d", "uint8"], "png", False, []),
     ]
     seeds = {}
     with tempfile.TemporaryDirectory() as tmp:
@@ -195,7 +195,8 @@ def tool_seeds(fuzzer):
             if args is None:  # no writer for .pfm: written here
                 write_pfm(path, 20, 12, lambda x, y: 0.9 if 3 * y < x + 2 else 0.1)
             else:
-                subprocess.run([oiiotool, source] + args + ["-o", path], check=True,
+                subprocess.run([oiiotool, "--nosoftwareattrib", source, "--attrib", "DateTime",
+                                "2026:01:01 00:00:00"] + args + ["-o", path], check=True,
                                capture_output=True)
             with open(path, "rb") as f:
                 data = f.read()

@@ -80,7 +80,7 @@ using mlaafuzz::ByteReader;
 // Extensions OpenImageIO reads here. A file that its extension's reader refuses is tried by
 // every other reader, so the bytes reach them all whatever the name.
 const char* const InputExtensions[] = { "png", "tif", "jpg", "pnm", "pfm", "exr", "bmp", "tga",
-  "hdr", "sgi", "gif", "webp", "psd", "dds", "ico" };
+  "hdr", "sgi", "gif", "webp", "psd", "dds", "ico", "heic" };
 // Output formats the tool writes (and refuses: grey + alpha in BMP, for one).
 const char* const OutputExtensions[] = { "png", "tif", "exr", "jpg", "ppm", "bmp", "tga", "sgi",
   "hdr" };
@@ -214,13 +214,25 @@ std::vector<std::string> ListWorkFiles()
 
 extern "C" int LLVMFuzzerInitialize(int*, char***)
 {
-  // For make-corpus.py, which names options rather than their places in the table.
-  if (std::getenv("MLAA_FUZZ_LIST_OPTIONS"))
+  // For make-corpus.py, which names options and extensions rather than their places here: one
+  // line each of the options, the input extensions and the output extensions.
+  if (std::getenv("MLAA_FUZZ_LIST"))
   {
     for (const mlaa::Option* option : SingleFileOptions())
     {
-      std::cout << option->Name << "\n";
+      std::cout << option->Name << " ";
     }
+    std::cout << "\n";
+    for (const char* extension : InputExtensions)
+    {
+      std::cout << extension << " ";
+    }
+    std::cout << "\n";
+    for (const char* extension : OutputExtensions)
+    {
+      std::cout << extension << " ";
+    }
+    std::cout << std::endl;
     std::exit(0);
   }
   mlaafuzz::KeepStderr();
