@@ -83,6 +83,18 @@ struct SliceSetup
 };
 
 /**
+ * Whether a normalised value takes part in the blending: finite, and small enough that the
+ * masks (sums of up to 8 values times Lambda, at most 100) and blurs cannot overflow. Larger
+ * values are treated as NaN is: pixels that read one are left as they are (found by the fuzz
+ * target mlaa_filter_fuzzer: -1.7e38 in a float image, normalised by [0, 1], gave NaN).
+ */
+template <typename Acc>
+inline bool IsBlendable(Acc v)
+{
+  return std::abs(v) <= std::numeric_limits<Acc>::max() / Acc(4096);
+}
+
+/**
  * The contrast curve of a blend mask, divided by the blur's luminosity:
  * saturate(numerator / divisor), 0 where the numerator is not positive, 1 where it is positive
  * and the divisor is 0.
@@ -249,7 +261,7 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
           const Acc* ck = plane(j, k);
           for (int i = 0; i < paddedWidth; ++i)
           {
-            finite &= std::abs(ck[i]) <= std::numeric_limits<Acc>::max();
+            finite &= IsBlendable(ck[i]);
           }
         }
         anyNonFinite = anyNonFinite || !finite;
@@ -327,7 +339,7 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
           const Acc* ck = plane(j, k);
           for (int i = 0; i < paddedWidth; ++i)
           {
-            bad[j * pw + i] |= std::isfinite(ck[i]) ? 0 : 1;
+            bad[j * pw + i] |= IsBlendable(ck[i]) ? 0 : 1;
           }
         }
       }

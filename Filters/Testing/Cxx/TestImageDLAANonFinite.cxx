@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
 // SPDX-License-Identifier: BSD-3-Clause
-// NaN and infinity in vtkImageDLAA's input: a pixel that reads one (within the short-edge
+// NaN, infinity and values too large to blend in vtkImageDLAA's input: a pixel that reads one (within the short-edge
 // cross, and with long edges within the long-edge windows, see vtkDLAAOptions) is left as it
 // is; every other pixel gets exactly the result of the image without them. (Bad input, for
 // every method, is in TestAntialiasingAlgorithmErrors.)
@@ -26,10 +26,13 @@ bool Reads(int x, int y, int bx, int by, int reach)
 
 void NonFinite()
 {
-  const double bad[] = { std::numeric_limits<double>::quiet_NaN(),
-    std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity() };
   for (int type : { VTK_FLOAT, VTK_DOUBLE })
   {
+    // NaN, the infinities, and a finite value so large that blending it would overflow (found
+    // by the fuzz target mlaa_filter_fuzzer: -1.7e38 in a float image gave NaN).
+    const double huge = type == VTK_FLOAT ? -1.7e38 : -1.7e308;
+    const double bad[] = { std::numeric_limits<double>::quiet_NaN(),
+      std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(), huge };
     for (bool longEdges : { true, false })
     {
       vtkNew<vtkDLAAOptions> options;
@@ -42,7 +45,7 @@ void NonFinite()
         return k == 3 ? 1.0 : (inside ? 0.9 - 0.2 * k : 0.1 + 0.1 * k);
       });
       const auto cleanOut = RunDLAA(clean, options);
-      for (int b = 0; b < 3; ++b)
+      for (int b = 0; b < 4; ++b)
       {
         // One non-finite pixel on the ramp of the long edge (row 11 near x = 40), in one
         // channel.
