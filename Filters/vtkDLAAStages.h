@@ -181,7 +181,13 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
   const int readX1 = std::min(out.X1 + halo, in.X1);
   const int readWidth = readX1 - readX0 + 1;
   const int readOffset = readX0 - (out.X0 - halo);
-  const bool mayHoldNonFinite = std::is_floating_point<T>::value;
+  // Integer images hold no NaN, but a narrow ValueRange may normalise their values beyond what
+  // can be blended (found by mlaa_filter_fuzzer: a signed char image gave NaN, converted back
+  // to signed char, which is undefined).
+  const Acc inverseRange = static_cast<Acc>(1.0 / (s.Hi - s.Lo));
+  const bool mayHoldNonFinite = std::is_floating_point<T>::value ||
+    !IsBlendable((static_cast<Acc>(std::numeric_limits<T>::lowest()) - lo) * inverseRange) ||
+    !IsBlendable((static_cast<Acc>(std::numeric_limits<T>::max()) - lo) * inverseRange);
   constexpr Acc sixth = Acc(1) / Acc(6);
   constexpr Acc mean = Acc(1) / Acc(2 * LongEdgeRadius + 1);
 

@@ -88,10 +88,51 @@ void NonFinite()
     }
   }
 }
+
+// An image of a type blended in float under a ValueRange so narrow that its values normalise
+// beyond what can be blended (1 / (hi - lo) is infinite in float): every pixel is left as it
+// is. Found by the fuzz target mlaa_filter_fuzzer, where such a signed char image gave NaN,
+// converted back to signed char (undefined).
+void NarrowValueRange()
+{
+  for (int type : { VTK_SIGNED_CHAR, VTK_SHORT })
+  {
+    vtkNew<vtkDLAAOptions> options;
+    options->SetLongEdges(true);
+    options->SetEpsilon(0.0);
+    auto image = MakeImage(40, 30, 2, type);
+    // Negative and positive values: they normalise to -infinity and +infinity (and 0 to NaN).
+    FillImage(image, [](int x, int y, int, int k) {
+      return (x * 37 + y * 11 + k * 5) % 100 - 50.0;
+    });
+    vtkNew<vtkImageDLAA> filter;
+    filter->SetOptions(options);
+    filter->SetValueRange(1e-300, 1e-280);
+    filter->SetInputData(image);
+    filter->Update();
+    vtkImageData* out = filter->GetOutput();
+    int wrong = 0;
+    for (int y = 0; y < 30; ++y)
+    {
+      for (int x = 0; x < 40; ++x)
+      {
+        for (int k = 0; k < 2; ++k)
+        {
+          wrong += GetValue(out, x, y, k) == GetValue(image, x, y, k) ? 0 : 1;
+        }
+      }
+    }
+    if (!MLAA_CHECK(wrong == 0))
+    {
+      std::cerr << "type " << type << ": " << wrong << " values changed" << std::endl;
+    }
+  }
+}
 }
 
 int TestImageDLAANonFinite(int, char*[])
 {
   NonFinite();
+  NarrowValueRange();
   return Result();
 }
