@@ -8,11 +8,17 @@ set(vtkMLAA_MODULE_DIRECTORIES
   "${CMAKE_CURRENT_SOURCE_DIR}/Rendering"  # MLAA::RenderingMLAA (vtkRenderingMLAA)
   )
 
+# A fuzzing build (vtkMLAA_ENABLE_FUZZING) needs the filters only.
+set(vtkMLAA_REQUESTED_MODULES MLAA::FiltersMLAA)
+if (NOT vtkMLAA_ENABLE_FUZZING)
+  list(APPEND vtkMLAA_REQUESTED_MODULES MLAA::RenderingMLAA)
+endif ()
+
 vtk_module_find_modules(vtkMLAA_MODULE_FILES ${vtkMLAA_MODULE_DIRECTORIES})
 
 vtk_module_scan(
   MODULE_FILES      ${vtkMLAA_MODULE_FILES}
-  REQUEST_MODULES   MLAA::FiltersMLAA MLAA::RenderingMLAA
+  REQUEST_MODULES   ${vtkMLAA_REQUESTED_MODULES}
   PROVIDES_MODULES  vtkMLAA_MODULES
   ENABLE_TESTS      "${BUILD_TESTING}")
 

@@ -83,6 +83,18 @@ struct SliceSetup
 };
 
 /**
+ * Whether a normalised value takes part in the blending: finite, and small enough that the
+ * masks (sums of up to 8 values times Lambda, at most 100) and blurs cannot overflow. Larger
+ * values are treated as NaN is: pixels that read one are left as they are (found by the fuzz
+ * target mlaa_filter_fuzzer: -1.7e38 in a float image, normalised by [0, 1], gave NaN).
+ */
+template <typename Acc>
+inline bool IsBlendable(Acc v)
+{
+  return std::abs(v) <= std::numeric_limits<Acc>::max() / Acc(4096);
+}
+
+/**
  * The contrast curve of a blend mask, divided by the blur's luminosity:
  * saturate(numerator / divisor), 0 where the numerator is not positive, 1 where it is positive
  * and the divisor is 0.
@@ -169,7 +181,13 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
   const int readX1 = std::min(out.X1 + halo, in.X1);
   const int readWidth = readX1 - readX0 + 1;
   const int readOffset = readX0 - (out.X0 - halo);
-  const bool mayHoldNonFinite = std::is_floating_point<T>::value;
+  // Integer images hold no NaN, but a narrow ValueRange may normalise their values beyond what
+  // can be blended (found by mlaa_filter_fuzzer: a signed char image gave NaN, converted back
+  // to signed char, which is undefined).
+  const Acc inverseRange = static_cast<Acc>(1.0 / (s.Hi - s.Lo));
+  const bool mayHoldNonFinite = std::is_floating_point<T>::value ||
+    !IsBlendable((static_cast<Acc>(std::numeric_limits<T>::lowest()) - lo) * inverseRange) ||
+    !IsBlendable((static_cast<Acc>(std::numeric_limits<T>::max()) - lo) * inverseRange);
   constexpr Acc sixth = Acc(1) / Acc(6);
   constexpr Acc mean = Acc(1) / Acc(2 * LongEdgeRadius + 1);
 
@@ -249,7 +267,7 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
           const Acc* ck = plane(j, k);
           for (int i = 0; i < paddedWidth; ++i)
           {
-            finite &= std::abs(ck[i]) <= std::numeric_limits<Acc>::max();
+            finite &= IsBlendable(ck[i]);
           }
         }
         anyNonFinite = anyNonFinite || !finite;
@@ -327,7 +345,7 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
           const Acc* ck = plane(j, k);
           for (int i = 0; i < paddedWidth; ++i)
           {
-            bad[j * pw + i] |= std::isfinite(ck[i]) ? 0 : 1;
+            bad[j * pw + i] |= IsBlendable(ck[i]) ? 0 : 1;
           }
         }
       }

@@ -24,7 +24,9 @@
  * normalised by ValueRange (vtkImageAntialiasingAlgorithm): by default the range of the type
  * for integers and [0, 1] for floating point. Every channel, alpha included, is filtered alike;
  * the luminosity reads RGB (or the grey value). Reads beyond the image are clamped to its
- * border. Pixels that read NaN or infinity (see vtkDLAAOptions) are left as they are.
+ * border. Pixels that read NaN or infinity (see vtkDLAAOptions), or a value too large to blend
+ * without overflow (beyond 1/4096 of the largest float or double, normalised), are left as they
+ * are.
  *
  * Output: an image of the input's extent, scalar type and components; integer results are
  * rounded to nearest. Pixels the method does not change (flat regions, faint noise) are copied

@@ -2,8 +2,9 @@
 # SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
 # SPDX-License-Identifier: BSD-3-Clause
 # Installs the Debian 12 packages vtkMLAA needs to build, test and run (VTK 9.1 and its Python
-# with numpy, OpenImageIO, Xvfb with Mesa's llvmpipe for offscreen OpenGL). Packages already
-# present are skipped, so a machine that has them all needs no root rights and no network.
+# with numpy, OpenImageIO, Xvfb with Mesa's llvmpipe for offscreen OpenGL, clang with its
+# libFuzzer runtime for the fuzz targets). Packages already present are skipped, so a machine
+# that has them all needs no root rights and no network.
 set -euo pipefail
 
 packages=(
@@ -12,6 +13,7 @@ packages=(
   python3-vtk9 python3-numpy            # VTK's Python (vtkmodules) for the vtkmlaa package
   libopenimageio-dev openimageio-tools  # image files for the mlaa tool (oiiotool, idiff)
   xvfb xauth libgl1-mesa-dri            # offscreen OpenGL: Xvfb + Mesa llvmpipe
+  clang libclang-rt-14-dev              # the fuzz targets (libFuzzer), scripts/fuzz.sh
 )
 
 missing=()

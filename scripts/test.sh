@@ -5,7 +5,9 @@
 # offscreen under Xvfb; the Python package's tests with /usr/bin/python3). Then builds the
 # ParaView plugin against Debian's ParaView 5.11 and runs its pvbatch tests on one and two MPI
 # ranks (scripts/test-paraview.sh). Then, unless --quick, the main tests again with
-# AddressSanitizer and LeakSanitizer (build-asan/): memory errors and leaks fail the run.
+# AddressSanitizer and LeakSanitizer (build-asan/): memory errors and leaks fail the run; and
+# the fuzz targets (scripts/fuzz.sh, build-fuzz/) for MLAA_FUZZ_SECONDS (default 90) each,
+# from the committed seeds: a finding fails the run.
 #   scripts/test.sh [--quick]
 set -euo pipefail
 source_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -29,5 +31,9 @@ if ((quick == 0)); then
   (cd "$source_dir/build-asan" &&
     "$source_dir/scripts/with-xvfb.sh" ctest --output-on-failure --parallel "$jobs" \
       --label-exclude package)
+
+  # A new corpus each time, in the build directory, where a finding's input stays to replay.
+  rm -rf "$source_dir/build-fuzz/ci-run"
+  "$source_dir/scripts/fuzz.sh" "${MLAA_FUZZ_SECONDS:-90}" "$source_dir/build-fuzz/ci-run"
 fi
 echo "test: all tests passed"

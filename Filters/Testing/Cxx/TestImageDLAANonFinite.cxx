@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
 // SPDX-License-Identifier: BSD-3-Clause
-// NaN and infinity in vtkImageDLAA's input: a pixel that reads one (within the short-edge
+// NaN, infinity and values too large to blend in vtkImageDLAA's input: a pixel that reads one (within the short-edge
 // cross, and with long edges within the long-edge windows, see vtkDLAAOptions) is left as it
 // is; every other pixel gets exactly the result of the image without them. (Bad input, for
 // every method, is in TestAntialiasingAlgorithmErrors.)
@@ -26,10 +26,13 @@ bool Reads(int x, int y, int bx, int by, int reach)
 
 void NonFinite()
 {
-  const double bad[] = { std::numeric_limits<double>::quiet_NaN(),
-    std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity() };
   for (int type : { VTK_FLOAT, VTK_DOUBLE })
   {
+    // NaN, the infinities, and a finite value so large that blending it would overflow (found
+    // by the fuzz target mlaa_filter_fuzzer: -1.7e38 in a float image gave NaN).
+    const double huge = type == VTK_FLOAT ? -1.7e38 : -1.7e308;
+    const double bad[] = { std::numeric_limits<double>::quiet_NaN(),
+      std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(), huge };
     for (bool longEdges : { true, false })
     {
       vtkNew<vtkDLAAOptions> options;
@@ -42,7 +45,7 @@ void NonFinite()
         return k == 3 ? 1.0 : (inside ? 0.9 - 0.2 * k : 0.1 + 0.1 * k);
       });
       const auto cleanOut = RunDLAA(clean, options);
-      for (int b = 0; b < 3; ++b)
+      for (int b = 0; b < 4; ++b)
       {
         // One non-finite pixel on the ramp of the long edge (row 11 near x = 40), in one
         // channel.
@@ -85,10 +88,51 @@ void NonFinite()
     }
   }
 }
+
+// An image of a type blended in float under a ValueRange so narrow that its values normalise
+// beyond what can be blended (1 / (hi - lo) is infinite in float): every pixel is left as it
+// is. Found by the fuzz target mlaa_filter_fuzzer, where such a signed char image gave NaN,
+// converted back to signed char (undefined).
+void NarrowValueRange()
+{
+  for (int type : { VTK_SIGNED_CHAR, VTK_SHORT })
+  {
+    vtkNew<vtkDLAAOptions> options;
+    options->SetLongEdges(true);
+    options->SetEpsilon(0.0);
+    auto image = MakeImage(40, 30, 2, type);
+    // Negative and positive values: they normalise to -infinity and +infinity (and 0 to NaN).
+    FillImage(image, [](int x, int y, int, int k) {
+      return (x * 37 + y * 11 + k * 5) % 100 - 50.0;
+    });
+    vtkNew<vtkImageDLAA> filter;
+    filter->SetOptions(options);
+    filter->SetValueRange(1e-300, 1e-280);
+    filter->SetInputData(image);
+    filter->Update();
+    vtkImageData* out = filter->GetOutput();
+    int wrong = 0;
+    for (int y = 0; y < 30; ++y)
+    {
+      for (int x = 0; x < 40; ++x)
+      {
+        for (int k = 0; k < 2; ++k)
+        {
+          wrong += GetValue(out, x, y, k) == GetValue(image, x, y, k) ? 0 : 1;
+        }
+      }
+    }
+    if (!MLAA_CHECK(wrong == 0))
+    {
+      std::cerr << "type " << type << ": " << wrong << " values changed" << std::endl;
+    }
+  }
+}
 }
 
 int TestImageDLAANonFinite(int, char*[])
 {
   NonFinite();
+  NarrowValueRange();
   return Result();
 }
