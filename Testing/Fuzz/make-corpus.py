@@ -169,7 +169,7 @@ def tool_seeds(fuzzer):
          [option("--edges", 3), option("--reconstruction", 0)]),
         ("pnm-debug-edges-existing-output", "pnm", [], "jpg", True, [option("--debug", 1)]),
         ("pfm-float", "pfm", None, "tif", False, [option("--threshold", 40)]),
-        ("bmp", "bmp", ["-d", "uint8"], "bmp", False, [option("--max-search-steps", 0, 3)]),
+        ("png-to-bmp", "png", ["-d", "uint8"], "bmp", False, [option("--max-search-steps", 0, 3)]),
         ("tga-rgba-premultiplied", "tga", ["--ch", "R,G,B,A=0.7", "-d", "uint8"], "tga", False,
          [option("--alpha", 2)]),
         ("hdr", "hdr", [], "hdr", False, []),

@@ -284,6 +284,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   args.push_back(inputPath.string());
   args.push_back(outputPath.string());
 
+  // OpenImageIO 2.4.7's BMP reader crashes on some malformed files (docs/development.md,
+  // Fuzzing): the tool reports that as designed, but in-process it would end the fuzzer on a bug
+  // that is not ours, in any run that happens to reach it. Bytes that the BMP reader would take
+  // (its signatures: BM, BA, CI, CP, IC, PT) are left out; other files named .bmp still reach
+  // the tool's handling of a reader that refuses a file.
+  if (in.Remaining() >= 2)
+  {
+    const std::string magic(reinterpret_cast<const char*>(in.Rest()), 2);
+    for (const char* bmp : { "BM", "BA", "CI", "CP", "IC", "PT" })
+    {
+      if (magic == bmp)
+      {
+        return 0;
+      }
+    }
+  }
   RemoveWorkFiles();
   {
     std::ofstream file(inputPath, std::ios::binary);
