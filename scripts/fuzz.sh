@@ -16,7 +16,15 @@ source_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 seconds="${1:-600}"
 corpus_root="${2:-${XDG_CACHE_HOME:-$HOME/.cache}/vtkMLAA-fuzz}"
 build_dir="${MLAA_FUZZ_BUILD:-$source_dir/build-fuzz}"
-targets=(mlaa_filter_fuzzer mlaa_tool_fuzzer)
+# MLAA_FUZZ_TARGETS: which targets to fuzz (both by default; the seeds of both are replayed
+# whatever it says).
+read -r -a targets <<<"${MLAA_FUZZ_TARGETS:-mlaa_filter_fuzzer mlaa_tool_fuzzer}"
+for target in "${targets[@]}"; do
+  case "$target" in
+  mlaa_filter_fuzzer | mlaa_tool_fuzzer) ;;
+  *) echo "fuzz: unknown target '$target' in MLAA_FUZZ_TARGETS" >&2; exit 2 ;;
+  esac
+done
 [[ "$seconds" =~ ^[1-9][0-9]*$ ]] || { echo "fuzz: SECONDS must be a positive integer" >&2; exit 2; }
 
 command -v clang++ >/dev/null || { echo "fuzz: needs clang (scripts/install-deps.sh)" >&2; exit 1; }
