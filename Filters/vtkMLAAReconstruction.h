@@ -177,11 +177,17 @@ void Reconstruct(const ReconstructionSettings& setup, const T* input, vtkIdType 
     const int rows = static_cast<int>(end - begin) + 2 * radius;
     const size_t rowSize = plane * count;
     std::unique_ptr<Acc[]> band(new Acc[rowSize * rows]);
-    for (int i = 0; i < rows; ++i)
-    {
-      const int y = std::min(std::max(first + i, 0), h - 1);
-      reader.Row(pixel(0, y), w, nullptr, band.get() + rowSize * i);
-    }
+    auto readBandRows = [&](int from, int to) {
+      for (int i = from; i < to; ++i)
+      {
+        const int y = std::min(std::max(first + i, 0), h - 1);
+        reader.Row(pixel(0, y), w, nullptr, band.get() + rowSize * i);
+      }
+    };
+    // The rows the neighbour masks read (one past the task's rows each way) now; the outer
+    // rows, which only the coverage windows of selected pixels read, when the first one is.
+    readBandRows(radius - 1, rows - radius + 1);
+    bool windowRowsRead = false;
     // Whether pixels are unlike their neighbours, each pair compared once (Unlike is
     // symmetric): along each band row (x, x + 1), and between band rows i and i + 1 (x with x,
     // x + 1 and x - 1 above it), over the columns where both pixels exist. Branch-free loops
@@ -296,6 +302,12 @@ void Reconstruct(const ReconstructionSettings& setup, const T* input, vtkIdType 
         for (int bit = 0; bit < 8 && !shape; ++bit)
         {
           shape = ((unlike >> bit) & 1) ? features[bit] : nullptr;
+        }
+        if (!windowRowsRead)
+        {
+          readBandRows(0, radius - 1);
+          readBandRows(rows - radius + 1, rows);
+          windowRowsRead = true;
         }
         int shapePixels = 0;
         for (int dy = -radius; dy <= radius; ++dy)

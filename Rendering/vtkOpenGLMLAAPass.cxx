@@ -458,6 +458,8 @@ void vtkOpenGLMLAAPass::SetReconstructionUniforms(vtkShaderProgram* program)
   }
   program->SetUniform1iv("selectionTable", 8, words);
   // The coverage rule's window and shares, from the same generator.
+  static_assert(vtkMLAATopology::CoverageTableSize == 49,
+    "coverageTable in vtkMLAAReconstructionFS.glsl holds 49 entries");
   program->SetUniformi("coverageRadius", vtkMLAATopology::CoverageRadius);
   program->SetUniform1fv(
     "coverageTable", vtkMLAATopology::CoverageTableSize, vtkMLAATopology::GetCoverageTable());
