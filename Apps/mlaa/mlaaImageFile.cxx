@@ -488,6 +488,26 @@ public:
   const std::string& GetReadPath() const { return this->ReadPath; }
   /** The extension of the input's name ("" for standard input). */
   const std::string& GetFormatHint() const { return this->FormatHint; }
+  /** Up to `size` bytes of the file from `offset` (fewer at its end, none on an error). */
+  size_t ReadAt(std::uint64_t offset, unsigned char* data, size_t size) const
+  {
+    size_t done = 0;
+    while (done < size)
+    {
+      const ssize_t got = pread(this->Fd, data + done, size - done, static_cast<off_t>(offset + done));
+      if (got < 0 && errno == EINTR)
+      {
+        continue;
+      }
+      if (got <= 0)
+      {
+        break;
+      }
+      done += static_cast<size_t>(got);
+    }
+    return done;
+  }
+
   /** OpenImageIO's message with the descriptor path replaced by the input's name. */
   std::string Explain(const std::string& message) const
   {
@@ -1075,6 +1095,51 @@ void SweepStaleTemporaries(const std::string& directory)
 }
 
 //------------------------------------------------------------------------------
+// Why OpenImageIO's reader must not read the pixels of this file, or "" where it may.
+//
+// OpenImageIO before 3.2 writes up to 28 bytes past the end of its own pixel buffer when it
+// reads an ICO file whose first icon is a bitmap (not a PNG) of fewer than 32 bits per pixel
+// and whose width is not a multiple of 8: it applies the icon's 1-bit transparency mask eight
+// pixels at a time without stopping at the end of the row (upstream fix: OpenImageIO pull
+// request 5088, in 3.2). A heap overflow is not an error the tool could report afterwards (it
+// was found by the tool's fuzz target, Testing/Fuzz), so such files are refused before their
+// pixels are read. The layout read here is the ICO directory entry (6-byte header, then 16
+// bytes per icon: width at 0, image offset at 12) and the bitmap header at that offset (bits
+// per pixel at 14), or a PNG signature there.
+std::string UnsafePixelsReason(
+  const InputFile& source, const std::string& formatName, const OIIO::ImageSpec& spec)
+{
+  const int version = OIIO::openimageio_version();
+  if (formatName != "ico" || version >= 30200 || spec.width % 8 == 0)
+  {
+    return std::string();
+  }
+  unsigned char entry[16];
+  if (source.ReadAt(6, entry, sizeof(entry)) != sizeof(entry))
+  {
+    return std::string();
+  }
+  const std::uint32_t offset = entry[12] | (entry[13] << 8) | (entry[14] << 16) |
+    (static_cast<std::uint32_t>(entry[15]) << 24);
+  unsigned char bitmap[16];
+  if (source.ReadAt(offset, bitmap, sizeof(bitmap)) != sizeof(bitmap) ||
+    (bitmap[1] == 'P' && bitmap[2] == 'N' && bitmap[3] == 'G'))
+  {
+    return std::string(); // a PNG icon, read by OpenImageIO's PNG code
+  }
+  const int bitsPerPixel = bitmap[14] | (bitmap[15] << 8);
+  if (bitsPerPixel >= 32)
+  {
+    return std::string(); // no transparency mask
+  }
+  return "cannot read this ico file safely: its icon is " + std::to_string(spec.width) +
+    " pixels wide (not a multiple of 8) with " + std::to_string(bitsPerPixel) +
+    " bits per pixel and a transparency mask, which the ICO reader of OpenImageIO " +
+    std::to_string(version / 10000) + "." + std::to_string(version / 100 % 100) + "." +
+    std::to_string(version % 100) + " mishandles (it writes past the end of its buffer; " +
+    "fixed in OpenImageIO 3.2); convert the icon to PNG with another program";
+}
+
 ImageFile ReadImageFile(const std::string& path, std::uint64_t maxPixels)
 {
   const std::string what = DisplayName(path, false) + ": ";
@@ -1103,6 +1168,11 @@ ImageFile ReadImageFile(const std::string& path, std::uint64_t maxPixels)
   if (spec.deep)
   {
     throw Error(what + "deep images are not supported");
+  }
+  const std::string unsafe = UnsafePixelsReason(source, file.FormatName, spec);
+  if (!unsafe.empty())
+  {
+    throw Error(what + unsafe);
   }
   if (spec.depth > 1)
   {

@@ -181,6 +181,96 @@ void HostileHugeHeaders()
   }
 }
 
+// An ICO file of one `width` x `height` bitmap icon (not a PNG one) of `bitsPerPixel` 8, 24 or
+// 32: palette (8 bits), pixels and, below 32 bits, the 1-bit transparency mask, rows padded to
+// 4 bytes as the format wants. The pixels are a vertical split, dark left and light right.
+std::string IconFile(int width, int height, int bitsPerPixel)
+{
+  std::string bytes;
+  auto put = [&bytes](unsigned value, int size)
+  {
+    for (int i = 0; i < size; ++i)
+    {
+      bytes.push_back(static_cast<char>((value >> (8 * i)) & 0xff));
+    }
+  };
+  auto padded = [](int rowBytes) { return (rowBytes + 3) / 4 * 4; };
+  const int paletteSize = bitsPerPixel == 8 ? 256 : 0;
+  const int colourRow = padded((width * bitsPerPixel + 7) / 8);
+  const int maskRow = bitsPerPixel < 32 ? padded((width + 7) / 8) : 0;
+  const int size = 40 + 4 * paletteSize + height * (colourRow + maskRow);
+  put(0, 2), put(1, 2), put(1, 2);                          // header: an icon file, one icon
+  put(width, 1), put(height, 1), put(0, 1), put(0, 1);      // directory entry
+  put(1, 2), put(bitsPerPixel, 2), put(size, 4), put(22, 4);
+  put(40, 4), put(width, 4), put(2 * height, 4), put(1, 2); // bitmap header (both masks' height)
+  put(bitsPerPixel, 2), put(0, 4), put(0, 4), put(0, 4), put(0, 4), put(0, 4), put(0, 4);
+  for (int i = 0; i < paletteSize; ++i)
+  {
+    put(i, 1), put(i, 1), put(i, 1), put(0, 1);
+  }
+  for (int y = 0; y < height; ++y)
+  {
+    const size_t start = bytes.size();
+    for (int x = 0; x < width; ++x)
+    {
+      const unsigned value = x < width / 2 ? 40 : 220;
+      for (int b = 0; b < bitsPerPixel / 8; ++b)
+      {
+        put(b == 3 ? 255 : value, 1);
+      }
+    }
+    bytes.resize(start + colourRow, '\0');
+  }
+  bytes.append(static_cast<size_t>(height * maskRow), '\0'); // all opaque
+  return bytes;
+}
+
+void HostileUnsafeIcons()
+{
+  // OpenImageIO before 3.2 writes past its own buffer on bitmap icons with a transparency mask
+  // whose width is not a multiple of 8 (mlaaImageFile.cxx, UnsafePixelsReason): the tool
+  // refuses them before their pixels are read, whatever the file is called. Icons of any other
+  // shape read as before.
+  const bool unsafeReader = OIIO::openimageio_version() < 30200;
+  struct Icon
+  {
+    int Width, Height, Bits;
+    bool Unsafe;
+  };
+  int index = 0;
+  for (const Icon& icon : { Icon{ 12, 6, 8, unsafeReader }, Icon{ 13, 5, 24, unsafeReader },
+         Icon{ 1, 1, 8, unsafeReader }, Icon{ 16, 6, 8, false }, Icon{ 24, 4, 24, false },
+         Icon{ 12, 6, 32, false }, Icon{ 13, 5, 32, false } })
+  {
+    for (const char* extension : { ".ico", ".png" })
+    {
+      const std::string stem = "icon" + std::to_string(index++);
+      const fs::path input = WorkFile(stem + extension);
+      WriteText(input, IconFile(icon.Width, icon.Height, icon.Bits));
+      const fs::path output = WorkFile(stem + "-out.png");
+      std::cout << "  " << icon.Width << " x " << icon.Height << ", " << icon.Bits
+                << " bits, named " << input.filename().string() << std::endl;
+      if (icon.Unsafe)
+      {
+        ExpectCleanFailure({}, input.string(), output, input.string());
+        const Run run = RunTool({ input.string(), output.string() });
+        MLAA_CHECK(run.Err.find("not a multiple of 8") != std::string::npos);
+        MLAA_CHECK(run.Err.find("OpenImageIO") != std::string::npos);
+      }
+      else
+      {
+        ExpectSuccess({ input.string(), output.string() }, output);
+        const FileImage read = ReadFile(output);
+        int dims[3];
+        read.Image->GetDimensions(dims);
+        MLAA_CHECK(dims[0] == icon.Width && dims[1] == icon.Height);
+        MLAA_CHECK(FileTexel(output, 0, 0, 0) == 40);
+        MLAA_CHECK(FileTexel(output, icon.Width - 1, 0, 0) == 220);
+      }
+    }
+  }
+}
+
 // A small image with `channels` channels of VTK type `type` whose staircase the filter changes.
 vtkSmartPointer<vtkImageData> HostileSeedImage(int channels, int type, int width = 32,
   int height = 24)
@@ -529,6 +619,7 @@ void CrashSurfaced()
 static const bool Registered = RegisterCases({
   { "hostile-special-inputs", HostileSpecialInputs },
   { "hostile-huge-headers", HostileHugeHeaders },
+  { "hostile-unsafe-icons", HostileUnsafeIcons },
   { "hostile-output-formats", HostileOutputFormats },
   { "hostile-corpus", HostileCorpus },
   { "random-files-a", RandomFilesA },
