@@ -184,6 +184,8 @@ vtkOpenGLAntialiasingPass::StepsChange vtkOpenGLAntialiasingPass::UseRendererTra
   }
   const bool peeling = renderer->GetUseDepthPeeling() != 0;
   const bool dual = peeling && renderer->IsDualDepthPeelingSupported();
+  // As the renderer reports it after drawing translucent geometry by itself.
+  this->SetLastRenderingUsedDepthPeeling(renderer, peeling);
   // With UseDepthPeelingForVolumes, volumes are peeled along with the translucent geometry, by
   // dual depth peeling only (the renderer turns the setting off where that is unsupported).
   vtkRenderPass* volumetric = steps->GetVolumetricPass();

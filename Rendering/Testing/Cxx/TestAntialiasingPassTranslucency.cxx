@@ -39,6 +39,8 @@
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRTAnalyticSource.h"
+#include "vtkObjectFactory.h"
+#include "vtkRenderPass.h"
 #include "vtkRenderState.h"
 #include "vtkSphereSource.h"
 #include "vtkTranslucentPass.h"
@@ -255,6 +257,20 @@ struct StepsSnapshot
   }
 };
 
+// Sets what a renderer's GetLastRenderingUsedDepthPeeling returns (a render pass may).
+class PeelingReport : public vtkRenderPass
+{
+public:
+  static PeelingReport* New();
+  vtkTypeMacro(PeelingReport, vtkRenderPass);
+  void Render(const vtkRenderState*) override {}
+  void Set(vtkRenderer* renderer, bool value) { this->SetLastRenderingUsedDepthPeeling(renderer, value); }
+
+protected:
+  PeelingReport() = default;
+};
+vtkStandardNewMacro(PeelingReport);
+
 // Renders `window` without the pass (the renderer's own translucency) and with `pass`, and
 // checks the pass's result against the method's filter on the renderer's screenshot.
 void CheckCase(const PassMethod& method, vtkRenderWindow* window, vtkRenderer* renderer,
@@ -267,6 +283,22 @@ void CheckCase(const PassMethod& method, vtkRenderWindow* window, vtkRenderer* r
   auto result = vtkMLAAScenes::Capture(window, alpha);
   Check(StepsSnapshot(pass) == before, (what + ": the delegate's steps as they were").c_str(),
     __FILE__, __LINE__);
+  // GetLastRenderingUsedDepthPeeling says what it says without the pass, from either value
+  // left by an earlier render (the renderer leaves it as it was when nothing is translucent).
+  vtkNew<PeelingReport> report;
+  for (const bool earlier : { false, true })
+  {
+    report->Set(renderer, earlier);
+    renderer->SetPass(nullptr);
+    window->Render();
+    const bool plainPeeled = renderer->GetLastRenderingUsedDepthPeeling() != 0;
+    report->Set(renderer, earlier);
+    renderer->SetPass(pass);
+    window->Render();
+    Check((renderer->GetLastRenderingUsedDepthPeeling() != 0) == plainPeeled,
+      (what + ": GetLastRenderingUsedDepthPeeling as without the pass").c_str(), __FILE__,
+      __LINE__);
+  }
   CheckAgainst(method, plain, result, method.Filter(pass, plain), what);
 }
 

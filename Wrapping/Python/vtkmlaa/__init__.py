@@ -162,6 +162,11 @@ def enable(renderer, method="mlaa", preset=None, **options):
     renderer without a window gets the pass, and its window's multisampling must then be
     turned off by hand (SetMultiSamples(0)).
 
+    Translucent geometry and volumes are drawn as the renderer draws them without the pass:
+    order-independent translucency by default, (dual) depth peeling when the renderer's
+    UseDepthPeeling is on (with its MaximumNumberOfPeels, OcclusionRatio and
+    UseDepthPeelingForVolumes), and renderer.GetLastRenderingUsedDepthPeeling() reports it.
+
     preset: for MLAA, one of "low", "medium", "high" (the default) and "ultra"; DLAA has none.
     options: settings of the options object (vtkMLAAOptions or vtkDLAAOptions) or of the pass,
     by their VTK name in snake_case or CamelCase, e.g. threshold=0.05, max_search_steps=8,
