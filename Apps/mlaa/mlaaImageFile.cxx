@@ -1140,7 +1140,51 @@ std::string UnsafePixelsReason(
     "fixed in OpenImageIO 3.2); convert the icon to PNG with another program";
 }
 
+namespace
+{
+// Runs `work` (a read or a write through OpenImageIO) and turns an exception that is not the
+// tool's own (a library's std::length_error, say, whose text is only "vector::_M_default_append")
+// into an mlaa::Error that says what failed in the tool's words, the library's text after it.
+// `what`: "NAME: "; `doing`: "reading it", "writing it"; `format`: the format, once known.
+template <typename Work>
+auto LibraryExceptionsAsErrors(
+  const std::string& what, const char* doing, const std::string& format, Work&& work)
+  -> decltype(work())
+{
+  try
+  {
+    return work();
+  }
+  catch (const Error&)
+  {
+    throw;
+  }
+  catch (const std::bad_alloc&)
+  {
+    throw Error(what + "not enough memory while " + doing);
+  }
+  catch (const std::exception& e)
+  {
+    throw Error(what + "OpenImageIO" + (format.empty() ? std::string() : "'s " + format + " code") +
+      " failed while " + doing + " (the file is probably damaged): " +
+      LibraryText(e.what(), "an exception without a message"));
+  }
+}
+} // namespace
+
+// ReadImageFile without LibraryExceptionsAsErrors; `format` gets the format's name once known.
+static ImageFile ReadImageFileUnguarded(
+  const std::string& path, std::uint64_t maxPixels, std::string& format);
+
 ImageFile ReadImageFile(const std::string& path, std::uint64_t maxPixels)
+{
+  std::string format;
+  return LibraryExceptionsAsErrors(DisplayName(path, false) + ": ", "reading it", format,
+    [&] { return ReadImageFileUnguarded(path, maxPixels, format); });
+}
+
+static ImageFile ReadImageFileUnguarded(
+  const std::string& path, std::uint64_t maxPixels, std::string& format)
 {
   const std::string what = DisplayName(path, false) + ": ";
   const InputFile source(path);
@@ -1164,6 +1208,7 @@ ImageFile ReadImageFile(const std::string& path, std::uint64_t maxPixels)
   ImageFile file;
   file.Spec = input->spec();
   file.FormatName = input->format_name();
+  format = file.FormatName;
   const OIIO::ImageSpec& spec = file.Spec;
   if (spec.deep)
   {
@@ -1251,9 +1296,26 @@ ImageFile ReadImageFile(const std::string& path, std::uint64_t maxPixels)
 }
 
 //------------------------------------------------------------------------------
+// WriteImageFile without LibraryExceptionsAsErrors; `formatName` gets the format's name.
+static std::string WriteImageFileUnguarded(vtkImageData* image, const std::string& path,
+  const OIIO::ImageSpec& description, OIIO::TypeDesc pixelType, const double valueRange[2],
+  const std::string& format, std::string& formatName);
+
 std::string WriteImageFile(vtkImageData* image, const std::string& path,
   const OIIO::ImageSpec& description, OIIO::TypeDesc pixelType, const double valueRange[2],
   const std::string& format)
+{
+  std::string formatName;
+  return LibraryExceptionsAsErrors(DisplayName(path, true) + ": ", "writing it", formatName,
+    [&] {
+      return WriteImageFileUnguarded(
+        image, path, description, pixelType, valueRange, format, formatName);
+    });
+}
+
+static std::string WriteImageFileUnguarded(vtkImageData* image, const std::string& path,
+  const OIIO::ImageSpec& description, OIIO::TypeDesc pixelType, const double valueRange[2],
+  const std::string& format, std::string& formatNameOut)
 {
   const std::string what = DisplayName(path, true) + ": ";
   vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
@@ -1304,6 +1366,7 @@ std::string WriteImageFile(vtkImageData* image, const std::string& path,
       Printable(std::filesystem::path(path).extension().string(), 40) + "'; --format NAME chooses one)");
   }
   const std::string formatName = output->format_name();
+  formatNameOut = formatName;
 
   // What the writer is given: all channels, or the colour ones of a format without alpha.
   std::string why;

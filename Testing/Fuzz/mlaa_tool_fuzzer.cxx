@@ -68,6 +68,7 @@
 #include <OpenImageIO/imageio.h>
 #include <sanitizer/common_interface_defs.h>
 
+#include <csignal>
 #include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -120,25 +121,38 @@ bool OpenImageIOSurvives(const fs::path& path)
   if (pid == 0)
   {
     __sanitizer_set_death_callback(ExitFromChild);
+    // A signal ends the child as the kernel would end it: libFuzzer's handlers, inherited,
+    // would report it as a crash of the fuzzer and save the input as a finding.
+    for (const int signal : { SIGSEGV, SIGBUS, SIGILL, SIGFPE, SIGABRT })
+    {
+      std::signal(signal, SIG_DFL);
+    }
     const int null = open("/dev/null", O_WRONLY);
     if (null >= 0)
     {
       dup2(null, STDOUT_FILENO);
       dup2(null, STDERR_FILENO);
     }
-    auto input = OIIO::ImageInput::open(path.string());
-    if (input)
+    // An exception is how a reader may fail (the tool reports it): the reader survived.
+    try
     {
-      const OIIO::ImageSpec& spec = input->spec();
-      const unsigned long long pixels = static_cast<unsigned long long>(std::max(spec.width, 0)) *
-        static_cast<unsigned long long>(std::max(spec.height, 0)) *
-        static_cast<unsigned long long>(std::max(spec.depth, 1));
-      if (pixels > 0 && pixels <= MaxPixels && spec.nchannels > 0 && spec.nchannels <= 64)
+      auto input = OIIO::ImageInput::open(path.string());
+      if (input)
       {
-        std::vector<float> buffer(static_cast<size_t>(pixels) * spec.nchannels);
-        input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, buffer.data());
+        const OIIO::ImageSpec& spec = input->spec();
+        const unsigned long long pixels = static_cast<unsigned long long>(std::max(spec.width, 0)) *
+          static_cast<unsigned long long>(std::max(spec.height, 0)) *
+          static_cast<unsigned long long>(std::max(spec.depth, 1));
+        if (pixels > 0 && pixels <= MaxPixels && spec.nchannels > 0 && spec.nchannels <= 64)
+        {
+          std::vector<float> buffer(static_cast<size_t>(pixels) * spec.nchannels);
+          input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, buffer.data());
+        }
+        input->close();
       }
-      input->close();
+    }
+    catch (const std::exception&)
+    {
     }
     _exit(0);
   }

@@ -271,6 +271,32 @@ void HostileUnsafeIcons()
   }
 }
 
+void HostileLibraryExceptions()
+{
+  // OpenImageIO 2.4.7's GIF reader throws std::length_error ("vector::_M_default_append") on
+  // this 205-byte file, found by the tool's fuzz target: the tool says which file failed and
+  // in what, with the library's text after, in one clean line, and writes nothing.
+  std::string bytes = "GIF";
+  for (int i = 0; i < 28; ++i)
+  {
+    bytes += "\xcc\xcc=\xcd";
+  }
+  bytes += '\xcc';
+  bytes.append(20, '\0');
+  bytes.append(69, '\x14');
+  for (const char* name : { "exception.gif", "exception.png" })
+  {
+    const fs::path input = WorkFile(name);
+    WriteText(input, bytes);
+    const fs::path output = WorkFile("exception-out.png");
+    ExpectCleanFailure({}, input.string(), output, input.string());
+    const Run run = RunTool({ input.string(), output.string() });
+    std::cout << "  " << run.Err;
+    MLAA_CHECK(run.Err.find("_M_") == std::string::npos ||
+      run.Err.find("OpenImageIO failed while reading it") != std::string::npos);
+  }
+}
+
 // A small image with `channels` channels of VTK type `type` whose staircase the filter changes.
 vtkSmartPointer<vtkImageData> HostileSeedImage(int channels, int type, int width = 32,
   int height = 24)
@@ -620,6 +646,7 @@ static const bool Registered = RegisterCases({
   { "hostile-special-inputs", HostileSpecialInputs },
   { "hostile-huge-headers", HostileHugeHeaders },
   { "hostile-unsafe-icons", HostileUnsafeIcons },
+  { "hostile-library-exceptions", HostileLibraryExceptions },
   { "hostile-output-formats", HostileOutputFormats },
   { "hostile-corpus", HostileCorpus },
   { "random-files-a", RandomFilesA },
