@@ -19,7 +19,9 @@
 // (a narrower, taller rectangle beside it), too short to belong to one straight staircase with
 // the side, so nothing is extrapolated: the corner takes half the chapter's ramp (the side's
 // first half keeps the chapter's Z exactly, the second half gets the step's part plus half the
-// corner's, quantised after the sum), in rows and, transposed, in columns.
+// corner's, quantised after the sum), in rows and, transposed, in columns; a rectangle whose
+// sides are longer than the search's reach (a corner at one end, the reach at the other) and
+// have corners at both ends keeps the chapter's weights everywhere.
 #include "vtkAntialiasingTestUtilities.h"
 
 #include "vtkMLAAAreaTexture.h"
@@ -245,6 +247,17 @@ void UnknownHeight()
     }
     MLAA_CHECK(halved >= length / 2 - 2);
   }
+
+  // Sides of 60 pixels, twice the reach of 16 steps: the pixels nearer one corner see the other
+  // end beyond the reach, where nothing is seen either.
+  auto rectangle = MakeImage(Width, Height, 1);
+  FillImage(rectangle, [](int x, int y, int, int) {
+    return (x >= 2 && x <= 61 && y >= Bottom && y <= SideRow) ? 0.0 : 255.0;
+  });
+  MLAA_CHECK(2 * on->GetMaxSearchSteps() < 61 - 2);
+  auto weights = RunMLAA(rectangle, on);
+  MLAA_CHECK(Compare(weights, RunMLAA(rectangle, off), 0.0).Count == 0);
+  MLAA_CHECK(GetValue(weights, 58, SideRow, 0) > 0.0);
 }
 }
 
