@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cmath>
 #include <cstring>
 #include <map>
 #include <mutex>
@@ -98,6 +99,8 @@ void MakeWeightSettings(vtkMLAAOptions* options, WeightSettings& settings)
   settings.AreaSize = vtkMLAAAreaTexture::NumberOfCodes * settings.CellSize;
   settings.DiagonalAreaSize = vtkMLAAAreaTexture::NumberOfDiagonalCodes * settings.CellSize;
   settings.Area = SharedQuantised(maxDistance, false, &vtkMLAAAreaTexture::GetSharedTable);
+  settings.FloatArea =
+    settings.Corners ? vtkMLAAAreaTexture::GetSharedTable(maxDistance) : nullptr;
   settings.DiagonalArea = settings.Diagonals
     ? SharedQuantised(maxDistance, true, &vtkMLAAAreaTexture::GetSharedDiagonalTable)
     : nullptr;
@@ -243,6 +246,7 @@ public:
       // A horizontal line: its ends lie to the left and to the right.
       int e1 = this->CrossingLeftEdges(x - leftEnd, y, y + 1);
       int e2 = this->CrossingLeftEdges(x + rightEnd + 1, y, y + 1);
+      bool half1 = false, half2 = false;
       if (this->S.Corners && leftEnd + rightEnd > 0)
       {
         // Past a step the staircase goes on one row down (code 3: the crossing edge is on this
@@ -266,15 +270,18 @@ public:
           leftEnd = first.Distance;
           e2 = second.Code;
           rightEnd = second.Distance;
+          half1 = first.Half;
+          half2 = second.Half;
         }
       }
-      this->LookUpArea(e1, e2, leftEnd, rightEnd, w);
+      this->LookUpArea(e1, e2, leftEnd, rightEnd, half1, half2, w);
     }
     if (left)
     {
       // A vertical line: its first end is the upper one.
       int e1 = this->CrossingTopEdges(x, x - 1, y + up);
       int e2 = this->CrossingTopEdges(x, x - 1, y - down - 1);
+      bool half1 = false, half2 = false;
       if (this->S.Corners && up + down > 0)
       {
         // Past a step the staircase goes on one column right (code 3: the crossing edge is on
@@ -298,9 +305,11 @@ public:
           up = first.Distance;
           e2 = second.Code;
           down = second.Distance;
+          half1 = first.Half;
+          half2 = second.Half;
         }
       }
-      this->LookUpArea(e1, e2, up, down, w + 2);
+      this->LookUpArea(e1, e2, up, down, half1, half2, w + 2);
     }
   }
 
@@ -314,6 +323,7 @@ private:
     int Distance;
     bool Unseen = false;
     int Next = 0;
+    bool Half = false; // set by ExtrapolateCorners: the end's height is unknown
   };
 
   // CornerExtrapolation (vtkMLAAOptions). The area table (section 4.3.3) reads a crossing edge on
@@ -335,7 +345,14 @@ private:
   // extrapolate from (corners at both ends, an end beyond the reach or of code 4, or a next run
   // that cannot belong to one straight staircase with this line: shorter than 2, or more than
   // one pixel shorter than this line) the chapter's reading stays, which is right on average
-  // there. Returns whether it changed the ends. Must match extrapolateCorners in
+  // there, with one exception (issue 20): where the other end is seen, within the reach, but
+  // gives no slope (such a next run, or no crossing edge there), the corner's height is unknown:
+  // the chapter's step (half a pixel) and a flat end (nothing) are equally likely readings, and
+  // the end takes their mean, half the chapter's ramp (End::Half; the area table's ramps are
+  // linear in the end's height, so that is half of the corner end's share of the two areas, see
+  // LookUpArea). Left as the chapter reads them: corners at both ends, and an other end beyond
+  // the reach or with crossing edges on both sides (code 4, whose reading depends on this end's).
+  // Returns whether it changed the ends. Must match extrapolateCorners in
   // vtkMLAABlendingWeightsFS.glsl.
   bool ExtrapolateCorners(End& first, End& second) const
   {
@@ -346,11 +363,16 @@ private:
     End& corner = first.Unseen ? first : second;
     const End& step = first.Unseen ? second : first;
     const int length = first.Distance + second.Distance + 1;
+    const int maxDistance = this->S.CellSize - 1;
     if (step.Next < 2 || step.Next + 1 < length)
     {
-      return false;
+      if (step.Code == 4 || step.Distance >= maxDistance || (corner.Code != 1 && corner.Code != 3))
+      {
+        return false;
+      }
+      corner.Half = true;
+      return true;
     }
-    const int maxDistance = this->S.CellSize - 1;
     const int distance = std::max(length, step.Next) - 1 - step.Distance;
     if (step.Next > maxDistance || distance > maxDistance)
     {
@@ -624,9 +646,29 @@ private:
     return this->S.DiagonalArea->data() + 3 * texel;
   }
 
-  void LookUpArea(int e1, int e2, int d1, int d2, unsigned char* w) const
+  // The two areas of texel (e1, e2, d1, d2), quantised. With half1 or half2 (CornerExtrapolation,
+  // End::Half), that end's height is halved: the table's areas are sums of one part from each
+  // end (vtkMLAAAreaTexture::ComputeAreas), so the areas are those of (e1, 0) and (0, e2) with
+  // the halved end's weighted by 1/2, added in float and then quantised, as
+  // vtkMLAABlendingWeightsFS.glsl adds them before the pass stores the weights. Neither end may
+  // then have code 4 (whose part depends on the other end's).
+  void LookUpArea(
+    int e1, int e2, int d1, int d2, bool half1, bool half2, unsigned char* w) const
   {
     const int d = this->S.CellSize;
+    if (half1 || half2)
+    {
+      const float* table = this->S.FloatArea->data();
+      const float* a = table + 2 * (static_cast<size_t>(d2) * this->S.AreaSize + (d * e1 + d1));
+      const float* b = table + 2 * (static_cast<size_t>(d * e2 + d2) * this->S.AreaSize + d1);
+      const float k1 = half1 ? 0.5f : 1.0f;
+      const float k2 = half2 ? 0.5f : 1.0f;
+      for (int c = 0; c < 2; ++c)
+      {
+        w[c] = static_cast<unsigned char>(std::nearbyint((k1 * a[c] + k2 * b[c]) * 255.0f));
+      }
+      return;
+    }
     const size_t texel = static_cast<size_t>(d * e2 + d2) * this->S.AreaSize + (d * e1 + d1);
     const unsigned char* a = this->S.Area->data() + 2 * texel;
     w[0] = a[0];

@@ -101,6 +101,10 @@ struct WeightSettings
   // texels, costs more than the rest of the weights stage).
   std::shared_ptr<const std::vector<unsigned char>> Area;         // 2 per texel
   std::shared_ptr<const std::vector<unsigned char>> DiagonalArea; // 3 per texel; null without diagonals
+  // With Corners: the float table of vtkMLAAAreaTexture, for the ends of half height (an end whose
+  // height is unknown takes half the ramp of a step), whose areas are combined from two texels
+  // and then quantised, as the pass combines them before it stores the weights; null without.
+  std::shared_ptr<const std::vector<float>> FloatArea;
 };
 VTKFILTERSMLAA_EXPORT void MakeWeightSettings(vtkMLAAOptions* options, WeightSettings& settings);
 

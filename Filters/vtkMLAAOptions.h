@@ -65,9 +65,12 @@
  *   length of the next run past that step gives the slope): the line is ramped as the whole run
  *   of that staircase it is part of. The chapter reads every crossing edge as a one-pixel step,
  *   so a long line's ramp rounds the corner over half the line's length, the more the longer
- *   the search, also where the side lies on a pixel boundary. Where nothing is seen to
- *   extrapolate from, the chapter's reading stays. Raises AAR and lowers damage on long lines
- *   (docs/measurements.md), but not on every scene, hence off by default.
+ *   the search, also where the side lies on a pixel boundary. Where the other end is seen but
+ *   gives no slope (no next run, or one too short to belong to one straight staircase with the
+ *   line), the corner's height is unknown and it takes half the chapter's ramp, the mean of a
+ *   step and a flat end. Where nothing is seen at all (corners at both ends, the other end
+ *   beyond the search's reach), the chapter's reading stays. Raises AAR and lowers damage on
+ *   long lines (docs/measurements.md), but not on every scene, hence off by default.
  * - DominantDirectionBlending (default on): in the neighbourhood blending, a pixel that lies on
  *   both a horizontal and a vertical line (the corner of a staircase) is blended along the one
  *   with the larger weight only, as SMAA (Jimenez et al., 2012) does; on a tie it keeps both.

@@ -144,6 +144,19 @@ vec2 area(int e1, int e2, int d1, int d2)
   return texelFetch(areaTexture, ivec2(cellSize * e1 + d1, cellSize * e2 + d2), 0).rg;
 }
 
+// The areas with the heights of the ends flagged in `halved` halved (CornerExtrapolation): each
+// end's part of the areas is read on its own, (e1, 0) and (0, e2), and the halved one weighted
+// by 1/2 (WeightsComputer::LookUpArea).
+vec2 area(int e1, int e2, int d1, int d2, bvec2 halved)
+{
+  if (!any(halved))
+  {
+    return area(e1, e2, d1, d2);
+  }
+  return (halved.x ? 0.5 : 1.0) * area(e1, 0, d1, d2) +
+    (halved.y ? 0.5 : 1.0) * area(0, e2, d1, d2);
+}
+
 // Exact edgels of a pixel; none outside the image.
 vec2 edgelsAt(ivec2 p)
 {
@@ -226,21 +239,31 @@ int runDistance(ivec2 q, int direction)
 // length of the staircase's next run past each end that is a step (0: none). Where exactly one
 // end is unseen and the other is a step whose next run can belong to one straight staircase with
 // this line, the unseen end becomes a virtual step one whole run from the step (a Z shape), or
-// beyond the reach (code 0 at the maximum distance); returns whether it changed the ends.
-bool extrapolateCorners(inout ivec4 ends, bvec2 unseen, ivec2 next)
+// beyond the reach (code 0 at the maximum distance). Where the other end, within the reach and
+// of code 0, 1 or 3, gives no such run, an unseen end of code 1 or 3 keeps its code and takes
+// half its ramp instead (halved: which end; its height is unknown). Returns whether it changed
+// the ends.
+bool extrapolateCorners(inout ivec4 ends, bvec2 unseen, ivec2 next, out bvec2 halved)
 {
+  halved = bvec2(false);
   if (unseen.x == unseen.y)
   {
     return false;
   }
   ivec2 step = unseen.x ? ends.zw : ends.xy;
+  ivec2 unseenEnd = unseen.x ? ends.xy : ends.zw;
   int stepNext = unseen.x ? next.y : next.x;
   int length = ends.y + ends.w + 1;
+  int maxDistance = cellSize - 1;
   if (stepNext < 2 || stepNext + 1 < length)
   {
-    return false;
+    if (step.x == 4 || step.y >= maxDistance || (unseenEnd.x != 1 && unseenEnd.x != 3))
+    {
+      return false;
+    }
+    halved = unseen;
+    return true;
   }
-  int maxDistance = cellSize - 1;
   int distance = max(length, stepNext) - 1 - step.y;
   ivec2 corner = ivec2(4 - step.x, distance);
   if (stepNext > maxDistance || distance > maxDistance)
@@ -380,6 +403,7 @@ void main()
     int left = int(round(searchTopEdges(center, -1.0)));
     int right = int(round(searchTopEdges(center, 1.0)));
 #endif
+    bvec2 halved = bvec2(false); // ends of half height (CornerExtrapolation)
     float fetchY = center.y + 0.25; // 3:1 between this row and the row above
     int e1 = crossingCode(edgesAt(vec2(center.x - float(left), fetchY)).r, p.x - left, size.x);
     int e2 = crossingCode(
@@ -404,7 +428,7 @@ void main()
         unseen.y = true;
         next.y = 0;
       }
-      if (extrapolateCorners(ends, unseen, next))
+      if (extrapolateCorners(ends, unseen, next, halved))
       {
         e1 = ends.x;
         left = ends.y;
@@ -413,7 +437,7 @@ void main()
       }
     }
 #endif
-    weights.rg = area(e1, e2, left, right);
+    weights.rg = area(e1, e2, left, right, halved);
   }
 
   if (left) // edge at the left: a vertical line, its first end is the upper one
@@ -425,6 +449,7 @@ void main()
     int up = int(round(searchLeftEdges(center, 1.0)));
     int down = int(round(searchLeftEdges(center, -1.0)));
 #endif
+    bvec2 halved = bvec2(false); // ends of half height (CornerExtrapolation)
     float fetchX = center.x - 0.25; // 3:1 between this column and the column to the left
     int e1 = crossingCode(edgesAt(vec2(fetchX, center.y + float(up))).g, p.y + up, size.y);
     int e2 = crossingCode(
@@ -449,7 +474,7 @@ void main()
         unseen.y = true;
         next.y = 0;
       }
-      if (extrapolateCorners(ends, unseen, next))
+      if (extrapolateCorners(ends, unseen, next, halved))
       {
         e1 = ends.x;
         up = ends.y;
@@ -458,7 +483,7 @@ void main()
       }
     }
 #endif
-    weights.ba = area(e1, e2, up, down);
+    weights.ba = area(e1, e2, up, down, halved);
   }
 
   gl_FragData[0] = weights;

@@ -14,6 +14,14 @@
 //   both ends, keep the chapter's weights (nothing is seen to extrapolate from);
 // - the transposed image gives the transposed weights (the vertical lines follow the same rule);
 // - with CornerExtrapolation off, the chapter's weights everywhere.
+// Ends of unknown height (issue 20), on a second shape: a dark rectangle whose top side, 20
+// pixels long, ends at a corner on the right and on the left at a step up to a run of 2 pixels
+// (a narrower, taller rectangle beside it), too short to belong to one straight staircase with
+// the side, so nothing is extrapolated: the corner takes half the chapter's ramp (the side's
+// first half keeps the chapter's Z exactly, the second half gets the step's part plus half the
+// corner's, quantised after the sum), in rows and, transposed, in columns; a rectangle whose
+// sides are longer than the search's reach (a corner at one end, the reach at the other) and
+// have corners at both ends keeps the chapter's weights everywhere.
 #include "vtkAntialiasingTestUtilities.h"
 
 #include "vtkMLAAAreaTexture.h"
@@ -42,14 +50,25 @@ bool Inside(int x, int y)
   return x <= RightSide && y >= Bottom && y <= TopRow(x);
 }
 
-vtkSmartPointer<vtkImageData> Shape(bool transposed)
+vtkSmartPointer<vtkImageData> Shape(bool transposed, bool (*inside)(int, int) = &Inside)
 {
   auto image = transposed ? MakeImage(Height, Width, 1) : MakeImage(Width, Height, 1);
-  FillImage(image, [transposed](int x, int y, int, int) {
-    const bool inside = transposed ? Inside(y, x) : Inside(x, y);
-    return inside ? 0.0 : 255.0;
+  FillImage(image, [transposed, inside](int x, int y, int, int) {
+    const bool in = transposed ? inside(y, x) : inside(x, y);
+    return in ? 0.0 : 255.0;
   });
   return image;
+}
+
+// The second shape: the side's columns and row, and the taller rectangle's columns.
+const int SideX0 = 10;
+const int SideX1 = 29;
+const int SideRow = 14;
+const int StepX0 = 8;
+bool InsideStepAndCorner(int x, int y)
+{
+  return (x >= SideX0 && x <= SideX1 && y >= Bottom && y <= SideRow) ||
+    (x >= StepX0 && x < SideX0 && y >= Bottom && y <= SideRow + 1);
 }
 
 vtkSmartPointer<vtkMLAAOptions> Options(bool corners)
@@ -166,10 +185,85 @@ void Corners()
   }
   MLAA_CHECK(transposes);
 }
+
+// The float areas of the table (channel 0: the pixel under the edge, 1: the one above), as
+// the pass reads them.
+float FloatArea(int e1, int e2, int d1, int d2, int channel, int maxDistance)
+{
+  const std::vector<float>& table = *vtkMLAAAreaTexture::GetSharedTable(maxDistance);
+  const int cell = maxDistance + 1;
+  const int size = vtkMLAAAreaTexture::NumberOfCodes * cell;
+  return table[2 * (static_cast<size_t>(cell * e2 + d2) * size + (cell * e1 + d1)) + channel];
+}
+
+void UnknownHeight()
+{
+  auto on = Options(true);
+  auto off = Options(false);
+  const int maxDistance = on->GetMaxDistance();
+  for (const bool transposed : { false, true })
+  {
+    auto image = Shape(transposed, &InsideStepAndCorner);
+    auto weights = RunMLAA(image, on);
+    auto chapter = RunMLAA(image, off);
+    // The side's left end: the crossing edge on the row above (code 1), past it the 2-pixel run;
+    // its right end: the crossing edge on its own row (code 3), a corner.
+    const int length = SideX1 - SideX0 + 1;
+    int halved = 0;
+    for (int x = SideX0; x <= SideX1; ++x)
+    {
+      const int d1 = x - SideX0;
+      const int d2 = SideX1 - x;
+      for (int channel = 0; channel < 2; ++channel)
+      {
+        // A top edgel of (x, y) is, transposed, the left edgel of (y + 1, x), whose channels 3
+        // and 2 hold what 0 and 1 hold (see Corners).
+        const double got = transposed ? GetValue(weights, SideRow + 1, x, 3 - channel)
+                                      : GetValue(weights, x, SideRow, channel);
+        const double theirs = transposed ? GetValue(chapter, SideRow + 1, x, 3 - channel)
+                                         : GetValue(chapter, x, SideRow, channel);
+        const double expected = std::nearbyint(
+          (FloatArea(1, 0, d1, d2, channel, maxDistance) +
+            0.5f * FloatArea(0, 3, d1, d2, channel, maxDistance)) *
+          255.0f);
+        if (!MLAA_CHECK(got == expected))
+        {
+          std::cerr << (transposed ? "transposed, " : "") << "x " << x << ", channel "
+                    << channel << ": " << got << ", expected " << expected << std::endl;
+        }
+        // The chapter's Z: the same over the half nearer the step, where the corner's ramp does
+        // not reach.
+        MLAA_CHECK(theirs == Area(1, 3, d1, d2, channel, maxDistance));
+        if (2 * (d1 + 1) <= length)
+        {
+          MLAA_CHECK(got == theirs);
+        }
+        else if (theirs >= 2.0)
+        {
+          MLAA_CHECK(got < theirs);
+          ++halved;
+        }
+      }
+    }
+    MLAA_CHECK(halved >= length / 2 - 2);
+  }
+
+  // Sides of 60 pixels, twice the reach of 16 steps: the pixels nearer one corner see the other
+  // end beyond the reach, where nothing is seen either.
+  auto rectangle = MakeImage(Width, Height, 1);
+  FillImage(rectangle, [](int x, int y, int, int) {
+    return (x >= 2 && x <= 61 && y >= Bottom && y <= SideRow) ? 0.0 : 255.0;
+  });
+  MLAA_CHECK(2 * on->GetMaxSearchSteps() < 61 - 2);
+  auto weights = RunMLAA(rectangle, on);
+  MLAA_CHECK(Compare(weights, RunMLAA(rectangle, off), 0.0).Count == 0);
+  MLAA_CHECK(GetValue(weights, 58, SideRow, 0) > 0.0);
+}
 }
 
 int TestImageMLAACorners(int, char*[])
 {
   Corners();
+  UnknownHeight();
   return Result();
 }

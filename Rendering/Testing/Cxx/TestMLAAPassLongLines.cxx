@@ -15,7 +15,11 @@
 //   lengths searched unit by unit and counted by recursive doubling give the same weights and
 //   the same image, equal to vtkImageMLAA's within 2/255;
 // - AUTOMATIC resolves by MaxSearchSteps (staircases with the rows and columns), and the
-//   doubling textures only exist while used.
+//   doubling textures only exist while used;
+// - CornerExtrapolation's ends of unknown height (a side between a corner and a step to a run
+//   too short to extrapolate from, horizontal and vertical, as in TestImageMLAACorners): the
+//   pass's blending weights equal the filter's exactly, searched and counted, at 16 and 128
+//   steps, and differ from those without the option there.
 #include "vtkAntialiasingRenderTestUtilities.h"
 #include "vtkMLAAScenes.h"
 #include "vtkAntialiasingTestUtilities.h"
@@ -37,6 +41,7 @@
 #include "vtkRenderer.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -348,10 +353,80 @@ void AutomaticAndResources()
   MLAA_CHECK(pass->GetTargetMemorySize() == 0);
   renderer->SetPass(nullptr);
 }
+
+// Dark rectangles on white, one world unit per pixel, given by their pixel ranges (inclusive).
+void BuildRectangles(vtkRenderer* renderer, const std::vector<std::array<int, 4>>& rectangles,
+  int width, int height)
+{
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> polys;
+  for (const auto& r : rectangles)
+  {
+    const vtkIdType first = points->GetNumberOfPoints();
+    points->InsertNextPoint(r[0], r[2], 0.0);
+    points->InsertNextPoint(r[1] + 1.0, r[2], 0.0);
+    points->InsertNextPoint(r[1] + 1.0, r[3] + 1.0, 0.0);
+    points->InsertNextPoint(r[0], r[3] + 1.0, 0.0);
+    const vtkIdType quad[4] = { first, first + 1, first + 2, first + 3 };
+    polys->InsertNextCell(4, quad);
+  }
+  vtkNew<vtkPolyData> polyData;
+  polyData->SetPoints(points);
+  polyData->SetPolys(polys);
+  ShowFlat(renderer, polyData, 1.0, width, height);
+}
+
+void UnknownHeightEnds()
+{
+  // A side of 20 pixels (columns 10 to 29, top row 14) between a corner and a step up to a run
+  // of 2 pixels; and the same turned by 90 degrees (a side of 20 pixels in column 40).
+  const int width = 64, height = 48;
+  auto window = vtkMLAAScenes::NewOffscreenWindow(width, height);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  BuildRectangles(renderer,
+    { { 10, 29, 2, 14 }, { 8, 9, 2, 15 }, { 40, 52, 20, 39 }, { 40, 53, 18, 19 } }, width,
+    height);
+  auto plain = vtkMLAAScenes::Capture(window);
+  MLAA_CHECK(GetValue(plain, 29, 14) < 128.0 && GetValue(plain, 29, 15) > 128.0 &&
+    GetValue(plain, 9, 15) < 128.0 && GetValue(plain, 10, 15) > 128.0 &&
+    GetValue(plain, 52, 39) < 128.0 && GetValue(plain, 53, 39) > 128.0 &&
+    GetValue(plain, 53, 19) < 128.0);
+  for (const int searchSteps : { 16, 128 })
+  {
+    vtkNew<vtkMLAAOptions> options;
+    options->SetMaxSearchSteps(searchSteps);
+    options->SetDiagonalDetection(false);
+    options->SetDebugOutput(vtkMLAAOptions::BLENDING_WEIGHTS);
+    auto chapter = RunMLAA(plain, options);
+    options->SetCornerExtrapolation(true);
+    auto cpu = RunMLAA(plain, options);
+    // The side's pixels nearer the corner take half the corner's ramp: they differ.
+    MLAA_CHECK(GetValue(cpu, 27, 14, 0) < GetValue(chapter, 27, 14, 0));
+    MLAA_CHECK(GetValue(cpu, 53, 37, 2) < GetValue(chapter, 53, 37, 2) ||
+      GetValue(cpu, 53, 37, 3) < GetValue(chapter, 53, 37, 3));
+    for (int doubling = 0; doubling < 2; ++doubling)
+    {
+      auto pass = UseMLAA(renderer, options);
+      pass->SetLineLengths(
+        doubling ? vtkOpenGLMLAAPass::RECURSIVE_DOUBLING : vtkOpenGLMLAAPass::SEARCH_LOOP);
+      auto gpu = vtkMLAAScenes::Capture(window, true);
+      StopPass(renderer, window);
+      const Difference d = Compare(cpu, gpu, 0.0);
+      if (!MLAA_CHECK(d.Count == 0))
+      {
+        std::cerr << searchSteps << " steps, " << (doubling ? "doubling" : "search loop") << ": "
+                  << d.Pixels << " pixels of the weights differ from the filter's" << std::endl;
+      }
+    }
+  }
+}
+
 }
 
 int TestMLAAPassLongLines(int, char*[])
 {
+  UnknownHeightEnds();
   OneDegreeSlope();
   DiagonalStaircases();
   SameWeightsOnSharedScenes();
