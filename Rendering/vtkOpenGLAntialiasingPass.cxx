@@ -33,6 +33,8 @@
 
 #include "vtk_glew.h" // For GL enums only: every call goes through VTK's classes
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <vector>
@@ -130,6 +132,38 @@ double Halton(unsigned int index, unsigned int base)
     result += digit * (index % base);
   }
   return result;
+}
+
+// Changes of the camera that move no point by more than this (in pixels) leave it still: a
+// vtkWindowToImageFilter that renders again recomputes the view angle in single precision.
+constexpr double StillDisplacement = 1e-3;
+
+// The largest displacement, in pixels of a width x height viewport, that `reprojection` (current to
+// previous normalised device coordinates, row-major) gives the corners and centre of the view
+// volume.
+double MaximumDisplacement(const double reprojection[16], int width, int height)
+{
+  double largest = 0.0;
+  for (double x : { -1.0, 0.0, 1.0 })
+  {
+    for (double y : { -1.0, 0.0, 1.0 })
+    {
+      for (double z : { -1.0, 0.0, 1.0 })
+      {
+        const double in[4] = { x, y, z, 1.0 };
+        double out[4];
+        vtkMatrix4x4::MultiplyPoint(reprojection, in, out);
+        if (out[3] <= 0.0)
+        {
+          return VTK_DOUBLE_MAX;
+        }
+        largest = std::max(largest,
+          std::max(std::abs(out[0] / out[3] - x) * 0.5 * width,
+            std::abs(out[1] / out[3] - y) * 0.5 * height));
+      }
+    }
+  }
+  return largest;
 }
 
 std::uint64_t Bits(double value)
@@ -811,8 +845,13 @@ void vtkOpenGLAntialiasingPass::BeginTemporalFrame(const vtkRenderState* s, cons
   const bool parallel = camera->GetParallelProjection() != 0;
   const bool reset = !h.Valid || h.Width != frame.Width || h.Height != frame.Height ||
     h.Parallel != parallel || h.Scene != SceneSignature(s);
-  const bool moved =
-    !reset && std::memcmp(h.ViewProjection, viewProjection->GetData(), sizeof(h.ViewProjection));
+  // Current to previous normalised device coordinates: previous * inverse(current).
+  vtkNew<vtkMatrix4x4> inverse;
+  vtkMatrix4x4::Invert(viewProjection, inverse);
+  vtkNew<vtkMatrix4x4> reprojection;
+  vtkMatrix4x4::Multiply4x4(h.ViewProjection, inverse->GetData(), reprojection->GetData());
+  const bool moved = !reset &&
+    MaximumDisplacement(reprojection->GetData(), frame.Width, frame.Height) > StillDisplacement;
   if (reset)
   {
     h.FrameMode = TemporalHistory::RESET;
@@ -823,13 +862,6 @@ void vtkOpenGLAntialiasingPass::BeginTemporalFrame(const vtkRenderState* s, cons
   {
     h.FrameMode = TemporalHistory::MOVING;
     h.Accumulated = 1;
-    // Current to previous normalised device coordinates: previous * inverse(current).
-    vtkNew<vtkMatrix4x4> inverse;
-    vtkMatrix4x4::Invert(viewProjection, inverse);
-    vtkNew<vtkMatrix4x4> previous;
-    previous->DeepCopy(h.ViewProjection);
-    vtkNew<vtkMatrix4x4> reprojection;
-    vtkMatrix4x4::Multiply4x4(previous, inverse, reprojection);
     reprojection->Transpose(); // vtkShaderProgram uploads the elements as GLSL's column order
     std::memcpy(h.Reprojection, reprojection->GetData(), sizeof(h.Reprojection));
   }
@@ -838,7 +870,12 @@ void vtkOpenGLAntialiasingPass::BeginTemporalFrame(const vtkRenderState* s, cons
     h.FrameMode = TemporalHistory::STILL;
     ++h.Accumulated;
   }
-  std::memcpy(h.ViewProjection, viewProjection->GetData(), sizeof(h.ViewProjection));
+  if (h.FrameMode != TemporalHistory::STILL)
+  {
+    // A still camera keeps the matrices its accumulation started with, so that changes below
+    // StillDisplacement cannot add up.
+    std::memcpy(h.ViewProjection, viewProjection->GetData(), sizeof(h.ViewProjection));
+  }
   h.Parallel = parallel;
   h.Width = frame.Width;
   h.Height = frame.Height;
