@@ -104,21 +104,25 @@ public:
 
   // /@{
   /**
-   * Temporal antialiasing (default off). Each render jitters the projection by a sub-pixel offset
-   * (the Halton (2, 3) sequence, through the active camera's WindowCenter, put back before the
-   * overlays are drawn and before Render returns), antialiases the frame with the method and
-   * blends it with a history the pass keeps:
-   * - while neither the camera nor the scene changes, the history is the exact running average of
-   *   the frames since the last change: N renders of a still scene give the mean of N jittered
-   *   renders, which converges to the supersampled picture (line widths and point sizes kept);
-   * - when the camera moves, the history is reprojected with the delegate's depth and the previous
-   *   and current view-projection matrices, clamped to the range of the current frame's 3 x 3
-   *   neighbourhood (rejecting what the current frame does not support: disocclusions, changed
-   *   colours) and blended with weight TemporalWeight for the current frame;
-   * - the history is reset (the result is the current frame alone) when the pass is switched on,
+   * Temporal antialiasing (default off). The pass keeps a history of its results and blends each
+   * frame into it:
+   * - while neither the camera nor the scene changes, each render is jittered by a sub-pixel
+   *   offset (the Halton (2, 3) sequence, through the active camera's WindowCenter, put back
+   *   before the overlays are drawn and before Render returns) and the history is the exact
+   *   running average of these renders since the last change: N renders of a still scene give
+   *   the mean of N jittered renders, which converges to the supersampled picture (line widths
+   *   and point sizes kept); the first frame of an accumulation is the method's antialiased frame
+   *   (RenderConverged asks for a converged still);
+   * - when the camera moves, the frame (not jittered) is antialiased by the method, and the
+   *   history is reprojected with the delegate's depth and the previous and current
+   *   view-projection matrices, clamped to the range of the current frame's 3 x 3 neighbourhood
+   *   (rejecting what the current frame does not support: disocclusions, changed shading) and
+   *   blended with weight TemporalWeight for the current frame;
+   * - the history is reset (the result is the method's frame alone) when the pass is switched on,
    *   on a resize, when the scene changes (a prop added, removed or modified, by the modified
-   *   times of the props, their mappers and inputs, the lights and the background), and when the
-   *   camera switches between parallel and perspective projection.
+   *   times of the props, their mappers and inputs, of the lights that do not follow the camera,
+   *   and the background), and when the camera switches between parallel and perspective
+   *   projection. A moving actor therefore resets the history at each render.
    * Overlays (the deferred overlay step) are drawn after the blend, neither jittered nor blended.
    * The renderer is rendered into the pass's own textures (its depth is read). Hardware selection
    * renders bypass the pass and leave the history alone. A debug output of the method (MLAA)

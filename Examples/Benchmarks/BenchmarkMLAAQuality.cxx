@@ -13,6 +13,8 @@
 //   MLAA-pass  vtkOpenGLMLAAPass (delegate vtkRenderStepsPass, default options: overlays drawn
 //              after the antialiasing);
 //   DLAA-pass  vtkOpenGLDLAAPass (delegate vtkRenderStepsPass, default vtkDLAAOptions);
+//   MLAA-temporal, DLAA-temporal  the two passes with temporal antialiasing (SetTemporal): the
+//              still after 16 renders of the unchanged scene by a new pass;
 //   variants   (unless --no-variants) MLAA-pass with each feature of "Morphological
 //              antialiasing and topological reconstruction" over the medium preset (+lab, +steps32,
 //              +steps128, +recon), the three together (+all3) and each preset (P-low ...
@@ -73,7 +75,7 @@ using mlaaBenchmark::Stopwatch;
 // The methods in table order ("none" first: its AAR is 0 by definition); the variants are
 // added unless --no-variants is given.
 std::vector<std::string> Methods = { "none", "FXAA", "MSAA4", "MLAA-CPU", "MLAA-pass",
-  "DLAA-pass" };
+  "DLAA-pass", "MLAA-temporal", "DLAA-temporal" };
 // The methods of the crop mosaic, in order.
 std::vector<std::string> MosaicMethods = { "none", "FXAA", "MSAA4", "MLAA-CPU", "MLAA-pass",
   "DLAA-pass" };
@@ -612,6 +614,34 @@ int main(int argc, char* argv[])
       pass->SetDelegatePass(steps);
       renderer->SetPass(pass);
       Capture(window, images["DLAA-pass"]);
+      renderer->SetPass(nullptr);
+      pass->ReleaseGraphicsResources(window);
+    }
+
+    // Temporal antialiasing: the still after 16 renders (a new pass: the first render starts the
+    // history).
+    for (const char* name : { "MLAA-temporal", "DLAA-temporal" })
+    {
+      vtkNew<vtkRenderStepsPass> steps;
+      vtkSmartPointer<vtkOpenGLAntialiasingPass> pass;
+      if (std::string(name) == "MLAA-temporal")
+      {
+        auto mlaa = vtkSmartPointer<vtkOpenGLMLAAPass>::New();
+        mlaa->SetOptions(options);
+        pass = mlaa;
+      }
+      else
+      {
+        pass = vtkSmartPointer<vtkOpenGLDLAAPass>::New();
+      }
+      pass->SetDelegatePass(steps);
+      pass->TemporalOn();
+      renderer->SetPass(pass);
+      for (int k = 1; k < 16; ++k)
+      {
+        window->Render();
+      }
+      Capture(window, images[name]);
       renderer->SetPass(nullptr);
       pass->ReleaseGraphicsResources(window);
     }
