@@ -735,7 +735,7 @@ int main(int argc, char* argv[])
 
   // The table.
   std::cout << "\n"
-            << std::left << std::setw(12) << "scene" << std::setw(11) << "method" << std::right
+            << std::left << std::setw(12) << "scene" << std::setw(14) << "method" << std::right
             << std::setw(8) << "AAR" << std::setw(10) << "damage%" << std::setw(9) << "PSNR_E"
             << std::setw(10) << "PSNR_all" << std::setw(10) << "changed%" << "\n";
   std::ofstream csv(outputDir + "/quality.csv");
@@ -751,7 +751,7 @@ int main(int argc, char* argv[])
     for (const auto& method : Methods)
     {
       const Metrics& m = result.ByMethod.at(method);
-      std::cout << std::left << std::setw(12) << result.Scene << std::setw(11) << method
+      std::cout << std::left << std::setw(12) << result.Scene << std::setw(14) << method
                 << std::right << std::fixed << std::setprecision(3) << std::setw(8) << m.AAR
                 << std::setw(10) << 100.0 * m.Damage << std::setprecision(2) << std::setw(9)
                 << PSNR(m.MSEE) << std::setw(10) << PSNR(m.MSEAll) << std::setprecision(3)
@@ -782,7 +782,7 @@ int main(int argc, char* argv[])
 
   // Per-method summaries.
   std::cout << "\n"
-            << std::left << std::setw(11) << "method" << std::right << std::setw(10) << "meanAAR"
+            << std::left << std::setw(14) << "method" << std::right << std::setw(10) << "meanAAR"
             << std::setw(10) << "worstAAR" << "  " << std::left << std::setw(12) << "(scene)"
             << std::right << std::setw(13) << "meanDamage%" << std::setw(12) << "maxDamage%"
             << std::setw(12) << "meanPSNR_E" << "\n";
@@ -814,7 +814,7 @@ int main(int argc, char* argv[])
     {
       continue;
     }
-    std::cout << std::left << std::setw(11) << method << std::right << std::fixed
+    std::cout << std::left << std::setw(14) << method << std::right << std::fixed
               << std::setprecision(3) << std::setw(10) << sumAAR / count << std::setw(10)
               << worstAAR << "  " << std::left << std::setw(12) << ("(" + worstScene + ")")
               << std::right << std::setw(13) << 100.0 * sumDamage / count << std::setw(12)
