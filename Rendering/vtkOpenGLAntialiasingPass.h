@@ -60,6 +60,7 @@ class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkOrderIndependentTranslucentPass;
 class vtkRenderStepsPass;
+class vtkRenderWindow;
 class vtkShaderProgram;
 class vtkTextureObject;
 
@@ -100,6 +101,75 @@ public:
   vtkGetMacro(KeepAlpha, bool);
   vtkBooleanMacro(KeepAlpha, bool);
   // /@}
+
+  // /@{
+  /**
+   * Temporal antialiasing (default off). The pass keeps a history of its results and blends each
+   * frame into it:
+   * - while neither the camera nor the scene changes, each render is jittered by a sub-pixel
+   *   offset (the Halton (2, 3) sequence, through the active camera's WindowCenter, put back
+   *   before the overlays are drawn and before Render returns) and the history is the exact
+   *   running average of these renders since the last change: N renders of a still scene give
+   *   the mean of N jittered renders, which converges to the supersampled picture (line widths
+   *   and point sizes kept); the first frame of an accumulation is the method's antialiased frame
+   *   (RenderConverged asks for a converged still);
+   * - when the camera moves, the frame (not jittered) is antialiased by the method, and the
+   *   history is reprojected with the delegate's depth and the previous and current
+   *   view-projection matrices, clamped to the range of the current frame's 3 x 3 neighbourhood
+   *   (rejecting what the current frame does not support: disocclusions, changed shading) and
+   *   blended with weight TemporalWeight for the current frame;
+   * - the history is reset (the result is the method's frame alone) when the pass is switched on,
+   *   on a resize, when the scene changes (a prop added, removed or modified, by the modified
+   *   times of the props, their mappers and inputs, of the lights that do not follow the camera,
+   *   and the background), and when the camera switches between parallel and perspective
+   *   projection. A moving actor therefore resets the history at each render.
+   * Overlays (the deferred overlay step) are drawn after the blend, neither jittered nor blended.
+   * The renderer is rendered into the pass's own textures (its depth is read). Hardware selection
+   * renders bypass the pass and leave the history alone. A debug output of the method (MLAA)
+   * shows the current frame alone. The camera's parameters are the same after a render as before
+   * it; its modified time advances. Switching it on resets the history.
+   */
+  virtual void SetTemporal(bool temporal);
+  vtkGetMacro(Temporal, bool);
+  vtkBooleanMacro(Temporal, bool);
+  // /@}
+
+  // /@{
+  /**
+   * Weight of the current frame in the blend while the camera moves (the history has 1 minus
+   * it). Smaller is steadier and slower to follow. Default 0.1, clamped to [0.01, 1].
+   */
+  vtkSetClampMacro(TemporalWeight, double, 0.01, 1.0);
+  vtkGetMacro(TemporalWeight, double);
+  // /@}
+
+  // /@{
+  /**
+   * Number of frames of an unchanged scene that RenderConverged accumulates. Default 16, clamped
+   * to [1, 4096].
+   */
+  vtkSetClampMacro(ConvergedFrames, int, 1, 4096);
+  vtkGetMacro(ConvergedFrames, int);
+  // /@}
+
+  /**
+   * Frames averaged in the history since the scene and camera last changed (1 after a reset or a
+   * render with a moving camera; 0 before the first temporal render).
+   */
+  int GetAccumulatedFrames() const;
+
+  /**
+   * Renders `window` until the pass's history holds ConvergedFrames frames of the unchanged scene
+   * (a converged still, for a screenshot), at most 2 x ConvergedFrames renders; returns the number
+   * of renders. With Temporal off, renders once. Warns when the history did not converge (the
+   * pass is not on a renderer of `window`, or the scene changed at every render).
+   */
+  int RenderConverged(vtkRenderWindow* window);
+
+  /**
+   * Discards the history: the next render starts a new accumulation.
+   */
+  void ResetHistory();
 
   /**
    * Bytes of GPU memory held by the pass's render targets at the last render: the copy of the
@@ -229,6 +299,21 @@ private:
   // Renders the delegate into ColorTexture and DepthTexture (cleared to transparent black first
   // when compositing over the target).
   void RenderDelegateToTextures(const vtkRenderState* s, int width, int height, bool composite);
+
+  // Temporal antialiasing (see SetTemporal): the history, its targets and the state of the last
+  // render, defined in the .cxx.
+  bool Temporal = false;
+  double TemporalWeight = 0.1;
+  int ConvergedFrames = 16;
+  class TemporalHistory;
+  TemporalHistory* History = nullptr;
+  // Before the delegate's render: decides whether the history is kept and jitters the camera.
+  void BeginTemporalFrame(const vtkRenderState* s, const Frame& frame);
+  // After it: puts the camera back and keeps the scene's state for the next render.
+  void EndTemporalJitter(const vtkRenderState* s);
+  // Antialiases the frame into the history's current target, blends it with the history and
+  // writes the result (and the delegate's depth) into the target viewport.
+  bool AntialiasTemporal(const Frame& frame);
 };
 
 #endif

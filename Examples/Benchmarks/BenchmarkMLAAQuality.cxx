@@ -13,6 +13,8 @@
 //   MLAA-pass  vtkOpenGLMLAAPass (delegate vtkRenderStepsPass, default options: overlays drawn
 //              after the antialiasing);
 //   DLAA-pass  vtkOpenGLDLAAPass (delegate vtkRenderStepsPass, default vtkDLAAOptions);
+//   MLAA-temporal, DLAA-temporal  the two passes with temporal antialiasing (SetTemporal): the
+//              still after 16 renders of the unchanged scene by a new pass;
 //   variants   (unless --no-variants) MLAA-pass with each feature of "Morphological
 //              antialiasing and topological reconstruction" over the medium preset (+lab, +steps32,
 //              +steps128, +recon), the three together (+all3) and each preset (P-low ...
@@ -73,7 +75,7 @@ using mlaaBenchmark::Stopwatch;
 // The methods in table order ("none" first: its AAR is 0 by definition); the variants are
 // added unless --no-variants is given.
 std::vector<std::string> Methods = { "none", "FXAA", "MSAA4", "MLAA-CPU", "MLAA-pass",
-  "DLAA-pass" };
+  "DLAA-pass", "MLAA-temporal", "DLAA-temporal" };
 // The methods of the crop mosaic, in order.
 std::vector<std::string> MosaicMethods = { "none", "FXAA", "MSAA4", "MLAA-CPU", "MLAA-pass",
   "DLAA-pass" };
@@ -616,6 +618,34 @@ int main(int argc, char* argv[])
       pass->ReleaseGraphicsResources(window);
     }
 
+    // Temporal antialiasing: the still after 16 renders (a new pass: the first render starts the
+    // history).
+    for (const char* name : { "MLAA-temporal", "DLAA-temporal" })
+    {
+      vtkNew<vtkRenderStepsPass> steps;
+      vtkSmartPointer<vtkOpenGLAntialiasingPass> pass;
+      if (std::string(name) == "MLAA-temporal")
+      {
+        auto mlaa = vtkSmartPointer<vtkOpenGLMLAAPass>::New();
+        mlaa->SetOptions(options);
+        pass = mlaa;
+      }
+      else
+      {
+        pass = vtkSmartPointer<vtkOpenGLDLAAPass>::New();
+      }
+      pass->SetDelegatePass(steps);
+      pass->TemporalOn();
+      renderer->SetPass(pass);
+      for (int k = 1; k < 16; ++k)
+      {
+        window->Render();
+      }
+      Capture(window, images[name]);
+      renderer->SetPass(nullptr);
+      pass->ReleaseGraphicsResources(window);
+    }
+
     // The state must be back to single-sample, no AA: the plain render must not have changed.
     Image again;
     Capture(window, again);
@@ -705,7 +735,7 @@ int main(int argc, char* argv[])
 
   // The table.
   std::cout << "\n"
-            << std::left << std::setw(12) << "scene" << std::setw(11) << "method" << std::right
+            << std::left << std::setw(12) << "scene" << std::setw(14) << "method" << std::right
             << std::setw(8) << "AAR" << std::setw(10) << "damage%" << std::setw(9) << "PSNR_E"
             << std::setw(10) << "PSNR_all" << std::setw(10) << "changed%" << "\n";
   std::ofstream csv(outputDir + "/quality.csv");
@@ -721,7 +751,7 @@ int main(int argc, char* argv[])
     for (const auto& method : Methods)
     {
       const Metrics& m = result.ByMethod.at(method);
-      std::cout << std::left << std::setw(12) << result.Scene << std::setw(11) << method
+      std::cout << std::left << std::setw(12) << result.Scene << std::setw(14) << method
                 << std::right << std::fixed << std::setprecision(3) << std::setw(8) << m.AAR
                 << std::setw(10) << 100.0 * m.Damage << std::setprecision(2) << std::setw(9)
                 << PSNR(m.MSEE) << std::setw(10) << PSNR(m.MSEAll) << std::setprecision(3)
@@ -752,7 +782,7 @@ int main(int argc, char* argv[])
 
   // Per-method summaries.
   std::cout << "\n"
-            << std::left << std::setw(11) << "method" << std::right << std::setw(10) << "meanAAR"
+            << std::left << std::setw(14) << "method" << std::right << std::setw(10) << "meanAAR"
             << std::setw(10) << "worstAAR" << "  " << std::left << std::setw(12) << "(scene)"
             << std::right << std::setw(13) << "meanDamage%" << std::setw(12) << "maxDamage%"
             << std::setw(12) << "meanPSNR_E" << "\n";
@@ -784,7 +814,7 @@ int main(int argc, char* argv[])
     {
       continue;
     }
-    std::cout << std::left << std::setw(11) << method << std::right << std::fixed
+    std::cout << std::left << std::setw(14) << method << std::right << std::fixed
               << std::setprecision(3) << std::setw(10) << sumAAR / count << std::setw(10)
               << worstAAR << "  " << std::left << std::setw(12) << ("(" + worstScene + ")")
               << std::right << std::setw(13) << 100.0 * sumDamage / count << std::setw(12)

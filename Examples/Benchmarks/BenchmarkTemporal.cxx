@@ -18,8 +18,12 @@
 //
 // Methods: none (single-sample), FXAA (VTK's built-in, renderer->UseFXAAOn()), MSAA4
 // (window->SetMultiSamples(4)) and vtkOpenGLMLAAPass at each preset of vtkMLAAOptions
-// (MLAA-low ... MLAA-ultra; overlays drawn after the antialiasing) and vtkOpenGLDLAAPass with
-// its default options (DLAA). Frames are read back as 8-bit RGB.
+// (MLAA-low ... MLAA-ultra; overlays drawn after the antialiasing), vtkOpenGLDLAAPass with
+// its default options (DLAA), and both passes with temporal antialiasing (SetTemporal;
+// MLAA-temporal, DLAA-temporal), each one pass kept from frame to frame of a scene, as an
+// application renders an orbit. Frames are read back as 8-bit RGB.
+// Per method it also reports the still AAR: the AAR of the last frame once the camera stops, after
+// 16 renders of the unchanged scene (methods without history give the same image at every render).
 #include "BenchmarkUtilities.h"
 #include "vtkMLAAScenes.h"
 
@@ -42,6 +46,7 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -64,20 +69,55 @@ struct Method
   std::string Name;
   std::function<void(vtkRenderer*, vtkRenderWindow*)> Enable;
   std::function<void(vtkRenderer*, vtkRenderWindow*)> Disable;
+  // Methods with a history (temporal antialiasing) keep their pass from frame to frame of a
+  // scene; Finish releases it at the end of the scene.
+  bool Temporal = false;
+  std::function<void(vtkRenderWindow*)> Finish;
 };
+
+// A temporal pass of class `Pass` kept across the frames of a scene (rendered as an application
+// would render it, frame after frame; the other methods' renders in between change neither the
+// camera nor the scene).
+template <class Pass>
+Method TemporalMethod(const std::string& name)
+{
+  auto pass = std::make_shared<vtkSmartPointer<Pass>>();
+  Method method;
+  method.Name = name;
+  method.Temporal = true;
+  method.Enable = [pass](vtkRenderer* r, vtkRenderWindow*) {
+    if (!*pass)
+    {
+      *pass = vtkSmartPointer<Pass>::New();
+      vtkNew<vtkRenderStepsPass> steps;
+      (*pass)->SetDelegatePass(steps);
+      (*pass)->TemporalOn();
+    }
+    r->SetPass(*pass);
+  };
+  method.Disable = [](vtkRenderer* r, vtkRenderWindow*) { r->SetPass(nullptr); };
+  method.Finish = [pass](vtkRenderWindow* w) {
+    if (*pass)
+    {
+      (*pass)->ReleaseGraphicsResources(w);
+      *pass = nullptr;
+    }
+  };
+  return method;
+}
 
 std::vector<Method> Methods()
 {
   std::vector<Method> methods;
   auto nothing = [](vtkRenderer*, vtkRenderWindow*) {};
-  methods.push_back({ "none", nothing, nothing });
-  methods.push_back({ "FXAA", [](vtkRenderer* r, vtkRenderWindow*) { r->UseFXAAOn(); },
-    [](vtkRenderer* r, vtkRenderWindow*) { r->UseFXAAOff(); } });
-  methods.push_back({ "MSAA4", [](vtkRenderer*, vtkRenderWindow* w) { w->SetMultiSamples(4); },
-    [](vtkRenderer*, vtkRenderWindow* w) { w->SetMultiSamples(0); } });
+  methods.push_back(Method{ "none", nothing, nothing, false, nullptr });
+  methods.push_back(Method{ "FXAA", [](vtkRenderer* r, vtkRenderWindow*) { r->UseFXAAOn(); },
+    [](vtkRenderer* r, vtkRenderWindow*) { r->UseFXAAOff(); }, false, nullptr });
+  methods.push_back(Method{ "MSAA4", [](vtkRenderer*, vtkRenderWindow* w) { w->SetMultiSamples(4); },
+    [](vtkRenderer*, vtkRenderWindow* w) { w->SetMultiSamples(0); }, false, nullptr });
   for (int preset = vtkMLAAOptions::LOW; preset <= vtkMLAAOptions::ULTRA; ++preset)
   {
-    methods.push_back({ std::string("MLAA-") + vtkMLAAOptions::GetPresetAsString(preset),
+    methods.push_back(Method{ std::string("MLAA-") + vtkMLAAOptions::GetPresetAsString(preset),
       [preset](vtkRenderer* r, vtkRenderWindow*) {
         vtkNew<vtkRenderStepsPass> steps;
         vtkNew<vtkOpenGLMLAAPass> pass;
@@ -91,9 +131,9 @@ std::vector<Method> Methods()
           r->GetPass()->ReleaseGraphicsResources(w);
         }
         r->SetPass(nullptr);
-      } });
+      }, false, nullptr });
   }
-  methods.push_back({ "DLAA",
+  methods.push_back(Method{ "DLAA",
     [](vtkRenderer* r, vtkRenderWindow*) {
       vtkNew<vtkRenderStepsPass> steps;
       vtkNew<vtkOpenGLDLAAPass> pass;
@@ -106,15 +146,43 @@ std::vector<Method> Methods()
         r->GetPass()->ReleaseGraphicsResources(w);
       }
       r->SetPass(nullptr);
-    } });
+    }, false, nullptr });
+  methods.push_back(TemporalMethod<vtkOpenGLMLAAPass>("MLAA-temporal"));
+  methods.push_back(TemporalMethod<vtkOpenGLDLAAPass>("DLAA-temporal"));
   return methods;
+}
+
+// AAR of MEASURING.md: 1 - MSE_E(method, reference) / MSE_E(none, reference) over the values of
+// the pixels where none and the reference differ by more than 4/255 in some channel.
+double AAR(const Frame& none, const Frame& method, const Frame& reference)
+{
+  double sumNone = 0.0, sumMethod = 0.0;
+  for (std::size_t p = 0; p < none.size(); p += 3)
+  {
+    bool inE = false;
+    for (int c = 0; c < 3; ++c)
+    {
+      inE = inE || std::abs(none[p + c] - reference[p + c]) > 4.0;
+    }
+    for (int c = 0; inE && c < 3; ++c)
+    {
+      sumNone += (none[p + c] - reference[p + c]) * (none[p + c] - reference[p + c]);
+      sumMethod += (method[p + c] - reference[p + c]) * (method[p + c] - reference[p + c]);
+    }
+  }
+  return sumNone > 0.0 ? 1.0 - sumMethod / sumNone : 0.0;
 }
 
 struct Result
 {
   double TE = 0.0;         // mean temporal error, 1/255 units
   double SpatialSSE = 0.0; // squared error against the reference over E, all frames
+  double StillAAR = 0.0;   // AAR of the last frame's still after StillRenders renders
 };
+
+// Renders of the unchanged last frame after which the stills are measured (a method without
+// history gives the same image at every render).
+constexpr int StillRenders = 16;
 
 void Usage(const char* program)
 {
@@ -122,7 +190,7 @@ void Usage(const char* program)
             << "Measures temporal stability against a supersampled reference sequence "
                "(MEASURING.md).\n"
             << "  --size WxH        render size (default 400x300)\n"
-            << "  --scenes a,b,c    scenes (default horizon,thin,texture,silhouettes)\n"
+            << "  --scenes a,b,c    scenes (default horizon,thin,texture,silhouettes,orbit)\n"
             << "  --frames K        frames of the orbit (default 60)\n"
             << "  --degrees D       camera azimuth step per frame (default 0.25)\n"
             << "  --samples N       reference is N x N shifted renders per frame (default 8)\n"
@@ -134,7 +202,7 @@ int main(int argc, char* argv[])
 {
   int width = 400, height = 300, frames = 60, samples = 8;
   double degrees = 0.25;
-  std::vector<std::string> scenes = { "horizon", "thin", "texture", "silhouettes" };
+  std::vector<std::string> scenes = { "horizon", "thin", "texture", "silhouettes", "orbit" };
   std::string outputDir = ".";
   for (int i = 1; i < argc; ++i)
   {
@@ -298,6 +366,25 @@ int main(int argc, char* argv[])
           sumTE[method.Name] += sum / values;
         }
       }
+      if (k == frames - 1)
+      {
+        // The still: the camera stops at the last frame; a method with history renders it
+        // StillRenders times in all (it has rendered it once).
+        for (const auto& method : methods)
+        {
+          Frame still = current[method.Name];
+          if (method.Temporal)
+          {
+            method.Enable(renderer, window);
+            for (int n = 1; n < StillRenders; ++n)
+            {
+              still = Grab(window);
+            }
+            method.Disable(renderer, window);
+          }
+          results[scene][method.Name].StillAAR = AAR(current["none"], still, reference);
+        }
+      }
       previous = std::move(current);
       previousReference = std::move(reference);
     }
@@ -306,6 +393,10 @@ int main(int argc, char* argv[])
       Result& r = results[scene][method.Name];
       r.TE = sumTE[method.Name] / (frames - 1);
       r.SpatialSSE = sumNoneSSE > 0.0 ? sumSSE[method.Name] / sumNoneSSE : 0.0;
+      if (method.Finish)
+      {
+        method.Finish(window);
+      }
     }
     std::cout << "scene " << scene << " (" << vtkMLAAScenes::Describe(scene) << "): "
               << std::fixed << std::setprecision(1) << clock.Milliseconds() / 1000.0 << " s"
@@ -314,11 +405,12 @@ int main(int argc, char* argv[])
 
   // The table: per scene and method, then the means over the scenes.
   std::ofstream csv(outputDir + "/temporal.csv");
-  csv << "scene,method,TE,T_AAR,AAR\n";
+  csv << "scene,method,TE,T_AAR,AAR,still_AAR\n";
   std::cout << "\n"
-            << std::left << std::setw(13) << "scene" << std::setw(13) << "method" << std::right
-            << std::setw(9) << "TE" << std::setw(9) << "T-AAR" << std::setw(9) << "AAR" << "\n";
-  std::map<std::string, double> meanTAAR, meanAAR;
+            << std::left << std::setw(13) << "scene" << std::setw(15) << "method" << std::right
+            << std::setw(9) << "TE" << std::setw(9) << "T-AAR" << std::setw(9) << "AAR"
+            << std::setw(11) << "still AAR" << "\n";
+  std::map<std::string, double> meanTAAR, meanAAR, meanStill, worstTAAR;
   for (const auto& scene : scenes)
   {
     const double noneTE = results[scene]["none"].TE;
@@ -329,21 +421,30 @@ int main(int argc, char* argv[])
       const double aar = 1.0 - r.SpatialSSE;
       meanTAAR[method.Name] += tAAR / scenes.size();
       meanAAR[method.Name] += aar / scenes.size();
-      std::cout << std::left << std::setw(13) << scene << std::setw(13) << method.Name
+      meanStill[method.Name] += r.StillAAR / scenes.size();
+      worstTAAR[method.Name] =
+        worstTAAR.count(method.Name) ? std::min(worstTAAR[method.Name], tAAR) : tAAR;
+      std::cout << std::left << std::setw(13) << scene << std::setw(15) << method.Name
                 << std::right << std::fixed << std::setprecision(3) << std::setw(9) << r.TE
-                << std::setw(9) << tAAR << std::setw(9) << aar << std::defaultfloat << "\n";
-      csv << scene << "," << method.Name << "," << r.TE << "," << tAAR << "," << aar << "\n";
+                << std::setw(9) << tAAR << std::setw(9) << aar << std::setw(11) << r.StillAAR
+                << std::defaultfloat << "\n";
+      csv << scene << "," << method.Name << "," << r.TE << "," << tAAR << "," << aar << ","
+          << r.StillAAR << "\n";
     }
   }
   std::cout << "\n"
-            << std::left << std::setw(13) << "method" << std::right << std::setw(12)
-            << "mean T-AAR" << std::setw(10) << "mean AAR" << "\n";
+            << std::left << std::setw(15) << "method" << std::right << std::setw(12)
+            << "mean T-AAR" << std::setw(13) << "worst T-AAR" << std::setw(10) << "mean AAR"
+            << std::setw(16) << "mean still AAR" << "\n";
   for (const auto& method : methods)
   {
-    std::cout << std::left << std::setw(13) << method.Name << std::right << std::fixed
-              << std::setprecision(3) << std::setw(12) << meanTAAR[method.Name] << std::setw(10)
-              << meanAAR[method.Name] << std::defaultfloat << "\n";
+    std::cout << std::left << std::setw(15) << method.Name << std::right << std::fixed
+              << std::setprecision(3) << std::setw(12) << meanTAAR[method.Name] << std::setw(13)
+              << worstTAAR[method.Name] << std::setw(10) << meanAAR[method.Name] << std::setw(16)
+              << meanStill[method.Name] << std::defaultfloat << "\n";
   }
+  std::cout << "(still AAR: the last frame after " << StillRenders
+            << " renders of the unchanged scene; methods without history render it once)\n";
   std::cout << "\nCSV: " << outputDir << "/temporal.csv" << std::endl;
   return csv ? EXIT_SUCCESS : EXIT_FAILURE;
 }

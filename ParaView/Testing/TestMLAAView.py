@@ -4,7 +4,8 @@
 flat regions do not) and equals, within 2/255, vtkImageMLAA run outside ParaView (the `mlaa`
 tool, which the project's tests hold equal to the GPU pass within 2/255) on the screenshot with
 UseMLAA off; the same for UseDLAA and vtkImageDLAA; UseMLAA off gives the plain image; FXAA
-never stacks with MLAA. The screenshots are
+never stacks with MLAA; AntialiasingTemporal changes edges only, and off gives the single-frame
+image back. The screenshots are
 kept in the output directory for TestMLAARanks.py, which compares one rank with two."""
 
 import os
@@ -72,6 +73,29 @@ view.UseMLAA = 1
 _, both = screenshot("mlaa-and-dlaa-on.png")
 t.check(np.array_equal(both, on), "with UseMLAA and UseDLAA on, MLAA is used")
 view.UseDLAA = 0
+
+# Temporal antialiasing (issue 23): a still render renders AntialiasingConvergedFrames times,
+# jittered and averaged: edges change from the single-frame MLAA image, flat regions do not; off
+# again, the single-frame image comes back.
+t.check(view.AntialiasingTemporal == 0 and view.AntialiasingConvergedFrames == 16,
+        "temporal: off by default, 16 frames")
+view.AntialiasingTemporal = 1
+_, temporal = screenshot("mlaa-temporal.png")
+changed = np.any(temporal != on, axis=2)
+t.check(changed.sum() > 200, "temporal: %d edge pixels differ from single-frame MLAA"
+        % changed.sum())
+# (5 x 5 flat: the jitter moves edges by up to half a pixel, and the first render of the
+# average is antialiased by MLAA.)
+flat5 = t.uniform_neighbourhoods(off, 2)
+t.check(t.max_difference(temporal[flat5], off[flat5]) == 0,
+        "temporal: flat regions are unchanged (max difference %d)"
+        % t.max_difference(temporal[flat5], off[flat5]))
+view.SMProxy.UpdatePropertyInformation()
+t.check(view.SMProxy.GetProperty("AntialiasingTemporalInfo").GetElement(0) == 1,
+        "temporal: the property reaches the view's passes")
+view.AntialiasingTemporal = 0
+_, single = screenshot("mlaa-temporal-off.png")
+t.check(np.array_equal(single, on), "temporal off: the single-frame MLAA image again")
 
 # FXAA asked for while MLAA is on does not stack: the image stays the MLAA one.
 view.UseFXAA = 1

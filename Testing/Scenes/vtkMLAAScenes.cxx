@@ -16,6 +16,7 @@
 #include "vtkImageData.h"
 #include "vtkLineSource.h"
 #include "vtkLookupTable.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointSource.h"
@@ -189,11 +190,9 @@ void Glyphs(vtkRenderer* renderer)
   renderer->ResetCameraClippingRange();
 }
 
-void Texture(vtkRenderer* renderer)
+// An 8 x 8 checkerboard texture (256 x 256 texels, nearest-neighbour lookups).
+vtkSmartPointer<vtkTexture> Checkerboard()
 {
-  // A checkerboard texture on a tilted plane and a sphere: edges inside textures, which
-  // geometric antialiasing (MSAA) does not see.
-  renderer->SetBackground(0.3, 0.3, 0.32);
   vtkNew<vtkImageCanvasSource2D> canvas;
   canvas->SetScalarTypeToUnsignedChar();
   canvas->SetNumberOfScalarComponents(3);
@@ -211,9 +210,18 @@ void Texture(vtkRenderer* renderer)
       }
     }
   }
-  vtkNew<vtkTexture> texture;
+  auto texture = vtkSmartPointer<vtkTexture>::New();
   texture->SetInputConnection(canvas->GetOutputPort());
   texture->InterpolateOff();
+  return texture;
+}
+
+void Texture(vtkRenderer* renderer)
+{
+  // A checkerboard texture on a tilted plane and a sphere: edges inside textures, which
+  // geometric antialiasing (MSAA) does not see.
+  renderer->SetBackground(0.3, 0.3, 0.32);
+  vtkSmartPointer<vtkTexture> texture = Checkerboard();
   vtkNew<vtkPlaneSource> plane;
   plane->SetOrigin(-2.0, -2.0, 0.0);
   plane->SetPoint1(2.0, -2.0, 0.0);
@@ -480,6 +488,92 @@ void ThinStructures(vtkRenderer* renderer)
   renderer->ResetCameraClippingRange();
 }
 
+void Orbit(vtkRenderer* renderer)
+{
+  // What a slow camera orbit makes flicker: 1-pixel lines (a helix and straight wires), 2-pixel
+  // points, small cone glyphs and a textured floor seen at a grazing angle.
+  renderer->SetBackground(0.93, 0.94, 0.96);
+  vtkNew<vtkPlaneSource> floor;
+  floor->SetOrigin(-3.0, -3.0, 0.0);
+  floor->SetPoint1(3.0, -3.0, 0.0);
+  floor->SetPoint2(-3.0, 3.0, 0.0);
+  const double white[3] = { 1.0, 1.0, 1.0 };
+  auto floorActor = AddActor(renderer, floor, white);
+  floorActor->SetTexture(Checkerboard());
+  floorActor->GetProperty()->LightingOff();
+
+  vtkNew<vtkPlaneSource> grid;
+  grid->SetOrigin(-2.0, -2.0, 0.3);
+  grid->SetPoint1(2.0, -2.0, 0.3);
+  grid->SetPoint2(-2.0, 2.0, 0.3);
+  grid->SetResolution(6, 6);
+  vtkNew<vtkConeSource> cone;
+  cone->SetResolution(12);
+  cone->SetDirection(0.0, 0.0, 1.0);
+  vtkNew<vtkGlyph3D> glyphs;
+  glyphs->SetInputConnection(grid->GetOutputPort());
+  glyphs->SetSourceConnection(cone->GetOutputPort());
+  glyphs->SetScaleFactor(0.35);
+  glyphs->OrientOff();
+  const double orange[3] = { 0.9, 0.45, 0.1 };
+  AddActor(renderer, glyphs, orange);
+
+  // A helix of 1-pixel line segments and points along a spiral above the floor (fixed
+  // positions, no random numbers).
+  vtkNew<vtkPoints> helixPoints;
+  vtkNew<vtkCellArray> helixLine;
+  const int helixCount = 400;
+  helixLine->InsertNextCell(helixCount);
+  vtkNew<vtkPoints> spiralPoints;
+  vtkNew<vtkCellArray> spiralVertices;
+  for (int i = 0; i < helixCount; ++i)
+  {
+    const double t = i / (helixCount - 1.0);
+    const double angle = 2.0 * vtkMath::Pi() * 5.0 * t;
+    helixLine->InsertCellPoint(
+      helixPoints->InsertNextPoint(1.2 * std::cos(angle), 1.2 * std::sin(angle), 0.2 + 1.6 * t));
+    const double radius = 0.2 + 2.6 * t;
+    spiralVertices->InsertNextCell(1);
+    spiralVertices->InsertCellPoint(spiralPoints->InsertNextPoint(
+      radius * std::cos(3.0 * angle), radius * std::sin(3.0 * angle), 0.05));
+  }
+  vtkNew<vtkPolyData> helix;
+  helix->SetPoints(helixPoints);
+  helix->SetLines(helixLine);
+  vtkNew<vtkPolyDataMapper> helixMapper;
+  helixMapper->SetInputData(helix);
+  vtkNew<vtkActor> helixActor;
+  helixActor->SetMapper(helixMapper);
+  helixActor->GetProperty()->SetColor(0.1, 0.2, 0.5);
+  helixActor->GetProperty()->LightingOff();
+  renderer->AddActor(helixActor);
+  vtkNew<vtkPolyData> spiral;
+  spiral->SetPoints(spiralPoints);
+  spiral->SetVerts(spiralVertices);
+  vtkNew<vtkPolyDataMapper> spiralMapper;
+  spiralMapper->SetInputData(spiral);
+  vtkNew<vtkActor> spiralActor;
+  spiralActor->SetMapper(spiralMapper);
+  spiralActor->GetProperty()->SetColor(0.7, 0.1, 0.3);
+  spiralActor->GetProperty()->SetPointSize(2.0f);
+  spiralActor->GetProperty()->LightingOff();
+  renderer->AddActor(spiralActor);
+
+  // Straight wires across the scene.
+  for (int k = 0; k < 4; ++k)
+  {
+    vtkNew<vtkLineSource> wire;
+    wire->SetPoint1(-3.0, -2.5 + 1.5 * k, 1.0 + 0.2 * k);
+    wire->SetPoint2(3.0, -2.0 + 1.3 * k, 1.2 + 0.1 * k);
+    const double dark[3] = { 0.15, 0.15, 0.15 };
+    AddActor(renderer, wire, dark)->GetProperty()->LightingOff();
+  }
+  renderer->GetActiveCamera()->SetPosition(0.0, -7.5, 4.5);
+  renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.0, 0.6);
+  renderer->GetActiveCamera()->SetViewUp(0.0, 0.0, 1.0);
+  renderer->ResetCameraClippingRange();
+}
+
 struct Scene
 {
   std::string Description;
@@ -500,6 +594,7 @@ const std::vector<std::pair<std::string, Scene>>& Scenes()
     { "colormap", { "surfaces banded by a lookup table of equal-luma colours", EqualLumaColormap } },
     { "horizon", { "long edges at 1 to 3 degrees off horizontal and vertical", Horizon } },
     { "thin", { "1-pixel iso-lines, sub-pixel streamline tubes and power lines", ThinStructures } },
+    { "orbit", { "1-pixel lines, points and cone glyphs over a textured floor", Orbit } },
   };
   return scenes;
 }

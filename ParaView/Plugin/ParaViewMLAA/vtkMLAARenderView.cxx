@@ -301,6 +301,47 @@ bool vtkMLAARenderView::GetAntialiasingKeepAlpha()
 }
 
 //------------------------------------------------------------------------------
+void vtkMLAARenderView::SetAntialiasingTemporal(bool temporal)
+{
+  this->MLAAPass->SetTemporal(temporal);
+  this->DLAAPass->SetTemporal(temporal);
+}
+
+//------------------------------------------------------------------------------
+bool vtkMLAARenderView::GetAntialiasingTemporal()
+{
+  return this->MLAAPass->GetTemporal() && this->DLAAPass->GetTemporal();
+}
+
+//------------------------------------------------------------------------------
+void vtkMLAARenderView::SetAntialiasingConvergedFrames(int frames)
+{
+  this->MLAAPass->SetConvergedFrames(frames);
+  this->DLAAPass->SetConvergedFrames(frames);
+}
+
+//------------------------------------------------------------------------------
+int vtkMLAARenderView::GetAntialiasingConvergedFrames()
+{
+  return this->MLAAPass->GetConvergedFrames();
+}
+
+//------------------------------------------------------------------------------
+void vtkMLAARenderView::StillRender()
+{
+  // A fixed number of renders, not "until converged": every process (ranks, client and server)
+  // must render as many times as the others.
+  const int method = this->GetEffectiveAntialiasingMethod();
+  const int renders = (method == MLAA || method == DLAA) && this->GetAntialiasingTemporal()
+    ? this->GetAntialiasingConvergedFrames()
+    : 1;
+  for (int i = 0; i < renders; ++i)
+  {
+    this->Superclass::StillRender();
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkMLAARenderView::SetMLAALineLengths(int method)
 {
   this->MLAAPass->SetLineLengths(method);

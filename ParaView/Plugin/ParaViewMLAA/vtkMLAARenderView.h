@@ -96,6 +96,33 @@ public:
 
   ///@{
   /**
+   * Temporal antialiasing in both passes (vtkOpenGLAntialiasingPass::SetTemporal): a still
+   * converges over successive renders to the supersampled picture, a moving camera blends a
+   * reprojected history. Default off.
+   */
+  void SetAntialiasingTemporal(bool temporal);
+  bool GetAntialiasingTemporal(); // whether both passes are temporal
+  ///@}
+
+  ///@{
+  /**
+   * Renders per still render while AntialiasingTemporal is on and MLAA or DLAA is in effect
+   * (the passes' ConvergedFrames): a still render (a screenshot, the render after interaction)
+   * renders this many times, so that it shows the converged still. The same number on every
+   * process, so that parallel and client-server renders stay paired. Default 16, at least 1.
+   */
+  void SetAntialiasingConvergedFrames(int frames);
+  int GetAntialiasingConvergedFrames();
+  ///@}
+
+  /**
+   * A still render: with AntialiasingTemporal on and MLAA or DLAA in effect,
+   * AntialiasingConvergedFrames renders; otherwise vtkPVRenderView's.
+   */
+  void StillRender() override;
+
+  ///@{
+  /**
    * How the MLAA pass finds line lengths (vtkOpenGLMLAAPass::SetLineLengths: AUTOMATIC,
    * SEARCH_LOOP or RECURSIVE_DOUBLING). Default AUTOMATIC. The image is the same with each.
    */

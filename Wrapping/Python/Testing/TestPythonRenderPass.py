@@ -4,7 +4,8 @@
 vtkmlaa.enable(renderer), saved to PNG; the pass changes edge pixels, leaves pixels without an
 edge alone, and gives the image vtkImageMLAA gives on the screenshot without antialiasing (within
 2/255 on at least 99.5 % of the pixels, as the C++ test TestMLAAPassMatchesFilter requires), also
-with translucent geometry, depth peeling off and on (issue 21).
+with translucent geometry, depth peeling off and on (issue 21); with temporal=True, render_still
+gives a converged still closer to a supersampled reference than the single-frame pass (issue 23).
 Needs a display (ctest runs under scripts/with-xvfb.sh). Usage: TestPythonRenderPass.py OUT_DIR"""
 import os
 import sys
@@ -147,5 +148,52 @@ for method in ("mlaa", "dlaa"):
         check((shot != plain).any(axis=2).sum() > 100, what + ": antialiased")
         vtkmlaa.disable(renderer)
         window.Finalize()
+
+# Temporal antialiasing (issue 23): enable(..., temporal=True) and render_still give a converged
+# still, closer to an 8 x 8 supersampled reference than the single-frame pass.
+def reference(window, renderer, samples=8):
+    camera = renderer.GetActiveCamera()
+    centre = camera.GetWindowCenter()
+    width, height = window.GetSize()
+    total = None
+    for j in range(samples):
+        for i in range(samples):
+            camera.SetWindowCenter(centre[0] + 2.0 * ((i + 0.5) / samples - 0.5) / width,
+                                   centre[1] + 2.0 * ((j + 0.5) / samples - 0.5) / height)
+            shot = screenshot(window).astype(float)
+            total = shot if total is None else total + shot
+    camera.SetWindowCenter(*centre)
+    return total / (samples * samples)
+
+
+def aar(none, result, ref):
+    aliased = (numpy.abs(none - ref) > 4).any(axis=2)
+    return 1.0 - ((result - ref)[aliased] ** 2).sum() / ((none - ref)[aliased] ** 2).sum()
+
+
+for method in ("mlaa", "dlaa"):
+    window, renderer = scene()
+    window.SetMultiSamples(0)
+    plain = screenshot(window).astype(float)
+    ref = reference(window, renderer)
+    single_pass = vtkmlaa.enable(renderer, method=method)
+    check(not single_pass.GetTemporal(), method + ": temporal is off by default")
+    single = screenshot(window).astype(float)
+    vtkmlaa.disable(renderer)
+    aa_pass = vtkmlaa.enable(renderer, method=method, temporal=True)
+    check(aa_pass.GetTemporal(), method + ": enable(temporal=True)")
+    renders = vtkmlaa.render_still(renderer)
+    converged = screenshot(window).astype(float)
+    print("%s: render_still: %d renders, %d accumulated; AAR single-frame %.3f, temporal %.3f"
+          % (method, renders, aa_pass.GetAccumulatedFrames(), aar(plain, single, ref),
+             aar(plain, converged, ref)))
+    check(renders == 16 and aa_pass.GetAccumulatedFrames() == 18,
+          method + ": render_still accumulates 16 frames (and screenshot()'s 2 renders 2 more)")
+    check(aar(plain, converged, ref) > max(0.9, aar(plain, single, ref)),
+          method + ": the converged still is closer to the reference")
+    check(vtkmlaa.render_still(renderer, frames=4) == 1, method + ": already converged: 1 render")
+    vtkmlaa.disable(renderer)
+    check(vtkmlaa.render_still(renderer) == 1, method + ": without a pass: 1 render")
+    window.Finalize()
 
 check.finish()

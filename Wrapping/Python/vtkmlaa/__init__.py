@@ -152,7 +152,7 @@ def _configure(options_object, method, preset, options, extra_targets=()):
     _apply_options(options, (options_object,) + tuple(extra_targets), method)
 
 
-def enable(renderer, method="mlaa", preset=None, **options):
+def enable(renderer, method="mlaa", preset=None, temporal=False, **options):
     """Antialias everything a renderer draws, with a render pass; returns the pass.
 
     Installs a vtkRenderStepsPass (VTK's usual steps: lights, opaque and translucent geometry,
@@ -173,6 +173,11 @@ def enable(renderer, method="mlaa", preset=None, **options):
     edge_detection="luma", keep_alpha=True, antialias_overlays=True; they are applied after
     the preset. Unknown methods, presets and options raise ValueError.
 
+    temporal: temporal antialiasing (SetTemporal on the pass): each render is jittered by a
+    sub-pixel offset and blended with a history, so that a still scene converges to the
+    supersampled picture over successive renders and a moving camera flickers less. Take a
+    screenshot after render_still(renderer). Default False.
+
     With a PyVista-style plotter: vtkmlaa.enable(plotter.renderer).
     """
     if not isinstance(renderer, _vtkRenderingCore.vtkRenderer):
@@ -180,6 +185,7 @@ def enable(renderer, method="mlaa", preset=None, **options):
     _, pass_class, _ = _method_classes(method)
     aa_pass = pass_class()
     _configure(aa_pass.GetOptions(), method, preset, options, extra_targets=(aa_pass,))
+    aa_pass.SetTemporal(bool(temporal))
     steps = _vtkRenderingOpenGL2.vtkRenderStepsPass()
     aa_pass.SetDelegatePass(steps)
     renderer.SetPass(aa_pass)
@@ -191,6 +197,32 @@ def enable(renderer, method="mlaa", preset=None, **options):
                       "SetMultiSamples(0) on the window it goes into (or call enable() after "
                       "AddRenderer)", stacklevel=2)
     return aa_pass
+
+
+def render_still(renderer, frames=None):
+    """Render the renderer's window until its antialiasing pass holds a converged still; returns
+    the number of renders.
+
+    With a temporal pass (enable(..., temporal=True)), the window is rendered until the pass has
+    averaged `frames` renders of the unchanged scene (vtkOpenGLAntialiasingPass.RenderConverged;
+    frames: its ConvergedFrames, 16 unless set). Without a pass, or with a pass that is not
+    temporal, the window is rendered once. A screenshot taken next (vtkWindowToImageFilter renders
+    once more) shows the converged picture.
+    """
+    if not isinstance(renderer, _vtkRenderingCore.vtkRenderer):
+        raise TypeError("render_still() needs a vtkRenderer, not %s" % type(renderer).__name__)
+    window = renderer.GetRenderWindow()
+    if window is None:
+        raise ValueError("render_still(): the renderer is in no render window")
+    aa_pass = renderer.GetPass()
+    if not isinstance(aa_pass, vtkOpenGLAntialiasingPass) or not aa_pass.GetTemporal():
+        window.Render()
+        return 1
+    if frames is not None:
+        if int(frames) < 1:
+            raise ValueError("render_still(): frames must be at least 1, not %r" % (frames,))
+        aa_pass.SetConvergedFrames(int(frames))
+    return aa_pass.RenderConverged(window)
 
 
 def disable(renderer):

@@ -1,0 +1,122 @@
+//VTK::System::Dec
+// SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
+// SPDX-License-Identifier: BSD-3-Clause
+//VTK::Output::Dec
+//VTK::Antialiasing::Dec
+
+// Temporal antialiasing of vtkOpenGLAntialiasingPass (SetTemporal): blends the current frame
+// with the history of the previous frames.
+//
+// Compile-time variants (#defines prepended by vtkOpenGLAntialiasingPass):
+//   TEMPORAL_OUTPUT     defined: writes the blended history (historyTexture) and the delegate's
+//                       depth into the target viewport (nothing is blended here).
+//   TEMPORAL_REPROJECT  defined (the camera moved; currentTexture is the frame antialiased by the
+//                       method): the history is read where this pixel's point was in the previous
+//                       frame, `reprojection` taking the current normalised device coordinates to
+//                       the previous ones, with the depth and motion of the nearest point of the
+//                       3 x 3 neighbourhood, by Catmull-Rom interpolation, and clamped per channel
+//                       to the range of the current frame's 3 x 3 neighbourhood (what the current
+//                       frame does not support: disocclusions, changed shading); a point that was
+//                       outside the previous view takes the current frame alone.
+//   neither             (a still camera; currentTexture is the delegate's jittered render): the
+//                       history is read at this pixel, exactly, and not clamped: with
+//                       currentWeight 1 / N the blend is the running average of N renders.
+// currentWeight: the weight of the current frame (1: the current frame alone, the history is not
+// read).
+
+in vec2 texCoord; // over the viewport, which is the size of the textures
+uniform sampler2D historyTexture; // RGBA, floating point
+uniform sampler2D depthTexture;   // the delegate's depth
+#ifndef TEMPORAL_OUTPUT
+uniform sampler2D currentTexture; // this frame
+uniform float currentWeight;
+uniform mat4 reprojection;
+#endif
+
+#ifdef TEMPORAL_REPROJECT
+// The history at `uv` (texture coordinates), interpolated by Catmull-Rom over the 4 x 4 texels
+// around it: a bilinear read would blur the history a little more at every frame of a moving
+// camera, and the blur would add up.
+vec4 CatmullRom(sampler2D image, vec2 uv, ivec2 size)
+{
+  vec2 position = uv * vec2(size) - 0.5;
+  vec2 t = fract(position);
+  ivec2 base = ivec2(floor(position)) - 1;
+  vec2 w[4];
+  w[0] = t * (-0.5 + t * (1.0 - 0.5 * t));
+  w[1] = 1.0 + t * t * (-2.5 + 1.5 * t);
+  w[2] = t * (0.5 + t * (2.0 - 1.5 * t));
+  w[3] = t * t * (-0.5 + 0.5 * t);
+  vec4 sum = vec4(0.0);
+  for (int j = 0; j < 4; ++j)
+  {
+    for (int i = 0; i < 4; ++i)
+    {
+      ivec2 texel = clamp(base + ivec2(i, j), ivec2(0), size - 1);
+      sum += w[i].x * w[j].y * texelFetch(image, texel, 0);
+    }
+  }
+  return sum;
+}
+#endif
+
+void main()
+{
+  ivec2 size = textureSize(depthTexture, 0);
+  ivec2 p = ivec2(texCoord * vec2(size));
+  float depth = texelFetch(depthTexture, p, 0).r;
+#ifdef TEMPORAL_OUTPUT
+  gl_FragData[0] = texelFetch(historyTexture, p, 0);
+  gl_FragDepth = depth;
+#else
+  vec4 current = texelFetch(currentTexture, p, 0);
+  if (currentWeight >= 1.0)
+  {
+    gl_FragData[0] = current;
+    return;
+  }
+#ifdef TEMPORAL_REPROJECT
+  // The motion of the nearest point of the 3 x 3 neighbourhood moves this pixel: an antialiased
+  // silhouette pixel, which holds some of the object, moves with the object, not with what is
+  // behind it (the background, whose depth is the far plane, moves otherwise under a rotation).
+  ivec2 nearest = p;
+  for (int j = -1; j <= 1; ++j)
+  {
+    for (int i = -1; i <= 1; ++i)
+    {
+      ivec2 q = clamp(p + ivec2(i, j), ivec2(0), size - 1);
+      float d = texelFetch(depthTexture, q, 0).r;
+      if (d < depth)
+      {
+        depth = d;
+        nearest = q;
+      }
+    }
+  }
+  vec2 here = (vec2(nearest) + 0.5) / vec2(size);
+  vec4 previous = reprojection * vec4(here * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
+  vec2 uv = (vec2(p) + 0.5) / vec2(size) + (previous.xy / previous.w * 0.5 + 0.5 - here);
+  if (previous.w <= 0.0 || any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))))
+  {
+    gl_FragData[0] = current;
+    return;
+  }
+  vec4 history = CatmullRom(historyTexture, uv, size);
+  vec4 lo = current;
+  vec4 hi = current;
+  for (int j = -1; j <= 1; ++j)
+  {
+    for (int i = -1; i <= 1; ++i)
+    {
+      vec4 c = texelFetch(currentTexture, clamp(p + ivec2(i, j), ivec2(0), size - 1), 0);
+      lo = min(lo, c);
+      hi = max(hi, c);
+    }
+  }
+  history = clamp(history, lo, hi);
+#else
+  vec4 history = texelFetch(historyTexture, p, 0);
+#endif
+  gl_FragData[0] = mix(history, current, currentWeight);
+#endif
+}
