@@ -53,6 +53,7 @@
 #include "vtkRenderingMLAAModule.h" // For export macro
 
 #include <string> // For std::string
+#include <vector> // For std::vector
 
 class vtkDepthPeelingPass;
 class vtkOpenGLFramebufferObject;
@@ -101,11 +102,51 @@ public:
   vtkBooleanMacro(KeepAlpha, bool);
   // /@}
 
+  // /@{
+  /**
+   * Morphological antialiasing of a multisampled render (SMAA's "S2x" idea): with 2 or more, the
+   * delegate renders into a target of that many samples per pixel; each sample set (sample s of
+   * every pixel) is antialiased by the method's passes, unchanged, as a single-sample image, and
+   * the antialiased sample images are averaged into the renderer's viewport, as a multisample
+   * resolve averages samples. Edges get both the sub-pixel coverage of multisampling and the
+   * method's gradients. Default 0: the single-sample pass (0 and 1 mean the same). Where the
+   * OpenGL driver does not offer the count asked for (for the colour and depth formats the pass
+   * renders with), the nearest count it offers is used (the smaller of two equally near ones) and
+   * a warning says so once per count asked for; GetRenderedMultiSamples() tells which count the
+   * last render used. Cost: the method runs once per sample.
+   *
+   * Everything else works as in the single-sample pass (overlays drawn after, layers, picking,
+   * KeepAlpha, viewports, resizes, floating-point targets). Translucent geometry is drawn into
+   * the multisampled target the way the renderer draws it (see the class description); VTK's
+   * order-independent translucency and depth peeling blend translucent fragments per pixel, not
+   * per sample, so translucent surfaces are antialiased by the method alone, as in the
+   * single-sample pass, while opaque geometry behind and around them keeps its samples.
+   */
+  vtkSetClampMacro(MultiSamples, int, 0, 16);
+  vtkGetMacro(MultiSamples, int);
+  // /@}
+
+  /**
+   * The number of samples per pixel the last render used: 0 for the single-sample pass, otherwise
+   * the supported count nearest to MultiSamples (see SetMultiSamples).
+   */
+  vtkGetMacro(RenderedMultiSamples, int);
+
+  // /@{
+  /**
+   * For inspection and tests, with MultiSamples: a sample index s >= 0 makes the pass write the
+   * plain, not antialiased image of sample s of every pixel (what the method's passes read for
+   * that sample) instead of the antialiased resolve. Default -1: the antialiased result.
+   */
+  vtkSetMacro(DebugSample, int);
+  vtkGetMacro(DebugSample, int);
+  // /@}
+
   /**
    * Bytes of GPU memory held by the pass's render targets at the last render: the copy of the
    * delegate's colour, its depth when the pass renders it into its own textures, the alpha kept
-   * across order-independent translucency in a composited renderer, and the subclass's targets
-   * (not the textures of VTK's translucency passes).
+   * across order-independent translucency in a composited renderer, the multisampled targets
+   * (MultiSamples) and the subclass's targets (not the textures of VTK's translucency passes).
    */
   virtual vtkIdType GetTargetMemorySize();
 
@@ -205,8 +246,10 @@ private:
   // Gives the delegate's translucent step the translucency the renderer would use without a pass
   // (see the class description), wrapping the step; returns what it changed. `composite`: the
   // delegate renders into ColorTexture to be composited (see CompositedTranslucency).
+  // `multisampled`: it renders into the multisampled targets (MultiSamples), where depth peeling
+  // and CompositedTranslucency cannot copy the framebuffer: order-independent translucency, plain.
   StepsChange UseRendererTranslucency(
-    const vtkRenderState* s, vtkRenderStepsPass* steps, bool composite);
+    const vtkRenderState* s, vtkRenderStepsPass* steps, bool composite, bool multisampled);
   // Puts the delegate's steps back as they were before UseRendererTranslucency.
   void RestoreDelegateSteps(const StepsChange& change);
 
@@ -226,9 +269,37 @@ private:
   vtkTextureObject* AlphaTexture = nullptr;
   ShaderVariant KeepAlphaQuad, RestoreAlphaQuad;
 
-  // Renders the delegate into ColorTexture and DepthTexture (cleared to transparent black first
-  // when compositing over the target).
-  void RenderDelegateToTextures(const vtkRenderState* s, int width, int height, bool composite);
+  // Renders the delegate into `color` and `depth` through `fbo` (cleared to transparent black
+  // first when compositing over the target).
+  void RenderDelegateToTextures(const vtkRenderState* s, vtkOpenGLFramebufferObject* fbo,
+    vtkTextureObject* color, vtkTextureObject* depth, int width, int height, bool composite);
+
+  // Multisampled rendering (SetMultiSamples; the shaders are vtkAntialiasingSamplesFS.glsl).
+  int MultiSamples = 0;
+  int RenderedMultiSamples = 0;
+  int DebugSample = -1;
+  int WarnedMultiSamples = 0; // the count asked for that the last warning was about
+  // The sample counts the driver offers for the colour and depth formats of the targets, largest
+  // first, queried once per colour type (index 1: floating point) and context.
+  std::vector<int> SupportedSampleCounts[2];
+  // The supported count nearest to MultiSamples (warning once when it differs), 0 for none.
+  int ChooseMultiSamples(vtkOpenGLRenderWindow* renWin, bool floatColor);
+  // Creates or resizes the multisampled targets and the sample and accumulation textures.
+  void PrepareSampleTargets(const Frame& frame, int samples);
+  // Copies each sample set into ColorTexture and DepthTexture, antialiases it with Antialias
+  // into SampleTexture, accumulates the average and writes it with the nearest depth into the
+  // target viewport (premultiplied "over" when compositing).
+  bool AntialiasSamples(const Frame& frame, int samples);
+  // Copies sample `sample` of the multisampled targets into ColorTexture and DepthTexture.
+  bool CopySample(vtkOpenGLRenderWindow* renWin, int sample, int samples, int width, int height);
+  void ReleaseSampleResources(vtkWindow* w);
+  vtkOpenGLFramebufferObject* SamplesFramebuffer = nullptr; // the delegate's, multisampled
+  vtkOpenGLFramebufferObject* SampleFramebuffer = nullptr;  // one sample's result, accumulation
+  vtkTextureObject* SamplesColorTexture = nullptr;
+  vtkTextureObject* SamplesDepthTexture = nullptr;
+  vtkTextureObject* SampleTexture = nullptr;       // one antialiased sample image
+  vtkTextureObject* AccumulationTexture = nullptr; // the average of the antialiased samples
+  ShaderVariant SampleCopyQuad, AccumulateQuad, ResolveQuad;
 };
 
 #endif
