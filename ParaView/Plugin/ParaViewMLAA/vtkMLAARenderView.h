@@ -96,6 +96,19 @@ public:
 
   ///@{
   /**
+   * Samples per pixel for MLAA and DLAA (both passes' vtkOpenGLAntialiasingPass::MultiSamples):
+   * 0, the default, antialiases the single-sample image; 2, 4 or 8 renders each process's image
+   * with that many samples and runs the method on each sample set before averaging. Where the
+   * process renders over transparent black for compositing (IceT, several ranks) or for a client
+   * (pvserver), the slot's delegate pastes an image that is already composited, one sample per
+   * pixel: the passes then run single-sample, and the view warns once.
+   */
+  void SetAntialiasingMultiSamples(int samples);
+  vtkGetMacro(AntialiasingMultiSamples, int);
+  ///@}
+
+  ///@{
+  /**
    * How the MLAA pass finds line lengths (vtkOpenGLMLAAPass::SetLineLengths: AUTOMATIC,
    * SEARCH_LOOP or RECURSIVE_DOUBLING). Default AUTOMATIC. The image is the same with each.
    */
@@ -188,6 +201,11 @@ private:
   vtkNew<vtkOpenGLDLAAPass> DLAAPass;
   int AntialiasingMethod = FXAA_OR_NONE;
   bool UseMLAA = false;
+  int AntialiasingMultiSamples = 0;
+  bool WarnedSingleSampleComposite = false;
+  // The passes' MultiSamples for this render: 0 where the image is composited (see
+  // SetAntialiasingMultiSamples), warning once.
+  int GetRenderMultiSamples(bool composited);
   bool UseDLAA = false;
   int WarnedBackgroundMode = -1;
   int BackgroundMode = vtkPVRenderView::DEFAULT;
