@@ -18,7 +18,8 @@
 //   viewports equals the pass on a window of the viewport's size alone;
 // - translucency: with UseDepthPeeling the pass draws translucent geometry with
 //   order-independent translucency (depth peeling cannot read a multisampled framebuffer): the
-//   same image as with UseDepthPeeling off, without errors;
+//   same image as with UseDepthPeeling off, without errors; translucent geometry is one colour
+//   per pixel (the sample images of a translucent cube alone are identical);
 // - MultiSamples back to 0 gives the single-sample pass's image exactly and frees the
 //   multisampled targets (GetTargetMemorySize).
 // No errors are reported on the way.
@@ -410,7 +411,22 @@ void Translucency(const PassMethod& method, MessageObserver* messages)
   std::cout << method.Name << ", translucency: UseDepthPeeling changes " << d.Pixels
             << " pixels" << std::endl;
   MLAA_CHECK(d.Count == 0 && changed.Count == 0);
+  // Order-independent translucency blends one colour per pixel into every sample: with the
+  // translucent cube alone, the sample images are identical; the opaque geometry's are not.
+  SetVisibility(scene.Renderer, false, false);
+  actor->SetVisibility(true);
+  const auto translucentOnly = SampleImages(scene.Window, pass);
+  vtkIdType differ = 0;
+  for (const auto& image : translucentOnly)
+  {
+    differ += Compare(translucentOnly[0], image, 0.0).Pixels;
+  }
+  std::cout << method.Name << ", translucency: the cube alone, samples differ from sample 0 on "
+            << differ << " pixels" << std::endl;
+  MLAA_CHECK(differ == 0);
+  MLAA_CHECK(Compare(scene.Plain, translucentOnly[0], 0.0).Pixels > 1000);
   // The translucent cube is drawn (the render differs from the scene without it).
+  SetVisibility(scene.Renderer, true, true);
   actor->SetVisibility(false);
   MLAA_CHECK(Compare(oit, vtkMLAAScenes::Capture(scene.Window), 0.0).Pixels > 1000);
 }
