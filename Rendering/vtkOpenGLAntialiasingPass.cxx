@@ -923,12 +923,18 @@ bool vtkOpenGLAntialiasingPass::AntialiasSamples(const Frame& frame, int samples
   ostate->vtkglDepthMask(GL_TRUE);
   vtkShaderProgram* program = this->ResolveQuad.Quad->Program;
   this->AccumulationTexture->Activate();
+  this->SamplesColorTexture->Activate();
   this->SamplesDepthTexture->Activate();
   program->SetUniformi("source", this->AccumulationTexture->GetTextureUnit());
+  program->SetUniformi("samplesColor", this->SamplesColorTexture->GetTextureUnit());
   program->SetUniformi("samplesDepth", this->SamplesDepthTexture->GetTextureUnit());
   program->SetUniformi("numberOfSamples", samples);
+  // Where a pixel's samples differ, half the method's average and half the plain average (see
+  // vtkAntialiasingSamplesFS.glsl); the plain image of DebugSample as it is.
+  program->SetUniformf("resolveWeight", debug ? 0.0f : 0.5f);
   this->ResolveQuad.Quad->Render();
   this->SamplesDepthTexture->Deactivate();
+  this->SamplesColorTexture->Deactivate();
   this->AccumulationTexture->Deactivate();
   return true;
 }

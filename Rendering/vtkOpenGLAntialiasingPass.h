@@ -108,8 +108,10 @@ public:
    * delegate renders into a target of that many samples per pixel; each sample set (sample s of
    * every pixel) is antialiased by the method's passes, unchanged, as a single-sample image, and
    * the antialiased sample images are averaged into the renderer's viewport, as a multisample
-   * resolve averages samples. Edges get both the sub-pixel coverage of multisampling and the
-   * method's gradients. Default 0: the single-sample pass (0 and 1 mean the same). Where the
+   * resolve averages samples; where a pixel's samples differ (a geometric edge crosses it), the
+   * result is half that average and half the plain average of the samples, which undoes half of
+   * the blur the sample positions' spread adds. Edges get both the sub-pixel coverage of
+   * multisampling and the method's gradients. Default 0: the single-sample pass (0 and 1 mean the same). Where the
    * OpenGL driver does not offer the count asked for (for the colour and depth formats the pass
    * renders with), the nearest count it offers is used (the smaller of two equally near ones) and
    * a warning says so once per count asked for; GetRenderedMultiSamples() tells which count the

@@ -20,18 +20,28 @@
 //                       added to the accumulation target by blending (one, one);
 //   SAMPLES_RESOLVE     writes `source` (the accumulated average) and, as depth, the nearest of
 //                       the pixel's samples in `samplesDepth`, into the renderer's viewport.
+//                       Where the pixel's samples differ (a geometric edge crosses it, which
+//                       multisampling resolves), the result is mixed with the plain average of
+//                       the samples (multisampling's own resolve) by `resolveWeight` (0.5; 0 for
+//                       vtkOpenGLAntialiasingPass::DebugSample): each sample image is antialiased
+//                       as if each of its pixels covered a whole pixel, and their average blurs
+//                       once more by the spread of the sample positions; the plain average has
+//                       no such blur, only the coarse steps of N coverage levels. Where the
+//                       samples agree (texture and colour-band edges, flat regions) the method's
+//                       average is kept as it is.
 // Exact texel reads.
 
 in vec2 texCoord; // over the viewport, which is the size of the textures
 
 #if defined(SAMPLES_COPY) || defined(SAMPLES_RESOLVE)
+uniform sampler2DMS samplesColor;
 uniform sampler2DMS samplesDepth;
 #endif
 #ifdef SAMPLES_RESOLVE
 uniform int numberOfSamples;
+uniform float resolveWeight;
 #endif
 #ifdef SAMPLES_COPY
-uniform sampler2DMS samplesColor;
 uniform int sampleIndex;
 #else
 uniform sampler2D source;
@@ -52,12 +62,19 @@ void main()
 #ifdef SAMPLES_ACCUMULATE
   gl_FragData[0] = c * scale;
 #else
-  gl_FragData[0] = c;
-  float depth = 1.0;
-  for (int s = 0; s < numberOfSamples; ++s)
+  vec4 first = texelFetch(samplesColor, p, 0);
+  vec4 plain = first;
+  bool differ = false;
+  float depth = texelFetch(samplesDepth, p, 0).r;
+  for (int s = 1; s < numberOfSamples; ++s)
   {
+    vec4 sample = texelFetch(samplesColor, p, s);
+    plain += sample;
+    differ = differ || any(notEqual(sample, first));
     depth = min(depth, texelFetch(samplesDepth, p, s).r);
   }
+  plain /= float(numberOfSamples);
+  gl_FragData[0] = differ ? mix(c, plain, resolveWeight) : c;
   gl_FragDepth = depth;
 #endif
 #endif
