@@ -930,8 +930,10 @@ bool vtkOpenGLAntialiasingPass::AntialiasSamples(const Frame& frame, int samples
   program->SetUniformi("samplesDepth", this->SamplesDepthTexture->GetTextureUnit());
   program->SetUniformi("numberOfSamples", samples);
   // Where a pixel's samples differ, half the method's average and half the plain average (see
-  // vtkAntialiasingSamplesFS.glsl); the plain image of DebugSample as it is.
-  program->SetUniformf("resolveWeight", debug ? 0.0f : 0.5f);
+  // vtkAntialiasingSamplesFS.glsl); the plain image of DebugSample and the method's debug
+  // images (MLAA's edges, weights) as they are.
+  const bool debugImage = debug || !this->DrawsDeferredOverlays();
+  program->SetUniformf("resolveWeight", debugImage ? 0.0f : 0.5f);
   this->ResolveQuad.Quad->Render();
   this->SamplesDepthTexture->Deactivate();
   this->SamplesColorTexture->Deactivate();

@@ -119,10 +119,13 @@ public:
    *
    * Everything else works as in the single-sample pass (overlays drawn after, layers, picking,
    * KeepAlpha, viewports, resizes, floating-point targets). Translucent geometry is drawn into
-   * the multisampled target the way the renderer draws it (see the class description); VTK's
-   * order-independent translucency and depth peeling blend translucent fragments per pixel, not
-   * per sample, so translucent surfaces are antialiased by the method alone, as in the
-   * single-sample pass, while opaque geometry behind and around them keeps its samples.
+   * the multisampled target with VTK's order-independent translucency, also where the renderer
+   * asks for depth peeling (which copies the framebuffer in a way multisampled framebuffers
+   * refuse); it blends translucent fragments per pixel, not per sample, so translucent surfaces
+   * are antialiased by the method alone, as in the single-sample pass, while opaque geometry
+   * behind and around them keeps its samples. In a composited renderer (layers) the alpha of
+   * translucent geometry is then what order-independent translucency leaves (the coverage
+   * correction of the single-sample pass is not applied).
    */
   vtkSetClampMacro(MultiSamples, int, 0, 16);
   vtkGetMacro(MultiSamples, int);

@@ -23,7 +23,8 @@
 //                       Where the pixel's samples differ (a geometric edge crosses it, which
 //                       multisampling resolves), the result is mixed with the plain average of
 //                       the samples (multisampling's own resolve) by `resolveWeight` (0.5; 0 for
-//                       vtkOpenGLAntialiasingPass::DebugSample): each sample image is antialiased
+//                       vtkOpenGLAntialiasingPass::DebugSample and for the method's debug images,
+//                       such as MLAA's edges): each sample image is antialiased
 //                       as if each of its pixels covered a whole pixel, and their average blurs
 //                       once more by the spread of the sample positions; the plain average has
 //                       no such blur, only the coarse steps of N coverage levels. Where the
