@@ -21,6 +21,7 @@
 //   order-independent translucency (depth peeling cannot read a multisampled framebuffer): the
 //   same image as with UseDepthPeeling off, without errors; translucent geometry is one colour
 //   per pixel (the sample images of a translucent cube alone are identical);
+// - MLAA's debug images (edges) are averaged as they are, not mixed with the scene's colours;
 // - MultiSamples back to 0 gives the single-sample pass's image exactly and frees the
 //   multisampled targets (GetTargetMemorySize).
 // No errors are reported on the way.
@@ -452,6 +453,42 @@ void Translucency(const PassMethod& method, MessageObserver* messages)
   MLAA_CHECK(Compare(oit, vtkMLAAScenes::Capture(scene.Window), 0.0).Pixels > 1000);
 }
 
+void DebugImages(const PassMethod& method, MessageObserver* messages)
+{
+  // MLAA's edges image with 4 samples is the average of the samples' edge images, not mixed with
+  // the scene's colours: red and green in quarters, blue 0.
+  if (std::string(method.Name) != "vtkOpenGLMLAAPass")
+  {
+    return;
+  }
+  SceneWindow scene("silhouettes", 300, 200);
+  auto pass = vtkOpenGLMLAAPass::SafeDownCast(method.Use(scene.Renderer));
+  messages->Watch(pass);
+  pass->SetMultiSamples(Samples);
+  pass->GetOptions()->SetDebugOutput(vtkMLAAOptions::EDGES);
+  auto edges = vtkMLAAScenes::Capture(scene.Window);
+  int dims[3];
+  edges->GetDimensions(dims);
+  int offQuarter = 0, blue = 0, edgePixels = 0;
+  for (int y = 0; y < dims[1]; ++y)
+  {
+    for (int x = 0; x < dims[0]; ++x)
+    {
+      for (int k = 0; k < 2; ++k)
+      {
+        const double v = GetValue(edges, x, y, k);
+        const double quarters = v / (255.0 / Samples);
+        offQuarter += std::abs(quarters - std::round(quarters)) * (255.0 / Samples) > 1.0 ? 1 : 0;
+      }
+      blue += GetValue(edges, x, y, 2) != 0.0 ? 1 : 0;
+      edgePixels += GetValue(edges, x, y, 0) + GetValue(edges, x, y, 1) > 0.0 ? 1 : 0;
+    }
+  }
+  std::cout << method.Name << ", edges image: " << edgePixels << " pixels with edges, "
+            << offQuarter << " values off a quarter, " << blue << " with blue" << std::endl;
+  MLAA_CHECK(edgePixels > 500 && offQuarter == 0 && blue == 0);
+}
+
 void BackToSingleSample(const PassMethod& method, MessageObserver* messages)
 {
   SceneWindow scene("silhouettes", 300, 200);
@@ -486,6 +523,7 @@ int TestAntialiasingPassMultiSamples(int, char*[])
     Picking(method, messages);
     ResizesAndViewports(method, messages);
     Translucency(method, messages);
+    DebugImages(method, messages);
     BackToSingleSample(method, messages);
   });
   return Result();
