@@ -44,8 +44,9 @@ using namespace vtkMLAATest;
 
 namespace
 {
-// The count the tests ask for: 4, which every driver with multisampled textures offers (OpenGL
-// 3.2 requires at least 4 for colour and depth textures).
+// The count the tests ask for: 4, which desktop drivers offer for RGBA8 and 24-bit depth
+// textures (llvmpipe offers nothing else; OpenGL itself only guarantees 4 samples for
+// renderbuffers).
 const int Samples = 4;
 
 // The plain images of each sample set of the pass's render (DebugSample).
