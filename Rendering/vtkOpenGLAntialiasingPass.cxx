@@ -30,6 +30,10 @@
 
 #include "vtkAntialiasingAlphaFS.h"
 #include "vtkAntialiasingTemporalFS.h"
+#include "vtkAntialiasingSamplesFS.h"
+
+#include <algorithm>
+#include <cstdlib>
 
 #include "vtk_glew.h" // For GL enums only: every call goes through VTK's classes
 
@@ -280,20 +284,21 @@ void vtkOpenGLAntialiasingPass::PrepareTargets(const Frame& frame, bool depth)
 }
 
 //------------------------------------------------------------------------------
-void vtkOpenGLAntialiasingPass::RenderDelegateToTextures(
-  const vtkRenderState* s, int width, int height, bool composite)
+void vtkOpenGLAntialiasingPass::RenderDelegateToTextures(const vtkRenderState* s,
+  vtkOpenGLFramebufferObject* fbo, vtkTextureObject* color, vtkTextureObject* depth, int width,
+  int height, bool composite)
 {
-  vtkOpenGLState* ostate = this->DelegateFramebuffer->GetContext()->GetState();
+  vtkOpenGLState* ostate = fbo->GetContext()->GetState();
   vtkRenderState delegateState(s->GetRenderer());
   delegateState.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
   delegateState.SetRequiredKeys(s->GetRequiredKeys());
-  delegateState.SetFrameBuffer(this->DelegateFramebuffer);
+  delegateState.SetFrameBuffer(fbo);
 
-  this->DelegateFramebuffer->Bind();
-  this->DelegateFramebuffer->AddColorAttachment(0, this->ColorTexture);
-  this->DelegateFramebuffer->ActivateDrawBuffer(0);
-  this->DelegateFramebuffer->AddDepthAttachment(this->DepthTexture);
-  this->DelegateFramebuffer->StartNonOrtho(width, height);
+  fbo->Bind();
+  fbo->AddColorAttachment(0, color);
+  fbo->ActivateDrawBuffer(0);
+  fbo->AddDepthAttachment(depth);
+  fbo->StartNonOrtho(width, height);
   ostate->vtkglViewport(0, 0, width, height);
   ostate->vtkglScissor(0, 0, width, height);
   ostate->vtkglEnable(GL_DEPTH_TEST);
@@ -313,7 +318,7 @@ void vtkOpenGLAntialiasingPass::RenderDelegateToTextures(
 
 //------------------------------------------------------------------------------
 vtkOpenGLAntialiasingPass::StepsChange vtkOpenGLAntialiasingPass::UseRendererTranslucency(
-  const vtkRenderState* s, vtkRenderStepsPass* steps, bool composite)
+  const vtkRenderState* s, vtkRenderStepsPass* steps, bool composite, bool multisampled)
 {
   // What vtkOpenGLRenderer does without a pass (UpdateGeometry and
   // DeviceRenderTranslucentPolygonalGeometry), decided from its settings at this render.
@@ -333,7 +338,10 @@ vtkOpenGLAntialiasingPass::StepsChange vtkOpenGLAntialiasingPass::UseRendererTra
   {
     return change; // the renderer skips the translucent step (volumes stay in their own)
   }
-  const bool peeling = renderer->GetUseDepthPeeling() != 0;
+  // Depth peeling copies the framebuffer's depth (and colour) with glCopyTexSubImage2D, which a
+  // multisampled framebuffer does not allow: a multisampled render (MultiSamples) uses
+  // order-independent translucency, which blits the depth (a resolve) instead.
+  const bool peeling = renderer->GetUseDepthPeeling() != 0 && !multisampled;
   const bool dual = peeling && renderer->IsDualDepthPeelingSupported();
   // As the renderer reports it after drawing translucent geometry by itself.
   this->SetLastRenderingUsedDepthPeeling(renderer, peeling);
@@ -357,7 +365,7 @@ vtkOpenGLAntialiasingPass::StepsChange vtkOpenGLAntialiasingPass::UseRendererTra
     }
     this->TranslucencyPass->SetTranslucentPass(translucent);
     wrapper = this->TranslucencyPass;
-    if (composite)
+    if (composite && !multisampled)
     {
       if (!this->CompositedPass)
       {
@@ -631,9 +639,20 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
   // depth needs it as a texture: those render the delegate into the pass's textures and copy
   // everything back.
   // Temporal antialiasing reads the delegate's depth (reprojection). A debug output of the method
-  // is shown as it is.
+  // is shown as it is. A multisampled render (SetMultiSamples) renders the delegate into the
+  // multisampled targets; temporal antialiasing does not combine with it (it renders one sample,
+  // and converges to the supersampled picture by itself): with both on, Temporal wins.
   const bool temporal = this->Temporal && this->DrawsDeferredOverlays();
-  frame.InPlace = !frame.Composite && !this->NeedsDelegateDepth() && !temporal;
+  if (temporal && this->MultiSamples > 1 && !this->WarnedTemporalMultiSamples)
+  {
+    vtkWarningMacro("MultiSamples " << this->MultiSamples
+                                    << " is not used while Temporal is on: the pass renders one "
+                                       "sample per pixel and accumulates jittered frames instead");
+    this->WarnedTemporalMultiSamples = true;
+  }
+  const int samples = temporal ? 0 : this->ChooseMultiSamples(renWin, frame.FloatColor);
+  this->RenderedMultiSamples = samples;
+  frame.InPlace = !frame.Composite && !this->NeedsDelegateDepth() && !temporal && !samples;
   unsigned int targetBinding = 0, targetBuffer = 0;
   ostate->GetCurrentDrawFramebufferState(targetBinding, targetBuffer);
 
@@ -654,6 +673,14 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
     vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
 
     this->PrepareTargets(frame, !frame.InPlace);
+    if (samples)
+    {
+      this->PrepareSampleTargets(frame, samples);
+    }
+    else
+    {
+      this->ReleaseSampleResources(renWin); // not used (any more)
+    }
 
     // Render the delegate, keeping its overlay step for after the antialiasing.
     if (overlay)
@@ -661,7 +688,7 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
       steps->SetOverlayPass(nullptr);
     }
     const StepsChange stepsChange =
-      steps ? this->UseRendererTranslucency(s, steps, frame.Composite) : StepsChange();
+      steps ? this->UseRendererTranslucency(s, steps, frame.Composite, samples > 0) : StepsChange();
     if (temporal)
     {
       this->BeginTemporalFrame(s, frame);
@@ -677,7 +704,20 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
     else
     {
       ostate->PushFramebufferBindings();
-      this->RenderDelegateToTextures(s, frame.Width, frame.Height, frame.Composite);
+      if (samples)
+      {
+        // Rasterised per sample: GL_MULTISAMPLE is on in a new context, but a window without
+        // samples may have it off.
+        vtkOpenGLState::ScopedglEnableDisable multisampleSaver(ostate, GL_MULTISAMPLE);
+        ostate->vtkglEnable(GL_MULTISAMPLE);
+        this->RenderDelegateToTextures(s, this->SamplesFramebuffer, this->SamplesColorTexture,
+          this->SamplesDepthTexture, frame.Width, frame.Height, frame.Composite);
+      }
+      else
+      {
+        this->RenderDelegateToTextures(s, this->DelegateFramebuffer, this->ColorTexture,
+          this->DepthTexture, frame.Width, frame.Height, frame.Composite);
+      }
       ostate->PopFramebufferBindings();
     }
     if (temporal)
@@ -690,7 +730,9 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
       steps->SetOverlayPass(overlay);
     }
 
-    done = temporal ? this->AntialiasTemporal(frame) : this->Antialias(frame);
+    done = temporal   ? this->AntialiasTemporal(frame)
+      : samples       ? this->AntialiasSamples(frame, samples)
+                      : this->Antialias(frame);
   }
 
   // The overlays: drawn on top of the result, in the state the pass was entered with, in the
@@ -728,6 +770,9 @@ void vtkOpenGLAntialiasingPass::ReleaseGraphicsResources(vtkWindow* w)
   {
     this->History->Release(w);
   }
+  this->ReleaseSampleResources(w);
+  this->SupportedSampleCounts[0].clear(); // the next context may offer others
+  this->SupportedSampleCounts[1].clear();
 }
 
 //------------------------------------------------------------------------------
@@ -735,12 +780,16 @@ vtkIdType vtkOpenGLAntialiasingPass::GetTargetMemorySize()
 {
   const int colorBytes =
     (this->ColorTexture && this->ColorTexture->GetVTKDataType() == VTK_FLOAT) ? 16 : 4;
+  const int samples = this->SamplesColorTexture ? this->SamplesColorTexture->GetSamples() : 0;
   return TextureBytes(this->ColorTexture, colorBytes) + TextureBytes(this->DepthTexture, 4) +
     TextureBytes(this->AlphaTexture, colorBytes / 4) + this->GetMethodTargetMemorySize() +
     (this->History ? TextureBytes(this->History->Current, colorBytes) +
           TextureBytes(this->History->Histories[0], 16) +
           TextureBytes(this->History->Histories[1], 16)
-                   : 0);
+                   : 0) +
+    TextureBytes(this->SamplesColorTexture, colorBytes * samples) +
+    TextureBytes(this->SamplesDepthTexture, 4 * samples) +
+    TextureBytes(this->SampleTexture, colorBytes) + TextureBytes(this->AccumulationTexture, 16);
 }
 
 //------------------------------------------------------------------------------
@@ -753,6 +802,9 @@ void vtkOpenGLAntialiasingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TemporalWeight: " << this->TemporalWeight << "\n";
   os << indent << "ConvergedFrames: " << this->ConvergedFrames << "\n";
   os << indent << "AccumulatedFrames: " << this->GetAccumulatedFrames() << "\n";
+  os << indent << "MultiSamples: " << this->MultiSamples << "\n";
+  os << indent << "RenderedMultiSamples: " << this->RenderedMultiSamples << "\n";
+  os << indent << "DebugSample: " << this->DebugSample << "\n";
 }
 
 //------------------------------------------------------------------------------
@@ -1052,4 +1104,323 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
   this->DepthTexture->Deactivate();
   h.Histories[h.Latest]->Deactivate();
   return true;
+}
+
+//------------------------------------------------------------------------------
+// Multisampled rendering (SetMultiSamples).
+namespace
+{
+// The sample counts the driver offers for multisampled textures of every format in `formats`,
+// largest first.
+std::vector<int> QuerySampleCounts(
+  vtkOpenGLRenderWindow* renWin, std::initializer_list<unsigned int> formats)
+{
+  std::vector<int> counts;
+  int major = 0, minor = 0;
+  renWin->GetOpenGLVersion(major, minor);
+  if (major > 4 || (major == 4 && minor >= 2))
+  {
+    // The counts of each format (glGetInternalformativ, OpenGL 4.2): VTK has no wrapper for it.
+    bool first = true;
+    for (unsigned int format : formats)
+    {
+      GLint n = 0;
+      glGetInternalformativ(GL_TEXTURE_2D_MULTISAMPLE, format, GL_NUM_SAMPLE_COUNTS, 1, &n);
+      std::vector<GLint> offered(static_cast<std::size_t>(std::max(n, 0)));
+      if (n > 0)
+      {
+        glGetInternalformativ(GL_TEXTURE_2D_MULTISAMPLE, format, GL_SAMPLES, n, offered.data());
+      }
+      if (first)
+      {
+        counts.assign(offered.begin(), offered.end());
+        first = false;
+      }
+      else
+      {
+        counts.erase(std::remove_if(counts.begin(), counts.end(),
+                       [&](int c) {
+                         return std::find(offered.begin(), offered.end(), c) == offered.end();
+                       }),
+          counts.end());
+      }
+    }
+  }
+  else
+  {
+    // OpenGL 3.2 guarantees multisampled textures up to these limits; powers of two below them.
+    GLint maxColor = 0, maxDepth = 0;
+    renWin->GetState()->vtkglGetIntegerv(GL_MAX_COLOR_TEXTURE_SAMPLES, &maxColor);
+    renWin->GetState()->vtkglGetIntegerv(GL_MAX_DEPTH_TEXTURE_SAMPLES, &maxDepth);
+    for (int c = 1; 2 * c <= std::min(maxColor, maxDepth); c *= 2)
+    {
+      counts.insert(counts.begin(), 2 * c);
+    }
+  }
+  counts.erase(std::remove_if(counts.begin(), counts.end(), [](int c) { return c < 2; }),
+    counts.end());
+  std::sort(counts.rbegin(), counts.rend());
+  return counts;
+}
+}
+
+//------------------------------------------------------------------------------
+int vtkOpenGLAntialiasingPass::ChooseMultiSamples(vtkOpenGLRenderWindow* renWin, bool floatColor)
+{
+  const int wanted = this->MultiSamples;
+  if (wanted < 2)
+  {
+    return 0;
+  }
+  std::vector<int>& counts = this->SupportedSampleCounts[floatColor ? 1 : 0];
+  if (counts.empty())
+  {
+    // The formats of SamplesColorTexture and SamplesDepthTexture.
+    const unsigned int colorFormat = floatColor ? GL_RGBA32F : GL_RGBA8;
+    counts = QuerySampleCounts(renWin, { colorFormat, GL_DEPTH_COMPONENT24 });
+    if (counts.empty())
+    {
+      counts.push_back(0); // queried: none
+    }
+  }
+  // The nearest offered count, the smaller one on a tie.
+  int chosen = 0;
+  for (int c : counts)
+  {
+    if (c >= 2 &&
+      (!chosen || std::abs(c - wanted) < std::abs(chosen - wanted) ||
+        (std::abs(c - wanted) == std::abs(chosen - wanted) && c < chosen)))
+    {
+      chosen = c;
+    }
+  }
+  if (chosen != wanted && this->WarnedMultiSamples != wanted)
+  {
+    this->WarnedMultiSamples = wanted;
+    std::string offered;
+    for (int c : counts)
+    {
+      if (c >= 2)
+      {
+        offered += (offered.empty() ? "" : ", ") + std::to_string(c);
+      }
+    }
+    if (chosen)
+    {
+      vtkWarningMacro("MultiSamples " << wanted << ": the OpenGL driver offers " << offered
+                                      << " samples per pixel for the pass's targets; using "
+                                      << chosen << ".");
+    }
+    else
+    {
+      vtkWarningMacro("MultiSamples " << wanted
+                                      << ": the OpenGL driver offers no multisampled targets; "
+                                         "rendering one sample per pixel.");
+    }
+  }
+  return chosen;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLAntialiasingPass::PrepareSampleTargets(const Frame& frame, int samples)
+{
+  vtkOpenGLRenderWindow* renWin = frame.Window;
+  const int colorType = frame.FloatColor ? VTK_FLOAT : VTK_UNSIGNED_CHAR;
+  for (vtkTextureObject** texture : { &this->SamplesColorTexture, &this->SamplesDepthTexture,
+         &this->SampleTexture, &this->AccumulationTexture })
+  {
+    if (!*texture)
+    {
+      *texture = NewTexture(renWin);
+    }
+  }
+  bool reallocated = false;
+  for (vtkTextureObject* texture : { this->SamplesColorTexture, this->SamplesDepthTexture })
+  {
+    if (texture->GetHandle() && texture->GetSamples() != static_cast<unsigned int>(samples))
+    {
+      texture->ReleaseGraphicsResources(renWin); // another count: allocated afresh below
+      reallocated = true;
+    }
+    texture->SetSamples(samples);
+  }
+  reallocated |= AllocateColorTarget(
+    this->SamplesColorTexture, frame.Width, frame.Height, 4, colorType, false);
+  // 24-bit depth, as the single-sample delegate's.
+  reallocated |= AllocateDepthTarget(
+    this->SamplesDepthTexture, frame.Width, frame.Height, vtkTextureObject::Fixed24);
+  reallocated |=
+    AllocateColorTarget(this->SampleTexture, frame.Width, frame.Height, 4, colorType, false);
+  // The sum of N images, each scaled by 1 / N: full floats, blended.
+  reallocated |= AllocateColorTarget(
+    this->AccumulationTexture, frame.Width, frame.Height, 4, VTK_FLOAT, false, GL_RGBA32F);
+  if (reallocated)
+  {
+    DeleteObject(this->SamplesFramebuffer, renWin);
+    DeleteObject(this->SampleFramebuffer, renWin);
+  }
+  for (vtkOpenGLFramebufferObject** fbo : { &this->SamplesFramebuffer, &this->SampleFramebuffer })
+  {
+    if (!*fbo)
+    {
+      *fbo = vtkOpenGLFramebufferObject::New();
+      (*fbo)->SetContext(renWin);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLAntialiasingPass::CopySample(
+  vtkOpenGLRenderWindow* renWin, int sample, int samples, int width, int height)
+{
+  vtkOpenGLState* ostate = renWin->GetState();
+  vtkOpenGLFramebufferObject* fbo = this->DelegateFramebuffer;
+  fbo->Bind();
+  fbo->AddColorAttachment(0, this->ColorTexture);
+  fbo->ActivateDrawBuffer(0);
+  fbo->AddDepthAttachment(this->DepthTexture);
+  ostate->vtkglViewport(0, 0, width, height);
+  ostate->vtkglScissor(0, 0, width, height);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  // Depth writes need the depth test on; ALWAYS copies the sample's depth.
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_ALWAYS);
+  ostate->vtkglDepthMask(GL_TRUE);
+  if (!this->ReadyQuad(
+        renWin, this->SampleCopyQuad, vtkAntialiasingSamplesFS, Define("SAMPLES_COPY", true)))
+  {
+    return false;
+  }
+  vtkShaderProgram* program = this->SampleCopyQuad.Quad->Program;
+  this->SamplesColorTexture->Activate();
+  this->SamplesDepthTexture->Activate();
+  program->SetUniformi("samplesColor", this->SamplesColorTexture->GetTextureUnit());
+  program->SetUniformi("samplesDepth", this->SamplesDepthTexture->GetTextureUnit());
+  program->SetUniformi("sampleIndex", std::min(sample, samples - 1));
+  this->SampleCopyQuad.Quad->Render();
+  this->SamplesDepthTexture->Deactivate();
+  this->SamplesColorTexture->Deactivate();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLAntialiasingPass::AntialiasSamples(const Frame& frame, int samples)
+{
+  vtkOpenGLRenderWindow* renWin = frame.Window;
+  vtkOpenGLState* ostate = renWin->GetState();
+  const int width = frame.Width, height = frame.Height;
+  // Each sample image is antialiased as the single-sample pass antialiases the delegate's image
+  // rendered into its textures, into SampleTexture (the whole of it), then accumulated; the
+  // compositing over the target, if any, is done once, with the average.
+  Frame sampleFrame = frame;
+  sampleFrame.X = 0;
+  sampleFrame.Y = 0;
+  sampleFrame.Composite = false;
+  sampleFrame.InPlace = false;
+  const bool debug = this->DebugSample >= 0;
+  const int first = debug ? std::min(this->DebugSample, samples - 1) : 0;
+  const int last = debug ? first + 1 : samples;
+
+  ostate->PushFramebufferBindings();
+  bool done = true;
+  for (int sample = first; done && sample < last; ++sample)
+  {
+    done = this->CopySample(renWin, sample, samples, width, height);
+    vtkTextureObject* result = this->ColorTexture; // the plain sample image, for DebugSample
+    if (done && !debug)
+    {
+      this->SampleFramebuffer->Bind();
+      this->SampleFramebuffer->AddColorAttachment(0, this->SampleTexture);
+      this->SampleFramebuffer->ActivateDrawBuffer(0);
+      done = this->Antialias(sampleFrame);
+      result = this->SampleTexture;
+    }
+    // Accumulated: the sum of the sample images, each scaled by 1 / N.
+    done = done &&
+      this->ReadyQuad(renWin, this->AccumulateQuad, vtkAntialiasingSamplesFS,
+        Define("SAMPLES_ACCUMULATE", true));
+    if (!done)
+    {
+      break;
+    }
+    this->SampleFramebuffer->Bind();
+    this->SampleFramebuffer->AddColorAttachment(0, this->AccumulationTexture);
+    this->SampleFramebuffer->ActivateDrawBuffer(0);
+    ostate->vtkglViewport(0, 0, width, height);
+    ostate->vtkglScissor(0, 0, width, height);
+    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+    if (sample == first)
+    {
+      ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+      ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+    }
+    ostate->vtkglEnable(GL_BLEND);
+    ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+    vtkShaderProgram* program = this->AccumulateQuad.Quad->Program;
+    result->Activate();
+    program->SetUniformi("source", result->GetTextureUnit());
+    program->SetUniformf("scale", 1.0f / static_cast<float>(last - first));
+    this->AccumulateQuad.Quad->Render();
+    result->Deactivate();
+  }
+  ostate->PopFramebufferBindings();
+  if (!done ||
+    !this->ReadyQuad(
+      renWin, this->ResolveQuad, vtkAntialiasingSamplesFS, Define("SAMPLES_RESOLVE", true)))
+  {
+    return false;
+  }
+
+  // The average into the target viewport, with the nearest depth of each pixel's samples.
+  ostate->vtkglViewport(frame.X, frame.Y, width, height);
+  ostate->vtkglScissor(frame.X, frame.Y, width, height);
+  if (frame.Composite)
+  {
+    // Premultiplied "over" onto what lower layers drew, as the single-sample pass does.
+    ostate->vtkglEnable(GL_BLEND);
+    ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  }
+  else
+  {
+    ostate->vtkglDisable(GL_BLEND);
+  }
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_ALWAYS);
+  ostate->vtkglDepthMask(GL_TRUE);
+  vtkShaderProgram* program = this->ResolveQuad.Quad->Program;
+  this->AccumulationTexture->Activate();
+  this->SamplesColorTexture->Activate();
+  this->SamplesDepthTexture->Activate();
+  program->SetUniformi("source", this->AccumulationTexture->GetTextureUnit());
+  program->SetUniformi("samplesColor", this->SamplesColorTexture->GetTextureUnit());
+  program->SetUniformi("samplesDepth", this->SamplesDepthTexture->GetTextureUnit());
+  program->SetUniformi("numberOfSamples", samples);
+  // Where a pixel's samples differ, half the method's average and half the plain average (see
+  // vtkAntialiasingSamplesFS.glsl); the plain image of DebugSample and the method's debug
+  // images (MLAA's edges, weights) as they are.
+  const bool debugImage = debug || !this->DrawsDeferredOverlays();
+  program->SetUniformf("resolveWeight", debugImage ? 0.0f : 0.5f);
+  this->ResolveQuad.Quad->Render();
+  this->SamplesDepthTexture->Deactivate();
+  this->SamplesColorTexture->Deactivate();
+  this->AccumulationTexture->Deactivate();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLAntialiasingPass::ReleaseSampleResources(vtkWindow* w)
+{
+  DeleteObject(this->SamplesFramebuffer, w);
+  DeleteObject(this->SampleFramebuffer, w);
+  for (vtkTextureObject** texture : { &this->SamplesColorTexture, &this->SamplesDepthTexture,
+         &this->SampleTexture, &this->AccumulationTexture })
+  {
+    DeleteObject(*texture, w);
+  }
+  this->SampleCopyQuad.Release(w);
+  this->AccumulateQuad.Release(w);
+  this->ResolveQuad.Release(w);
 }

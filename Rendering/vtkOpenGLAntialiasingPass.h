@@ -53,6 +53,7 @@
 #include "vtkRenderingMLAAModule.h" // For export macro
 
 #include <string> // For std::string
+#include <vector> // For std::vector
 
 class vtkDepthPeelingPass;
 class vtkOpenGLFramebufferObject;
@@ -127,7 +128,8 @@ public:
    * The renderer is rendered into the pass's own textures (its depth is read). Hardware selection
    * renders bypass the pass and leave the history alone. A debug output of the method (MLAA)
    * shows the current frame alone. The camera's parameters are the same after a render as before
-   * it; its modified time advances. Switching it on resets the history.
+   * it; its modified time advances. Switching it on resets the history. Temporal antialiasing
+   * renders one sample per pixel: with it on, MultiSamples is not used (a warning says so once).
    */
   virtual void SetTemporal(bool temporal);
   vtkGetMacro(Temporal, bool);
@@ -171,11 +173,56 @@ public:
    */
   void ResetHistory();
 
+  // /@{
+  /**
+   * Morphological antialiasing of a multisampled render (SMAA's "S2x" idea): with 2 or more, the
+   * delegate renders into a target of that many samples per pixel; each sample set (sample s of
+   * every pixel) is antialiased by the method's passes, unchanged, as a single-sample image, and
+   * the antialiased sample images are averaged into the renderer's viewport, as a multisample
+   * resolve averages samples; where a pixel's samples differ (a geometric edge crosses it), the
+   * result is half that average and half the plain average of the samples, which undoes half of
+   * the blur the sample positions' spread adds. Edges get both the sub-pixel coverage of
+   * multisampling and the method's gradients. Default 0: the single-sample pass (0 and 1 mean the same). Where the
+   * OpenGL driver does not offer the count asked for (for the colour and depth formats the pass
+   * renders with), the nearest count it offers is used (the smaller of two equally near ones) and
+   * a warning says so once per count asked for; GetRenderedMultiSamples() tells which count the
+   * last render used. Cost: the method runs once per sample. Not used while Temporal is on.
+   *
+   * Everything else works as in the single-sample pass (overlays drawn after, layers, picking,
+   * KeepAlpha, viewports, resizes, floating-point targets). Translucent geometry is drawn into
+   * the multisampled target with VTK's order-independent translucency, also where the renderer
+   * asks for depth peeling (which copies the framebuffer in a way multisampled framebuffers
+   * refuse); it blends translucent fragments per pixel, not per sample, so translucent surfaces
+   * are antialiased by the method alone, as in the single-sample pass, while opaque geometry
+   * behind and around them keeps its samples. In a composited renderer (layers) the alpha of
+   * translucent geometry is then what order-independent translucency leaves (the coverage
+   * correction of the single-sample pass is not applied).
+   */
+  vtkSetClampMacro(MultiSamples, int, 0, 16);
+  vtkGetMacro(MultiSamples, int);
+  // /@}
+
+  /**
+   * The number of samples per pixel the last render used: 0 for the single-sample pass, otherwise
+   * the supported count nearest to MultiSamples (see SetMultiSamples).
+   */
+  vtkGetMacro(RenderedMultiSamples, int);
+
+  // /@{
+  /**
+   * For inspection and tests, with MultiSamples: a sample index s >= 0 makes the pass write the
+   * plain, not antialiased image of sample s of every pixel (what the method's passes read for
+   * that sample) instead of the antialiased resolve. Default -1: the antialiased result.
+   */
+  vtkSetMacro(DebugSample, int);
+  vtkGetMacro(DebugSample, int);
+  // /@}
+
   /**
    * Bytes of GPU memory held by the pass's render targets at the last render: the copy of the
    * delegate's colour, its depth when the pass renders it into its own textures, the alpha kept
-   * across order-independent translucency in a composited renderer, and the subclass's targets
-   * (not the textures of VTK's translucency passes).
+   * across order-independent translucency in a composited renderer, the multisampled targets
+   * (MultiSamples) and the subclass's targets (not the textures of VTK's translucency passes).
    */
   virtual vtkIdType GetTargetMemorySize();
 
@@ -275,8 +322,10 @@ private:
   // Gives the delegate's translucent step the translucency the renderer would use without a pass
   // (see the class description), wrapping the step; returns what it changed. `composite`: the
   // delegate renders into ColorTexture to be composited (see CompositedTranslucency).
+  // `multisampled`: it renders into the multisampled targets (MultiSamples), where depth peeling
+  // and CompositedTranslucency cannot copy the framebuffer: order-independent translucency, plain.
   StepsChange UseRendererTranslucency(
-    const vtkRenderState* s, vtkRenderStepsPass* steps, bool composite);
+    const vtkRenderState* s, vtkRenderStepsPass* steps, bool composite, bool multisampled);
   // Puts the delegate's steps back as they were before UseRendererTranslucency.
   void RestoreDelegateSteps(const StepsChange& change);
 
@@ -296,10 +345,6 @@ private:
   vtkTextureObject* AlphaTexture = nullptr;
   ShaderVariant KeepAlphaQuad, RestoreAlphaQuad;
 
-  // Renders the delegate into ColorTexture and DepthTexture (cleared to transparent black first
-  // when compositing over the target).
-  void RenderDelegateToTextures(const vtkRenderState* s, int width, int height, bool composite);
-
   // Temporal antialiasing (see SetTemporal): the history, its targets and the state of the last
   // render, defined in the .cxx.
   bool Temporal = false;
@@ -314,6 +359,38 @@ private:
   // Antialiases the frame into the history's current target, blends it with the history and
   // writes the result (and the delegate's depth) into the target viewport.
   bool AntialiasTemporal(const Frame& frame);
+  // Renders the delegate into `color` and `depth` through `fbo` (cleared to transparent black
+  // first when compositing over the target).
+  void RenderDelegateToTextures(const vtkRenderState* s, vtkOpenGLFramebufferObject* fbo,
+    vtkTextureObject* color, vtkTextureObject* depth, int width, int height, bool composite);
+
+  // Multisampled rendering (SetMultiSamples; the shaders are vtkAntialiasingSamplesFS.glsl).
+  int MultiSamples = 0;
+  int RenderedMultiSamples = 0;
+  int DebugSample = -1;
+  int WarnedMultiSamples = 0; // the count asked for that the last warning was about
+  bool WarnedTemporalMultiSamples = false; // MultiSamples unused while Temporal is on, said once
+  // The sample counts the driver offers for the colour and depth formats of the targets, largest
+  // first, queried once per colour type (index 1: floating point) and context.
+  std::vector<int> SupportedSampleCounts[2];
+  // The supported count nearest to MultiSamples (warning once when it differs), 0 for none.
+  int ChooseMultiSamples(vtkOpenGLRenderWindow* renWin, bool floatColor);
+  // Creates or resizes the multisampled targets and the sample and accumulation textures.
+  void PrepareSampleTargets(const Frame& frame, int samples);
+  // Copies each sample set into ColorTexture and DepthTexture, antialiases it with Antialias
+  // into SampleTexture, accumulates the average and writes it with the nearest depth into the
+  // target viewport (premultiplied "over" when compositing).
+  bool AntialiasSamples(const Frame& frame, int samples);
+  // Copies sample `sample` of the multisampled targets into ColorTexture and DepthTexture.
+  bool CopySample(vtkOpenGLRenderWindow* renWin, int sample, int samples, int width, int height);
+  void ReleaseSampleResources(vtkWindow* w);
+  vtkOpenGLFramebufferObject* SamplesFramebuffer = nullptr; // the delegate's, multisampled
+  vtkOpenGLFramebufferObject* SampleFramebuffer = nullptr;  // one sample's result, accumulation
+  vtkTextureObject* SamplesColorTexture = nullptr;
+  vtkTextureObject* SamplesDepthTexture = nullptr;
+  vtkTextureObject* SampleTexture = nullptr;       // one antialiased sample image
+  vtkTextureObject* AccumulationTexture = nullptr; // the average of the antialiased samples
+  ShaderVariant SampleCopyQuad, AccumulateQuad, ResolveQuad;
 };
 
 #endif

@@ -24,6 +24,10 @@
 // Variants (unless --no-variants): the MLAA pass with each feature of "Morphological antialiasing
 // and topological reconstruction" over the medium preset (+lab, +steps32, +steps128, +recon), the
 // three together (+all3) and each preset (P-low ... P-ultra), reported the same way.
+// Multisampling (--multisamples): the window with SetMultiSamples(2, 4, 8) and no pass (MSAA2,
+// MSAA4, MSAA8), and the passes with SetMultiSamples(2, 4, 8) (MLAA-S2 ... MLAA-S8, DLAA-S4),
+// reported as frame time / frame time of MSAA4 (medians of the same rounds), with the sample
+// counts the driver gave.
 #include "BenchmarkUtilities.h"
 #include "vtkMLAAScenes.h"
 
@@ -138,6 +142,8 @@ void Usage(const char* program)
             << "                   P-ultra)\n"
             << "  --no-long-lines  leave out the MLAA pass at 8, 32 and 128 steps with the search\n"
             << "                   loop and with recursive doubling\n"
+            << "  --multisamples   also time 2x, 4x and 8x MSAA and the passes with 2, 4 and 8\n"
+            << "                   samples, as frame time / frame time of 4x MSAA\n"
             << "For the MLAA pass, " << mlaaBenchmark::MLAAOptionsUsage();
 }
 
@@ -147,6 +153,7 @@ struct Configuration
   vtkRenderPass* Pass; // nullptr: the renderer's own steps
   bool BuiltinFXAA;
   std::vector<double> Times;
+  int WindowSamples = 0; // the window's MultiSamples while it renders
 };
 }
 
@@ -157,6 +164,7 @@ int main(int argc, char* argv[])
   bool longLines = true;
   bool variants = true;
   bool cpuClock = false;
+  bool multisamples = false;
   std::string scene = "mixed";
   vtkNew<vtkMLAAOptions> options;
   for (int i = 1; i < argc; ++i)
@@ -191,6 +199,10 @@ int main(int argc, char* argv[])
     else if (arg == "--no-variants")
     {
       variants = false;
+    }
+    else if (arg == "--multisamples")
+    {
+      multisamples = true;
     }
     else if (arg == "--no-long-lines")
     {
@@ -314,6 +326,32 @@ int main(int argc, char* argv[])
     }
   }
 
+  // Multisampling: the window's MSAA, and the passes on each sample set.
+  std::vector<vtkSmartPointer<vtkOpenGLAntialiasingPass>> samplePasses;
+  if (multisamples)
+  {
+    for (int count : { 2, 4, 8 })
+    {
+      configurations.push_back({ "MSAA" + std::to_string(count), nullptr, false, {}, count });
+    }
+    for (int count : { 2, 4, 8 })
+    {
+      auto pass = vtkSmartPointer<vtkOpenGLMLAAPass>::New();
+      vtkNew<vtkRenderStepsPass> delegate;
+      pass->SetDelegatePass(delegate);
+      pass->SetOptions(options);
+      pass->SetMultiSamples(count);
+      samplePasses.push_back(pass);
+      configurations.push_back({ "MLAA-S" + std::to_string(count), pass, false, {} });
+    }
+    auto pass = vtkSmartPointer<vtkOpenGLDLAAPass>::New();
+    vtkNew<vtkRenderStepsPass> delegate;
+    pass->SetDelegatePass(delegate);
+    pass->SetMultiSamples(4);
+    samplePasses.push_back(pass);
+    configurations.push_back({ "DLAA-S4", pass, false, {} });
+  }
+
   vtkCamera* camera = renderer->GetActiveCamera();
   vtkNew<vtkCamera> start;
   start->DeepCopy(camera);
@@ -328,6 +366,7 @@ int main(int argc, char* argv[])
   auto use = [&](const Configuration& c) {
     renderer->SetPass(c.Pass);
     renderer->SetUseFXAA(c.BuiltinFXAA);
+    window->SetMultiSamples(c.WindowSamples);
     camera->DeepCopy(start);
   };
 
@@ -466,6 +505,32 @@ int main(int argc, char* argv[])
       }
     }
   }
+  if (multisamples)
+  {
+    double msaa4 = 0.0;
+    for (const auto& c : configurations)
+    {
+      if (c.Name == "MSAA4")
+      {
+        msaa4 = mlaaBenchmark::Median(c.Times);
+      }
+    }
+    std::cout << "multisampling: frame time / frame time of MSAA4 (" << msaa4 << " ms)\n";
+    for (const auto& c : configurations)
+    {
+      auto* pass = vtkOpenGLAntialiasingPass::SafeDownCast(c.Pass);
+      if (c.WindowSamples || (pass && pass->GetMultiSamples()))
+      {
+        std::cout << "  " << std::left << std::setw(11) << c.Name << std::right << std::setw(8)
+                  << mlaaBenchmark::Median(c.Times) / msaa4;
+        if (pass)
+        {
+          std::cout << "  (" << pass->GetRenderedMultiSamples() << " samples used)";
+        }
+        std::cout << "\n";
+      }
+    }
+  }
   std::cout << "MLAA pass render targets: " << targets / (1024.0 * 1024.0) << " MiB = "
             << targets / backBuffer << " x the RGBA8 back buffer (" << backBuffer / (1024.0 * 1024.0)
             << " MiB); MLAA-specific targets (edges + blending weights): "
@@ -480,6 +545,10 @@ int main(int argc, char* argv[])
     pass->ReleaseGraphicsResources(window);
   }
   for (auto& pass : variantPasses)
+  {
+    pass->ReleaseGraphicsResources(window);
+  }
+  for (auto& pass : samplePasses)
   {
     pass->ReleaseGraphicsResources(window);
   }

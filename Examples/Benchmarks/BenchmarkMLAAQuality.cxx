@@ -8,13 +8,17 @@
 //              offsets (vtkCamera::SetWindowCenter(2 sx / W, 2 sy / H), sx, sy = (i + 0.5) / N - 0.5),
 //              averaged in double precision;
 //   FXAA       VTK's built-in FXAA (renderer->UseFXAAOn(), default vtkFXAAOptions);
-//   MSAA4      4x multisampling (window->SetMultiSamples(4));
+//   MSAA4      4x multisampling (window->SetMultiSamples(4)); MSAA2 and MSAA8 likewise (a
+//              driver may give another count: llvmpipe gives 4 for 2 and 8);
 //   MLAA-CPU   vtkImageMLAA with default options on the single-sample render;
 //   MLAA-pass  vtkOpenGLMLAAPass (delegate vtkRenderStepsPass, default options: overlays drawn
 //              after the antialiasing);
 //   DLAA-pass  vtkOpenGLDLAAPass (delegate vtkRenderStepsPass, default vtkDLAAOptions);
 //   MLAA-temporal, DLAA-temporal  the two passes with temporal antialiasing (SetTemporal): the
 //              still after 16 renders of the unchanged scene by a new pass;
+//   MLAA-S2, MLAA-S4, MLAA-S8, DLAA-S4
+//              the passes with SetMultiSamples(2, 4, 8): the method on each sample set of a
+//              multisampled render, resolved (the count the driver gave is printed per scene);
 //   variants   (unless --no-variants) MLAA-pass with each feature of "Morphological
 //              antialiasing and topological reconstruction" over the medium preset (+lab, +steps32,
 //              +steps128, +recon), the three together (+all3) and each preset (P-low ...
@@ -33,7 +37,8 @@
 // It prints a table and per-method summaries, writes a CSV and, per scene, a crop mosaic PNG:
 // crops of the same region (the crop-size window with the largest squared none-vs-reference
 // error), magnified with nearest-neighbour, left to right:
-//   none | FXAA | MSAA4 | MLAA-CPU | MLAA-pass | DLAA-pass | P-high | P-ultra | reference
+//   none | FXAA | MSAA4 | MLAA-CPU | MLAA-pass | DLAA-pass | MLAA-S4 | P-high | P-ultra |
+//   reference
 // each under a label strip.
 #include "BenchmarkUtilities.h"
 #include "vtkMLAAScenes.h"
@@ -74,11 +79,12 @@ using mlaaBenchmark::Stopwatch;
 
 // The methods in table order ("none" first: its AAR is 0 by definition); the variants are
 // added unless --no-variants is given.
-std::vector<std::string> Methods = { "none", "FXAA", "MSAA4", "MLAA-CPU", "MLAA-pass",
-  "DLAA-pass", "MLAA-temporal", "DLAA-temporal" };
+std::vector<std::string> Methods = { "none", "FXAA", "MSAA2", "MSAA4", "MSAA8", "MLAA-CPU",
+  "MLAA-pass", "DLAA-pass", "MLAA-S2", "MLAA-S4", "MLAA-S8", "DLAA-S4", "MLAA-temporal",
+  "DLAA-temporal" };
 // The methods of the crop mosaic, in order.
 std::vector<std::string> MosaicMethods = { "none", "FXAA", "MSAA4", "MLAA-CPU", "MLAA-pass",
-  "DLAA-pass" };
+  "DLAA-pass", "MLAA-S4" };
 
 
 // A difference of more than this (0..255 units) in some channel counts as "differs".
@@ -405,7 +411,7 @@ void Usage(const char* program)
     << "                    (the three), P-low, P-medium, P-high, P-ultra (the presets)\n"
     << "For MLAA-CPU and MLAA-pass alike, " << mlaaBenchmark::MLAAOptionsUsage()
     << "Mosaic panel order, left to right: none | FXAA | MSAA4 | MLAA-CPU | MLAA-pass | "
-       "DLAA-pass | P-high | P-ultra | reference\n";
+       "DLAA-pass | MLAA-S4 | P-high | P-ultra | reference\n";
 }
 }
 
@@ -517,6 +523,7 @@ int main(int argc, char* argv[])
     vtkMLAAScenes::Build(scene, renderer);
 
     std::map<std::string, Image> images;
+    std::string multisampleNote; // the sample counts the passes used
     if (!Capture(window, images["none"]))
     {
       return EXIT_FAILURE;
@@ -563,9 +570,12 @@ int main(int argc, char* argv[])
     Capture(window, images["FXAA"]);
     renderer->UseFXAAOff();
 
-    // 4x MSAA.
-    window->SetMultiSamples(4);
-    Capture(window, images["MSAA4"]);
+    // 2x, 4x and 8x MSAA (as the window gives them).
+    for (int count : { 2, 4, 8 })
+    {
+      window->SetMultiSamples(count);
+      Capture(window, images["MSAA" + std::to_string(count)]);
+    }
     window->SetMultiSamples(0);
 
     // vtkImageMLAA on the single-sample render.
@@ -587,6 +597,15 @@ int main(int argc, char* argv[])
       pass->SetOptions(options);
       renderer->SetPass(pass);
       Capture(window, images["MLAA-pass"]);
+      // Multisampled: the method per sample set, resolved.
+      for (int count : { 2, 4, 8 })
+      {
+        pass->SetMultiSamples(count);
+        Capture(window, images["MLAA-S" + std::to_string(count)]);
+        multisampleNote += " MLAA-S" + std::to_string(count) + ": " +
+          std::to_string(pass->GetRenderedMultiSamples()) + " samples;";
+      }
+      pass->SetMultiSamples(0);
       // Parity with MLAA-CPU: the overlays antialiased too, as the filter sees them.
       pass->AntialiasOverlaysOn();
       Capture(window, images["MLAA-pass-overlays"]);
@@ -614,6 +633,10 @@ int main(int argc, char* argv[])
       pass->SetDelegatePass(steps);
       renderer->SetPass(pass);
       Capture(window, images["DLAA-pass"]);
+      pass->SetMultiSamples(4);
+      Capture(window, images["DLAA-S4"]);
+      multisampleNote +=
+        " DLAA-S4: " + std::to_string(pass->GetRenderedMultiSamples()) + " samples;";
       renderer->SetPass(nullptr);
       pass->ReleaseGraphicsResources(window);
     }
@@ -731,6 +754,11 @@ int main(int argc, char* argv[])
               << clock.Milliseconds() / 1000.0 << " s; CPU/GPU parity "
               << std::setprecision(3) << 100.0 * result.Parity << " % of pixels within 2/255"
               << std::defaultfloat << std::endl;
+    const bool msaaSame = images["MSAA2"].Values == images["MSAA4"].Values &&
+      images["MSAA8"].Values == images["MSAA4"].Values;
+    std::cout << "  multisampling:" << multisampleNote
+              << (msaaSame ? " the window's MSAA2 and MSAA8 images equal MSAA4's" : "")
+              << std::endl;
   }
 
   // The table.
@@ -822,8 +850,8 @@ int main(int argc, char* argv[])
               << std::defaultfloat << "\n";
   }
   std::cout << "\nCSV: " << outputDir << "/quality.csv; crop mosaics: " << outputDir
-            << "/quality-<scene>-crops.png (none | FXAA | MSAA4 | MLAA-CPU | MLAA-pass | DLAA-pass | P-high | "
-               "P-ultra | reference)"
+            << "/quality-<scene>-crops.png (none | FXAA | MSAA4 | MLAA-CPU | MLAA-pass | DLAA-pass | MLAA-S4 | "
+               "P-high | P-ultra | reference)"
             << std::endl;
   return problems ? EXIT_FAILURE : EXIT_SUCCESS;
 }

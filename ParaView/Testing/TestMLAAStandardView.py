@@ -2,12 +2,15 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """MLAA and DLAA in ParaView's ordinary render view ("RenderView"), as the plugin extends it:
 - the view is the plugin's class, its "Antialiasing Options" group holds AntialiasingMethod,
-  AntialiasingKeepAlpha, MLAALineLengths and the MLAA and DLAA settings, and the method's GUI
+  AntialiasingKeepAlpha, AntialiasingMultiSamples, MLAALineLengths and the MLAA and DLAA
+  settings, and the method's GUI
   label names DLAA as "DLAA (Andreev 2011, directionally localized antialiasing)";
 - AntialiasingMethod "None or FXAA" (the default) gives the plain image; MLAA gives, within
   2/255, the `mlaa` tool's result on the plain screenshot (edge pixels change, flat regions do
   not), with the defaults and with a preset; DLAA the same with --method dlaa; FXAA asked for
   does not stack; MLAALineLengths reaches the pass and gives the same image with each method;
+- AntialiasingMultiSamples 4: on one rank another image than single-sample MLAA's (flat regions
+  unchanged); under IceT single-sample MLAA's image (the composited image has one sample);
 - AntialiasingKeepAlpha reaches both passes; off, transparent screenshots (which ParaView
   derives from renders over white and over black) have antialiased silhouette alpha; on, one
   process's result changes, and under IceT nothing does;
@@ -51,7 +54,8 @@ for i in range(view.SMProxy.GetNumberOfPropertyGroups()):
         view.SMProxy.GetPropertyName(group.GetProperty(j))
         for j in range(group.GetNumberOfProperties()))
 antialiasing = groups.get("Antialiasing Options", [])
-expected = ["AntialiasingMethod", "AntialiasingKeepAlpha", "MLAALineLengths", "MLAAQualityPreset",
+expected = ["AntialiasingMethod", "AntialiasingKeepAlpha", "AntialiasingMultiSamples",
+            "MLAALineLengths", "MLAAQualityPreset",
             "MLAAThreshold", "MLAAEdgeDetection", "DLAALambda", "DLAALongEdges"]
 t.check(all(name in antialiasing for name in expected),
         "the view's Antialiasing Options group holds %s (it has %d properties)"
@@ -161,6 +165,28 @@ _, dlaa = screenshot("dlaa.png")
 check_against_tool("DLAA", dlaa, plain_path, plain, ["--method", "dlaa", "--dlaa-lambda", "5"],
                    radius=10)
 view.DLAALambda = 3
+
+# AntialiasingMultiSamples: on one rank the view renders 4 samples per pixel and MLAA runs on
+# each sample set (another image than single-sample MLAA's; flat regions unchanged); under IceT
+# MLAA runs on the composited image, one sample per pixel, so the image is single-sample MLAA's.
+view.AntialiasingMethod = "MLAA"
+view.AntialiasingMultiSamples = "4"
+_, mlaa_samples = screenshot("mlaa-4-samples.png")
+t.check(server_value("AntialiasingMultiSamplesInfo") == 4,
+        "AntialiasingMultiSamples 4 reaches the view")
+if args.ranks == 1:
+    differs = np.any(mlaa_samples != mlaa, axis=2).sum()
+    t.check(differs > 100, "4 samples: %d pixels differ from single-sample MLAA" % differs)
+    uniform = t.uniform_neighbourhoods(plain, 2)
+    difference = t.max_difference(mlaa_samples[uniform], plain[uniform])
+    t.check(difference == 0, "4 samples: flat regions are unchanged (max difference %d)"
+            % difference)
+else:
+    t.check(np.array_equal(mlaa_samples, mlaa),
+            "under IceT, AntialiasingMultiSamples gives single-sample MLAA's image")
+view.AntialiasingMultiSamples = "Off"
+_, mlaa_again = screenshot("mlaa-again.png")
+t.check(np.array_equal(mlaa_again, mlaa), "AntialiasingMultiSamples Off: single-sample MLAA again")
 
 view.AntialiasingMethod = "None or FXAA"
 _, plain_again = screenshot("none-again.png")

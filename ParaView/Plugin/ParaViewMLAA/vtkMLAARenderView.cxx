@@ -201,6 +201,10 @@ public:
       this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
       return;
     }
+    if (auto* pass = vtkOpenGLAntialiasingPass::SafeDownCast(this->Antialiasing))
+    {
+      pass->SetMultiSamples(this->View->GetRenderMultiSamples(backgroundUnder));
+    }
     if (backgroundUnder)
     {
       this->Under->Delegate = this->DelegatePass;
@@ -339,6 +343,36 @@ void vtkMLAARenderView::StillRender()
   {
     this->Superclass::StillRender();
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkMLAARenderView::SetAntialiasingMultiSamples(int samples)
+{
+  samples = std::max(0, std::min(samples, 16));
+  if (samples != this->AntialiasingMultiSamples)
+  {
+    this->AntialiasingMultiSamples = samples;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkMLAARenderView::GetRenderMultiSamples(bool composited)
+{
+  if (!composited || this->AntialiasingMultiSamples < 2)
+  {
+    return this->AntialiasingMultiSamples;
+  }
+  if (!this->WarnedSingleSampleComposite)
+  {
+    this->WarnedSingleSampleComposite = true;
+    vtkWarningMacro("AntialiasingMultiSamples " << this->AntialiasingMultiSamples
+                                               << " is not applied: under parallel compositing "
+                                                  "(IceT) or on a pvserver, MLAA and DLAA run "
+                                                  "on the composited image, one sample per "
+                                                  "pixel.");
+  }
+  return 0;
 }
 
 //------------------------------------------------------------------------------
@@ -499,6 +533,7 @@ void vtkMLAARenderView::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AntialiasingMethod: " << this->AntialiasingMethod << "\n";
   os << indent << "UseMLAA: " << (this->UseMLAA ? "On" : "Off") << "\n";
   os << indent << "UseDLAA: " << (this->UseDLAA ? "On" : "Off") << "\n";
+  os << indent << "AntialiasingMultiSamples: " << this->AntialiasingMultiSamples << "\n";
   os << indent << "RequestedFXAA: " << (this->RequestedFXAA ? "On" : "Off") << "\n";
   os << indent << "RequestedToneMapping: " << (this->RequestedToneMapping ? "On" : "Off") << "\n";
   os << indent << "MLAAPass:\n";

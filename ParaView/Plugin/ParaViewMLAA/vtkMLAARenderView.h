@@ -106,6 +106,19 @@ public:
 
   ///@{
   /**
+   * Samples per pixel for MLAA and DLAA (both passes' vtkOpenGLAntialiasingPass::MultiSamples):
+   * 0, the default, antialiases the single-sample image; 2, 4 or 8 renders each process's image
+   * with that many samples and runs the method on each sample set before averaging. Where the
+   * process renders over transparent black for compositing (IceT, several ranks) or for a client
+   * (pvserver), the slot's delegate pastes an image that is already composited, one sample per
+   * pixel: the passes then run single-sample, and the view warns once.
+   */
+  void SetAntialiasingMultiSamples(int samples);
+  vtkGetMacro(AntialiasingMultiSamples, int);
+  ///@}
+
+  ///@{
+  /**
    * Renders per still render while AntialiasingTemporal is on and MLAA or DLAA is in effect
    * (the passes' ConvergedFrames): a still render (a screenshot, the render after interaction)
    * renders this many times, so that it shows the converged still. The same number on every
@@ -215,6 +228,11 @@ private:
   vtkNew<vtkOpenGLDLAAPass> DLAAPass;
   int AntialiasingMethod = FXAA_OR_NONE;
   bool UseMLAA = false;
+  int AntialiasingMultiSamples = 0;
+  bool WarnedSingleSampleComposite = false;
+  // The passes' MultiSamples for this render: 0 where the image is composited (see
+  // SetAntialiasingMultiSamples), warning once.
+  int GetRenderMultiSamples(bool composited);
   bool UseDLAA = false;
   int WarnedBackgroundMode = -1;
   int BackgroundMode = vtkPVRenderView::DEFAULT;

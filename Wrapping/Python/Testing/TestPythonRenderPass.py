@@ -5,7 +5,10 @@ vtkmlaa.enable(renderer), saved to PNG; the pass changes edge pixels, leaves pix
 edge alone, and gives the image vtkImageMLAA gives on the screenshot without antialiasing (within
 2/255 on at least 99.5 % of the pixels, as the C++ test TestMLAAPassMatchesFilter requires), also
 with translucent geometry, depth peeling off and on (issue 21); with temporal=True, render_still
-gives a converged still closer to a supersampled reference than the single-frame pass (issue 23).
+gives a converged still closer to a supersampled reference than the single-frame pass (issue 23);
+with multisamples=4, the pass equals the filter run on each plain sample image
+(pass.SetDebugSample), averaged, and half and half with the plain samples' average where they
+differ (issue 22), and bad multisamples values raise ValueError.
 Needs a display (ctest runs under scripts/with-xvfb.sh). Usage: TestPythonRenderPass.py OUT_DIR"""
 import os
 import sys
@@ -194,6 +197,47 @@ for method in ("mlaa", "dlaa"):
     check(vtkmlaa.render_still(renderer, frames=4) == 1, method + ": already converged: 1 render")
     vtkmlaa.disable(renderer)
     check(vtkmlaa.render_still(renderer) == 1, method + ": without a pass: 1 render")
+
+
+# Multisampled: the method on each sample set, averaged.
+for method in ("mlaa", "dlaa"):
+    window, renderer = scene()
+    vtkmlaa.enable(renderer, method=method)
+    single = screenshot(window)
+    vtkmlaa.disable(renderer)
+    aa_pass = vtkmlaa.enable(renderer, method=method, multisamples=4)
+    shot = screenshot(window)
+    samples = aa_pass.GetRenderedMultiSamples()
+    check(aa_pass.GetMultiSamples() == 4 and samples >= 2,
+          "%s: multisamples=4 sets the pass (%d samples used)" % (method, samples))
+    check(window.GetMultiSamples() == 0, method + ": the window's own multisampling is off")
+    sample_images = []
+    for s in range(samples):
+        aa_pass.SetDebugSample(s)
+        sample_images.append(screenshot(window))
+    aa_pass.SetDebugSample(-1)
+    # The filter on each sample, averaged; where a pixel's samples differ, half and half with
+    # the plain samples' average (the pass's resolve).
+    filtered = numpy.mean([vtkmlaa.antialias_array(image, method=method).astype(float)
+                           for image in sample_images], axis=0)
+    plain_average = numpy.mean([image.astype(float) for image in sample_images], axis=0)
+    differ = numpy.zeros(plain_average.shape[:2], dtype=bool)
+    for image in sample_images[1:]:
+        differ |= (image != sample_images[0]).any(axis=2)
+    expected = numpy.where(differ[:, :, None], 0.5 * (filtered + plain_average), filtered)
+    share = within(shot, numpy.round(expected))
+    print("%s, multisamples=4: %.4f %% of pixels within 2/255 of the filter per sample, resolved"
+          % (method, 100 * share))
+    check(share >= 0.995, "%s: multisampled pass and filter agree on %.4f" % (method, share))
+    check((shot != single).any(axis=2).sum() > 100, method + ": differs from the single-sample pass")
+    vtkmlaa.disable(renderer)
+    for bad in (-1, 17, 2.5, True, "4"):
+        try:
+            vtkmlaa.enable(renderer, method=method, multisamples=bad)
+            check(False, "%s: multisamples=%r accepted" % (method, bad))
+        except ValueError:
+            pass
+    check(renderer.GetPass() is None, method + ": a refused enable() leaves no pass")
     window.Finalize()
 
 check.finish()
