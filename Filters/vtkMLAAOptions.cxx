@@ -14,7 +14,7 @@ namespace
 {
 const char* const EdgeDetectionNames[] = { "luma", "color", "depth", "lab" };
 const char* const DebugOutputNames[] = { "none", "edges", "weights" };
-const char* const PresetNames[] = { "low", "medium", "high", "ultra" };
+const char* const PresetNames[] = { "low", "medium", "high", "ultra", "max" };
 
 // The quality settings of each preset (see the class description).
 struct PresetSettings
@@ -33,6 +33,7 @@ const PresetSettings PresetTable[] = {
   { 0.1, 2.0, vtkMLAAOptions::LUMA, 8, true, false, true, false },   // medium
   { 0.1, 2.0, vtkMLAAOptions::LAB, 16, true, false, true, false },   // high
   { 0.05, 2.0, vtkMLAAOptions::LAB, 32, true, false, true, false },  // ultra
+  { 0.05, 2.0, vtkMLAAOptions::LAB, 32, true, false, true, true },   // max
 };
 }
 
@@ -68,7 +69,7 @@ const char* vtkMLAAOptions::GetPresetAsString(int preset)
   {
     return "custom";
   }
-  return (preset >= LOW && preset <= ULTRA) ? PresetNames[preset] : "unknown";
+  return (preset >= LOW && preset <= MAX) ? PresetNames[preset] : "unknown";
 }
 
 //------------------------------------------------------------------------------
@@ -80,9 +81,9 @@ int vtkMLAAOptions::GetPresetFromString(const char* name)
 //------------------------------------------------------------------------------
 void vtkMLAAOptions::SetPreset(int preset)
 {
-  if (preset < LOW || preset > ULTRA)
+  if (preset < LOW || preset > MAX)
   {
-    vtkErrorMacro("SetPreset: " << preset << " is not a preset (LOW, MEDIUM, HIGH or ULTRA).");
+    vtkErrorMacro("SetPreset: " << preset << " is not a preset (LOW, MEDIUM, HIGH, ULTRA or MAX).");
     return;
   }
   const PresetSettings& p = PresetTable[preset];
@@ -99,7 +100,7 @@ void vtkMLAAOptions::SetPreset(int preset)
 //------------------------------------------------------------------------------
 int vtkMLAAOptions::GetPreset()
 {
-  for (int preset = LOW; preset <= ULTRA; ++preset)
+  for (int preset = LOW; preset <= MAX; ++preset)
   {
     const PresetSettings& p = PresetTable[preset];
     if (this->Threshold == p.Threshold && this->LocalContrastFactor == p.LocalContrastFactor &&

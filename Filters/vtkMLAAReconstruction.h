@@ -112,6 +112,14 @@ inline void CombineUnlike(const unsigned char* __restrict toE,
   }
 }
 
+/** The number of bits set in an 8-bit mask. */
+inline int Popcount8(unsigned int m)
+{
+  m = (m & 0x55u) + ((m >> 1) & 0x55u);
+  m = (m & 0x33u) + ((m >> 2) & 0x33u);
+  return static_cast<int>((m & 0x0Fu) + (m >> 4));
+}
+
 /** What reconstruction needs of a slice (vtkMLAAStages.h: SliceSetup::GetReconstruction). */
 struct ReconstructionSettings
 {
@@ -133,8 +141,12 @@ struct ReconstructionSettings
  * colour: the shape), and the coverage rule (vtkMLAATopology::GetCoverage of the pixels of its
  * window of radius vtkMLAATopology::CoverageRadius not unlike the shape's first pixel) gives it
  * a share above 0; it then moves by that share towards the mean of its X pixels, every
- * component, rounded to nearest for integer types. Every other pixel is copied. All decisions
- * read the original pixels.
+ * component, rounded to nearest for integer types (a gap). A pixel that is not a gap but is
+ * unlike one of its neighbours that is, whose n exceeds its number of unlike neighbours, keeps
+ * vtkMLAATopology::GetLineShare(n) of its colour and takes the rest from that gap (the thin
+ * line rule; the largest n, the first in neighbour order among equals). Every other pixel is
+ * copied. All decisions read the original pixels; reads reach
+ * vtkMLAATopology::ReconstructionReach beyond a pixel.
  * Must match Rendering/glsl/vtkMLAAReconstructionFS.glsl.
  */
 template <typename T>
@@ -170,9 +182,12 @@ void Reconstruct(const ReconstructionSettings& setup, const T* input, vtkIdType 
     {
       return;
     }
-    // The LAB features of rows begin - R .. end - 1 + R (clamped; R =
-    // vtkMLAATopology::CoverageRadius, the coverage window's reach), row i at index i - first.
-    const int radius = vtkMLAATopology::CoverageRadius;
+    // A pixel's output depends on whether its neighbours are gaps (the thin line rule), and a
+    // gap on its coverage window: the selection is made for the task's rows and one more each
+    // way ("selection rows"), whose windows reach R = vtkMLAATopology::CoverageRadius further.
+    // The LAB features of rows begin - radius .. end - 1 + radius (clamped; radius = R + 1), row
+    // i at index i - first.
+    const int radius = vtkMLAATopology::CoverageRadius + 1;
     const int first = static_cast<int>(begin) - radius;
     const int rows = static_cast<int>(end - begin) + 2 * radius;
     const size_t rowSize = plane * count;
@@ -184,14 +199,15 @@ void Reconstruct(const ReconstructionSettings& setup, const T* input, vtkIdType 
         reader.Row(pixel(0, y), w, nullptr, band.get() + rowSize * i);
       }
     };
-    // The rows the neighbour masks read (one past the task's rows each way) now; the outer
-    // rows, which only the coverage windows of selected pixels read, when the first one is.
-    readBandRows(radius - 1, rows - radius + 1);
+    // The rows the neighbour masks of the selection rows read (one past them each way) now; the
+    // outer rows, which only the coverage windows of selected pixels read, when the first one
+    // is.
+    readBandRows(radius - 2, rows - radius + 2);
     bool windowRowsRead = false;
     // Whether pixels are unlike their neighbours, each pair compared once (Unlike is
     // symmetric): along each band row (x, x + 1), and between band rows i and i + 1 (x with x,
     // x + 1 and x - 1 above it), over the columns where both pixels exist. Branch-free loops
-    // that vectorise.
+    // that vectorise. (Only the rows that the neighbour masks of the selection rows read.)
     const size_t uw = static_cast<size_t>(w);
     std::vector<unsigned char> along(rows * uw, 0);
     std::vector<unsigned char> up((rows - 1) * uw, 0);
@@ -207,12 +223,10 @@ void Reconstruct(const ReconstructionSettings& setup, const T* input, vtkIdType 
         UnlikeMasks<Acc, false>(a, b, plane, threshold2, 1, from, to, out);
       }
     };
-    // (Only the rows that the neighbour masks of rows begin .. end - 1 read: the band's other
-    // rows serve the coverage windows alone.)
-    for (int i = radius - 1; i < rows - radius; ++i)
+    for (int i = radius - 2; i <= rows - radius; ++i)
     {
       const Acc* here = band.get() + rowSize * i;
-      if (i >= radius)
+      if (i >= radius - 1)
       {
         compare(here, here + 1, 0, w - 1, along.data() + i * uw);
       }
@@ -221,20 +235,28 @@ void Reconstruct(const ReconstructionSettings& setup, const T* input, vtkIdType 
       compare(here, above + 1, 0, w - 1, upRight.data() + i * uw);
       compare(here, above - 1, 1, w, upLeft.data() + i * uw);
     }
-    std::vector<unsigned char> masks(uw);
-    for (vtkIdType row = begin; row < end; ++row)
+    // The selection rows: image rows begin - 1 .. end (those outside the image are never
+    // read), selection row s at image row begin - 1 + s. Their neighbour masks, and for each
+    // selected pixel the number of its window's pixels alike the shape (0 for the others).
+    const int selectionRows = static_cast<int>(end - begin) + 2;
+    std::vector<unsigned char> masks(selectionRows * uw, 0);
+    std::vector<unsigned char> shapeCounts(selectionRows * uw, 0);
+    auto neighbourFeatures = [&](int j, int x, int bit) {
+      const int nx = std::min(std::max(x + offsets[bit][0], 0), w - 1);
+      return band.get() + rowSize * (j + offsets[bit][1]) + nx;
+    };
+    for (int s = 0; s < selectionRows; ++s)
     {
-      const int y = static_cast<int>(row);
-      T* out = output + static_cast<size_t>(y) * w * c;
-      std::copy(pixel(0, y), pixel(0, y) + static_cast<size_t>(w) * c, out);
-      // The features of the rows below, at and above y.
+      const int y = static_cast<int>(begin) - 1 + s;
+      if (y < 0 || y >= h)
+      {
+        continue;
+      }
       const int j = y - first; // band row of y
-      const Acc* around[3] = { band.get() + rowSize * (j - 1), band.get() + rowSize * j,
-        band.get() + rowSize * (j + 1) };
       // The masks of the unlike neighbours of the inner columns from the comparisons above
       // (bits as vtkMLAATopology: E, NE, N, NW, W, SW, S, SE), then those of the first and
       // last columns, whose reads are clamped.
-      unsigned char* mask = masks.data();
+      unsigned char* mask = masks.data() + s * uw;
       const unsigned char* toE = along.data() + j * uw;
       const unsigned char* toN = up.data() + j * uw;
       const unsigned char* toNE = upRight.data() + j * uw;
@@ -243,17 +265,18 @@ void Reconstruct(const ReconstructionSettings& setup, const T* input, vtkIdType 
       const unsigned char* toSW = upRight.data() + (j - 1) * uw; // from (x - 1, y - 1)
       const unsigned char* toSE = upLeft.data() + (j - 1) * uw;  // from (x + 1, y - 1)
       CombineUnlike(toE, toNE, toN, toNW, toSW, toS, toSE, 1, w - 1, mask);
+      const Acc* centre = band.get() + rowSize * j;
       for (int x : { 0, w - 1 })
       {
         mask[x] = 0; // (a single column is done twice, to the same result)
         for (int bit = 0; bit < 8; ++bit)
         {
-          const int nx = std::min(std::max(x + offsets[bit][0], 0), w - 1);
-          mask[x] |= Unlike(around[1] + x, around[1 + offsets[bit][1]] + nx, plane, count, threshold2)
+          mask[x] |= Unlike(centre + x, neighbourFeatures(j, x, bit), plane, count, threshold2)
             ? static_cast<unsigned char>(1 << bit)
             : 0;
         }
       }
+      unsigned char* shapeCount = shapeCounts.data() + s * uw;
       for (int x = 0; x < w; ++x)
       {
         if ((x & 7) == 0 && x + 8 <= w)
@@ -271,22 +294,20 @@ void Reconstruct(const ReconstructionSettings& setup, const T* input, vtkIdType 
         {
           continue;
         }
-        int neighbourX[8];
         const Acc* features[8];
         for (int bit = 0; bit < 8; ++bit)
         {
-          neighbourX[bit] = std::min(std::max(x + offsets[bit][0], 0), w - 1);
-          features[bit] = around[1 + offsets[bit][1]] + neighbourX[bit];
+          features[bit] = neighbourFeatures(j, x, bit);
         }
         const int unlike = mask[x];
         // The shape is one colour: its pixels are pairwise alike.
         bool oneColour = true;
-        for (int i = 0; i < 8 && oneColour; ++i)
+        for (int a = 0; a < 8 && oneColour; ++a)
         {
-          for (int j = i + 1; j < 8 && oneColour; ++j)
+          for (int b = a + 1; b < 8 && oneColour; ++b)
           {
-            if (((unlike >> i) & (unlike >> j) & 1) &&
-              Unlike(features[i], features[j], plane, count, threshold2))
+            if (((unlike >> a) & (unlike >> b) & 1) &&
+              Unlike(features[a], features[b], plane, count, threshold2))
             {
               oneColour = false;
             }
@@ -305,15 +326,16 @@ void Reconstruct(const ReconstructionSettings& setup, const T* input, vtkIdType 
         }
         if (!windowRowsRead)
         {
-          readBandRows(0, radius - 1);
-          readBandRows(rows - radius + 1, rows);
+          readBandRows(0, radius - 2);
+          readBandRows(rows - radius + 2, rows);
           windowRowsRead = true;
         }
+        const int reach = vtkMLAATopology::CoverageRadius;
         int shapePixels = 0;
-        for (int dy = -radius; dy <= radius; ++dy)
+        for (int dy = -reach; dy <= reach; ++dy)
         {
           const Acc* windowRow = band.get() + rowSize * (j + dy);
-          for (int dx = -radius; dx <= radius; ++dx)
+          for (int dx = -reach; dx <= reach; ++dx)
           {
             const int wx = std::min(std::max(x + dx, 0), w - 1);
             shapePixels += ((dx != 0 || dy != 0) &&
@@ -322,34 +344,99 @@ void Reconstruct(const ReconstructionSettings& setup, const T* input, vtkIdType 
               : 0;
           }
         }
-        const double coverage = vtkMLAATopology::GetCoverage(shapePixels);
-        if (coverage <= 0.0)
+        shapeCount[x] =
+          vtkMLAATopology::GetCoverage(shapePixels) > 0.0 ? static_cast<unsigned char>(shapePixels) : 0;
+      }
+    }
+    for (vtkIdType row = begin; row < end; ++row)
+    {
+      const int y = static_cast<int>(row);
+      const int s = y - static_cast<int>(begin) + 1; // selection row of y
+      T* out = output + static_cast<size_t>(y) * w * c;
+      std::copy(pixel(0, y), pixel(0, y) + static_cast<size_t>(w) * c, out);
+      const unsigned char* mask = masks.data() + s * uw;
+      for (int x = 0; x < w; ++x)
+      {
+        if ((x & 7) == 0 && x + 8 <= w)
+        {
+          std::uint64_t eight;
+          std::memcpy(&eight, mask + x, sizeof(eight));
+          if (eight == 0)
+          {
+            x += 7;
+            continue;
+          }
+        }
+        const int unlike = mask[x];
+        if (!unlike)
         {
           continue;
         }
-        // The pixel plus the coverage's share of the difference to the mean of the shape's
-        // pixels, every component.
-        double sum[4] = { 0, 0, 0, 0 };
-        int n = 0;
+        const T* self = pixel(x, y);
+        const int shapePixels = shapeCounts[s * uw + x];
+        if (shapePixels > 0)
+        {
+          // A gap: the pixel plus the coverage's share of the difference to the mean of the
+          // shape's pixels, every component.
+          const double coverage = vtkMLAATopology::GetCoverage(shapePixels);
+          double sum[4] = { 0, 0, 0, 0 };
+          int n = 0;
+          for (int bit = 0; bit < 8; ++bit)
+          {
+            if ((unlike >> bit) & 1)
+            {
+              const int nx = std::min(std::max(x + offsets[bit][0], 0), w - 1);
+              const int ny = std::min(std::max(y + offsets[bit][1], 0), h - 1);
+              const T* q = pixel(nx, ny);
+              for (int k = 0; k < c; ++k)
+              {
+                sum[k] += static_cast<double>(q[k]);
+              }
+              ++n;
+            }
+          }
+          for (int k = 0; k < c; ++k)
+          {
+            const double value = static_cast<double>(self[k]);
+            out[static_cast<size_t>(x) * c + k] =
+              ConvertBlended<T>(value + coverage * (sum[k] / n - value));
+          }
+          continue;
+        }
+        // The thin line rule (vtkMLAATopology::GetLineShare): a pixel of the shape of a gap
+        // among its unlike neighbours, whose window holds more shape pixels than its eight
+        // neighbours (the line goes on beyond them), keeps the line's share of its colour, the
+        // rest going to the gap's colour (the gap with the most shape pixels in its window, the
+        // first in bit order among equals).
+        int best = 0;
+        int bestX = 0, bestY = 0;
         for (int bit = 0; bit < 8; ++bit)
         {
           if ((unlike >> bit) & 1)
           {
+            const int nx = std::min(std::max(x + offsets[bit][0], 0), w - 1);
             const int ny = std::min(std::max(y + offsets[bit][1], 0), h - 1);
-            const T* q = pixel(neighbourX[bit], ny);
-            for (int k = 0; k < c; ++k)
+            const size_t g = (ny - static_cast<int>(begin) + 1) * uw + nx;
+            const int count8 = shapeCounts[g];
+            if (count8 > best && count8 > Popcount8(masks[g]))
             {
-              sum[k] += static_cast<double>(q[k]);
+              best = count8;
+              bestX = nx;
+              bestY = ny;
             }
-            ++n;
           }
         }
-        const T* self = pixel(x, y);
+        const double share = best > 0 ? vtkMLAATopology::GetLineShare(best) : 1.0;
+        if (share >= 1.0)
+        {
+          continue;
+        }
+        const T* gap = pixel(bestX, bestY);
         for (int k = 0; k < c; ++k)
         {
           const double value = static_cast<double>(self[k]);
           out[static_cast<size_t>(x) * c + k] =
-            ConvertBlended<T>(value + coverage * (sum[k] / n - value));
+            ConvertBlended<T>(value + (1.0 - share) * (static_cast<double>(gap[k]) - value));
         }
       }
     }

@@ -87,8 +87,9 @@ Halo ComputeHalo(vtkMLAAOptions* options)
   halo.Search = options->GetSearchReach() * (options->GetCornerExtrapolation() ? 2 : 1) +
     (options->GetDiagonalDetection() ? 2 : 0);
   halo.Edges = options->GetLocalContrastFactor() > 0.0 ? 2 : 0;
-  // A reconstructed pixel depends on its coverage window (vtkMLAATopology::CoverageRadius).
-  halo.Reconstruction = options->GetReconstruction() ? vtkMLAATopology::CoverageRadius : 0;
+  // A reconstructed pixel depends on its neighbours' neighbours and their coverage windows
+  // (vtkMLAATopology::ReconstructionReach).
+  halo.Reconstruction = options->GetReconstruction() ? vtkMLAATopology::ReconstructionReach : 0;
   return halo;
 }
 

@@ -75,9 +75,10 @@ using namespace vtkAntialiasingKit;
  * - Edges: an edgel compares its two pixels, which the search reach above already counts; local
  *   contrast adaptation also looks at the other boundaries of those pixels, one pixel further,
  *   which is padded by 2.
- * - Reconstruction: vtkMLAATopology::CoverageRadius (3) with vtkMLAAOptions::Reconstruction (a
- *   reconstructed pixel depends on its eight neighbours, Biri et al. section 4.3, and on the
- *   pixels of its coverage window), else 0.
+ * - Reconstruction: vtkMLAATopology::ReconstructionReach (4) with
+ *   vtkMLAAOptions::Reconstruction (a reconstructed pixel depends on its eight neighbours, Biri
+ *   et al. section 4.3, on whether they are gaps, the thin line rule, and on their coverage
+ *   windows of radius 3), else 0.
  */
 struct Halo
 {

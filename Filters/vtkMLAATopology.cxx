@@ -38,6 +38,17 @@ double vtkMLAATopology::GetCoverage(int shapePixels)
 }
 
 //------------------------------------------------------------------------------
+double vtkMLAATopology::GetLineShare(int shapePixels)
+{
+  const int columns = 2 * CoverageRadius + 1;
+  if (shapePixels <= 0 || 2 * shapePixels > columns)
+  {
+    return 1.0;
+  }
+  return static_cast<double>(shapePixels) / columns;
+}
+
+//------------------------------------------------------------------------------
 const float* vtkMLAATopology::GetCoverageTable()
 {
   static const std::array<float, CoverageTableSize> table = [] {
@@ -45,6 +56,20 @@ const float* vtkMLAATopology::GetCoverageTable()
     for (int n = 0; n < CoverageTableSize; ++n)
     {
       t[n] = static_cast<float>(GetCoverage(n));
+    }
+    return t;
+  }();
+  return table.data();
+}
+
+//------------------------------------------------------------------------------
+const float* vtkMLAATopology::GetLineShareTable()
+{
+  static const std::array<float, CoverageTableSize> table = [] {
+    std::array<float, CoverageTableSize> t{};
+    for (int n = 0; n < CoverageTableSize; ++n)
+    {
+      t[n] = static_cast<float>(GetLineShare(n));
     }
     return t;
   }();

@@ -112,6 +112,7 @@ public:
    *   of the way to the mean colour of its unlike neighbours: n / (2 (2 R + 1)).
    * Filling gaps with the full colour (the paper's rule) made restored lines too bright and
    * too thick, and filled the space between lines passing close by.
+   * The pixels of the line beside a gap follow the thin line rule (GetLineShare).
    */
   static constexpr int CoverageRadius = 3;
 
@@ -122,12 +123,42 @@ public:
   static double GetCoverage(int shapePixels);
 
   /**
+   * The thin line rule: the share of its colour (0 to 1) that a pixel of the shape of a gap
+   * keeps, when the gap's window holds `shapePixels` pixels alike the shape (n, as for
+   * GetCoverage). Point sampling lights a pixel of a line w < 1 pixel wide with the line's full
+   * colour where the reference shows the share of the pixel that the line covers. For
+   * w <= 1/2 the line's band, which passes within w / 2 of the lit pixel's centre, lies inside
+   * the pixel, which it covers by exactly w: the share is the line's density
+   * w = n / (2 R + 1) for 2 n <= 2 R + 1, and the pixel moves the rest of the way to the gap's
+   * colour. Wider lines spill into the next row or column, which MLAA's blending already
+   * models: there (and for n = 0) the share is 1, the pixel keeps its colour. The back ends
+   * apply it to a pixel unlike a gap among its neighbours (it is a pixel of the gap's shape)
+   * when the gap's n is more than the gap's unlike neighbours (the line goes on beyond them:
+   * two dots side by side are left alone); among several gaps, the one with the largest n, the
+   * first in neighbour order among equals.
+   */
+  static double GetLineShare(int shapePixels);
+
+  /**
+   * The number of rows and columns beyond a pixel that reconstruction reads for it: its
+   * neighbours, which may be gaps (the thin line rule), and their coverage windows,
+   * CoverageRadius + 1.
+   */
+  static constexpr int ReconstructionReach = CoverageRadius + 1;
+
+  /**
    * GetCoverage for 0 to (2 CoverageRadius + 1)^2 - 1 shape pixels, as floats for a shader;
    * the pointer stays valid for the life of the program.
    */
   static const float* GetCoverageTable();
 
-  /** The number of entries of GetCoverageTable(): (2 CoverageRadius + 1)^2. */
+  /**
+   * GetLineShare for 0 to (2 CoverageRadius + 1)^2 - 1 shape pixels, as floats for a shader;
+   * the pointer stays valid for the life of the program.
+   */
+  static const float* GetLineShareTable();
+
+  /** The number of entries of GetCoverageTable() and GetLineShareTable(): (2 CoverageRadius + 1)^2. */
   static constexpr int CoverageTableSize = (2 * CoverageRadius + 1) * (2 * CoverageRadius + 1);
 
   /**

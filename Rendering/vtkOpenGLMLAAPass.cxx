@@ -459,10 +459,12 @@ void vtkOpenGLMLAAPass::SetReconstructionUniforms(vtkShaderProgram* program)
   program->SetUniform1iv("selectionTable", 8, words);
   // The coverage rule's window and shares, from the same generator.
   static_assert(vtkMLAATopology::CoverageTableSize == 49,
-    "coverageTable in vtkMLAAReconstructionFS.glsl holds 49 entries");
+    "coverageTable and lineShareTable in vtkMLAAReconstructionFS.glsl hold 49 entries");
   program->SetUniformi("coverageRadius", vtkMLAATopology::CoverageRadius);
   program->SetUniform1fv(
     "coverageTable", vtkMLAATopology::CoverageTableSize, vtkMLAATopology::GetCoverageTable());
+  program->SetUniform1fv(
+    "lineShareTable", vtkMLAATopology::CoverageTableSize, vtkMLAATopology::GetLineShareTable());
 }
 
 //------------------------------------------------------------------------------

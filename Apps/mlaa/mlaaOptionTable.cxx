@@ -107,7 +107,7 @@ std::vector<std::string> DebugOutputNames()
 std::vector<std::string> PresetNames()
 {
   std::vector<std::string> names;
-  for (int p = vtkMLAAOptions::LOW; p <= vtkMLAAOptions::ULTRA; ++p)
+  for (int p = vtkMLAAOptions::LOW; p <= vtkMLAAOptions::MAX; ++p)
   {
     names.emplace_back(vtkMLAAOptions::GetPresetAsString(p));
   }

@@ -24,7 +24,7 @@
 //   variants    (unless --no-variants) vtkImageMLAA with each feature of "Morphological
 //               antialiasing and topological reconstruction" over the medium preset (+lab, +steps32,
 //               +steps128, +recon), the three together (+all3) and each preset (P-low ...
-//               P-ultra), reported as time / Gaussian;
+//               P-max), reported as time / Gaussian;
 // for each thread count n (default 1 and 2), and reports the median time per operation and the
 // ratios MLAA / Gaussian and MLAA / copy, for a reused filter and for a new filter per image.
 #include "BenchmarkUtilities.h"
@@ -69,7 +69,7 @@ void Usage(const char* program)
             << "  --repetitions N     timed repetitions per operation and thread count (default 30)\n"
             << "  --warmup N          untimed repetitions first (default 3)\n"
             << "  --threads a,b       thread counts (default 1,2)\n"
-            << "  --no-variants       do not time the variants (+lab ... P-ultra)\n"
+            << "  --no-variants       do not time the variants (+lab ... P-max)\n"
             << mlaaBenchmark::MLAAOptionsUsage();
 }
 

@@ -23,7 +23,7 @@
 // MLAA-<steps>-doubling of the same rounds, reported as overhead / overhead(FXAA-pass).
 // Variants (unless --no-variants): the MLAA pass with each feature of "Morphological antialiasing
 // and topological reconstruction" over the medium preset (+lab, +steps32, +steps128, +recon), the
-// three together (+all3) and each preset (P-low ... P-ultra), reported the same way.
+// three together (+all3) and each preset (P-low ... P-max), reported the same way.
 // Multisampling (--multisamples): the window with SetMultiSamples(2, 4, 8) and no pass (MSAA2,
 // MSAA4, MSAA8), and the passes with SetMultiSamples(2, 4, 8) (MLAA-S2 ... MLAA-S8, DLAA-S4),
 // reported as frame time / frame time of MSAA4 (medians of the same rounds), with the sample
@@ -139,7 +139,7 @@ void Usage(const char* program)
             << "                   clock: for llvmpipe (whose GL work runs on the process's\n"
             << "                   threads) on a machine shared with other work; not for a GPU\n"
             << "  --no-variants    leave out the MLAA pass with each feature and preset (+lab ...\n"
-            << "                   P-ultra)\n"
+            << "                   P-max)\n"
             << "  --no-long-lines  leave out the MLAA pass at 8, 32 and 128 steps with the search\n"
             << "                   loop and with recursive doubling\n"
             << "  --multisamples   also time 2x, 4x and 8x MSAA and the passes with 2, 4 and 8\n"

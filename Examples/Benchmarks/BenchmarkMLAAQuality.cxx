@@ -22,7 +22,7 @@
 //   variants   (unless --no-variants) MLAA-pass with each feature of "Morphological
 //              antialiasing and topological reconstruction" over the medium preset (+lab, +steps32,
 //              +steps128, +recon), the three together (+all3) and each preset (P-low ...
-//              P-ultra);
+//              P-max);
 // all read back as RGB. Per method it reports, against the reference:
 //   AAR      = 1 - MSE_E(method, reference) / MSE_E(none, reference), over the set E of pixels
 //              where none and reference differ by more than 4/255 in some channel;
@@ -408,7 +408,7 @@ void Usage(const char* program)
     << "  --write-full      also write the full-size render of every method per scene\n"
     << "  --no-variants     measure only the methods above, not the MLAA-pass variants:\n"
     << "                    +lab, +steps32, +steps128, +recon (each over the medium preset), +all3\n"
-    << "                    (the three), P-low, P-medium, P-high, P-ultra (the presets)\n"
+    << "                    (the three), P-low, P-medium, P-high, P-ultra, P-max (the presets)\n"
     << "For MLAA-CPU and MLAA-pass alike, " << mlaaBenchmark::MLAAOptionsUsage()
     << "Mosaic panel order, left to right: none | FXAA | MSAA4 | MLAA-CPU | MLAA-pass | "
        "DLAA-pass | MLAA-S4 | P-high | P-ultra | reference\n";

@@ -218,6 +218,7 @@ const std::vector<Variant>& Variants()
     { "P-medium", [](vtkMLAAOptions* o) { o->SetPresetToMedium(); } },
     { "P-high", [](vtkMLAAOptions* o) { o->SetPresetToHigh(); } },
     { "P-ultra", [](vtkMLAAOptions* o) { o->SetPresetToUltra(); } },
+    { "P-max", [](vtkMLAAOptions* o) { o->SetPresetToMax(); } },
   };
   return variants;
 }

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Gallery: antialias an image file with vtkImageMLAA.
 //
-//   mlaa-gallery-antialias-image INPUT OUTPUT [--preset low|medium|high|ultra]
+//   mlaa-gallery-antialias-image INPUT OUTPUT [--preset low|medium|high|ultra|max]
 //
 // Reads INPUT with the VTK reader that recognises it (PNG, JPEG, BMP, PNM, ...), runs
 // vtkImageMLAA on it and writes OUTPUT in the format its extension names (.png, .jpg, .bmp,
@@ -23,7 +23,7 @@ int main(int argc, char* argv[])
 {
   if (argc != 3 && !(argc == 5 && std::string(argv[3]) == "--preset"))
   {
-    std::cerr << "usage: " << argv[0] << " INPUT OUTPUT [--preset low|medium|high|ultra]\n";
+    std::cerr << "usage: " << argv[0] << " INPUT OUTPUT [--preset low|medium|high|ultra|max]\n";
     return 2;
   }
   const std::string input = argv[1], output = argv[2];

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Gallery: antialias every image of a directory.
 //
-//   mlaa-gallery-batch INPUT_DIR OUTPUT_DIR [--preset low|medium|high|ultra]
+//   mlaa-gallery-batch INPUT_DIR OUTPUT_DIR [--preset low|medium|high|ultra|max]
 //
 // Each image file of INPUT_DIR (what VTK's readers recognise: PNG, JPEG, BMP, PNM) goes
 // through one vtkImageMLAA, set up once and reused, into OUTPUT_DIR under the same name and
@@ -32,7 +32,7 @@ int main(int argc, char* argv[])
   if (argc != 3 && !(argc == 5 && std::string(argv[3]) == "--preset"))
   {
     std::cerr << "usage: " << argv[0]
-              << " INPUT_DIR OUTPUT_DIR [--preset low|medium|high|ultra]\n";
+              << " INPUT_DIR OUTPUT_DIR [--preset low|medium|high|ultra|max]\n";
     return 2;
   }
   const fs::path inputDir = argv[1], outputDir = argv[2];

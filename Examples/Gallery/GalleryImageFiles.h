@@ -27,14 +27,14 @@
 
 namespace gallery
 {
-// Applies the preset `name` (low, medium, high, ultra) to `options`; false (and a message) for
-// an unknown name.
+// Applies the preset `name` (low, medium, high, ultra, max) to `options`; false (and a message)
+// for an unknown name.
 inline bool SetPreset(vtkMLAAOptions* options, const char* name)
 {
   const int preset = vtkMLAAOptions::GetPresetFromString(name);
   if (preset < 0)
   {
-    std::cerr << name << ": not a preset (low, medium, high, ultra)\n";
+    std::cerr << name << ": not a preset (low, medium, high, ultra, max)\n";
     return false;
   }
   options->SetPreset(preset);

@@ -47,6 +47,7 @@ cases = [
       "--local-contrast", "0", "--dominant-blending", "off"]),
     ("corners", MLAAAntialiasing, dict(CornerExtrapolation=1), ["--corners", "on"]),
     ("ultra", MLAAAntialiasing, dict(QualityPreset="Ultra", Threshold=0.9), ["--preset", "ultra"]),
+    ("max", MLAAAntialiasing, dict(QualityPreset="Max"), ["--preset", "max"]),
     ("dlaa-defaults", DLAAAntialiasing, {}, ["--method", "dlaa"]),
     ("dlaa-custom", DLAAAntialiasing,
      dict(Epsilon=0.05, Lambda=5, LumaFunction="Green", LongEdges=0),

@@ -13,7 +13,8 @@
  *   u8  scalar type (an index into ScalarTypes)       u8  components - 1 (mod 6: 1 to 6)
  *   u16 width - 1 (mod 512)   u16 height - 1 (mod 512)   u8 depth - 1 (mod 3)
  *   i8  x0, y0, z0: where the extent starts           (width x height x depth at most 2^14)
- *   MLAA: u8 preset (0-3: LOW to ULTRA, which then replaces the quality fields; else none),
+ *   MLAA: u8 preset (0-3: LOW to ULTRA, 5: MAX, which then replaces the quality fields; else,
+ *      4 in the seeds, none),
  *         u8 threshold (/255), u8 local contrast factor (/2.55), u8 edge detection (mod 4),
  *         u8 max search steps - 1 (mod 128), u8 switches (bit 0 diagonals, 1 corner
  *         extrapolation, 2 dominant-direction blending, 3 premultiplied alpha,
@@ -293,9 +294,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const int steps = in.U8() % 128 + 1;
   const int switches = in.U8();
   const int debug = in.U8() % 3;
-  if (preset < 4)
+  if (preset < 4 || preset == 5)
   {
-    mlaaOptions->SetPreset(preset);
+    mlaaOptions->SetPreset(preset < 4 ? preset : vtkMLAAOptions::MAX);
   }
   else
   {

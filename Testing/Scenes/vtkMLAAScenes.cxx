@@ -17,6 +17,7 @@
 #include "vtkLineSource.h"
 #include "vtkLookupTable.h"
 #include "vtkMath.h"
+#include "vtkMinimalStandardRandomSequence.h"
 #include "vtkNew.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointSource.h"
@@ -574,6 +575,57 @@ void Orbit(vtkRenderer* renderer)
   renderer->ResetCameraClippingRange();
 }
 
+void PointCloud(vtkRenderer* renderer)
+{
+  // Particles drawn as square points of 1, 2 and 3 pixels, as a point cloud or a particle
+  // tracer's output is shown: over the plain background on the left, and over a lit, shaded
+  // sphere (smooth shading behind them) on the right. Clouds of random points from fixed seeds,
+  // so that every program renders the same picture.
+  renderer->SetBackground(0.95, 0.95, 0.97);
+  vtkNew<vtkSphereSource> backdrop;
+  backdrop->SetThetaResolution(64);
+  backdrop->SetPhiResolution(32);
+  backdrop->SetRadius(1.5);
+  backdrop->SetCenter(1.5, 0.0, -1.5);
+  const double stone[3] = { 0.55, 0.6, 0.68 };
+  AddActor(renderer, backdrop, stone);
+  struct Cloud
+  {
+    double Center[3];
+    double Radius;
+    int Points;
+    float Size;
+    double Color[3];
+    int Seed;
+  };
+  const Cloud clouds[] = {
+    { { -1.6, 0.4, 0.0 }, 1.0, 900, 1.0f, { 0.1, 0.15, 0.4 }, 11 },
+    { { -1.2, -0.6, 0.0 }, 0.9, 300, 2.0f, { 0.8, 0.35, 0.05 }, 12 },
+    { { -0.4, 0.2, 0.0 }, 0.8, 120, 3.0f, { 0.2, 0.55, 0.25 }, 13 },
+    { { 1.5, 0.2, 0.2 }, 1.1, 900, 1.0f, { 0.98, 0.95, 0.6 }, 14 },
+    { { 1.4, -0.4, 0.2 }, 1.0, 300, 2.0f, { 0.7, 0.1, 0.15 }, 15 },
+    { { 1.8, 0.5, 0.2 }, 0.8, 120, 3.0f, { 0.05, 0.05, 0.1 }, 16 },
+  };
+  for (const Cloud& cloud : clouds)
+  {
+    vtkNew<vtkMinimalStandardRandomSequence> random;
+    random->SetSeed(cloud.Seed);
+    vtkNew<vtkPointSource> points;
+    points->SetRandomSequence(random);
+    points->SetCenter(cloud.Center[0], cloud.Center[1], cloud.Center[2]);
+    points->SetRadius(cloud.Radius);
+    points->SetNumberOfPoints(cloud.Points);
+    points->SetDistributionToUniform();
+    auto actor = AddActor(renderer, points, cloud.Color);
+    actor->GetProperty()->SetRepresentationToPoints();
+    actor->GetProperty()->SetPointSize(cloud.Size);
+    actor->GetProperty()->LightingOff();
+  }
+  renderer->GetActiveCamera()->SetPosition(0.0, 0.0, 7.0);
+  renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->ResetCameraClippingRange();
+}
+
 struct Scene
 {
   std::string Description;
@@ -595,6 +647,8 @@ const std::vector<std::pair<std::string, Scene>>& Scenes()
     { "horizon", { "long edges at 1 to 3 degrees off horizontal and vertical", Horizon } },
     { "thin", { "1-pixel iso-lines, sub-pixel streamline tubes and power lines", ThinStructures } },
     { "orbit", { "1-pixel lines, points and cone glyphs over a textured floor", Orbit } },
+    { "points", { "point clouds of 1-, 2- and 3-pixel points on a plain and a shaded background",
+                  PointCloud } },
   };
   return scenes;
 }

@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Scientific-visualization scenes used by the vtkMLAA tests, the demo, and the quality and speed
 // benchmarks: shaded silhouettes, thin and thick lines, a wireframe, an iso-surface, glyphs, a
-// texture, text with a scalar bar, and a mixed scene. One definition, so that every program
-// measures and shows the same pictures.
+// texture, text with a scalar bar, a mixed scene, equal-luma colour bands, long nearly
+// horizontal edges, sub-pixel thin structures and point clouds. One definition, so that every
+// program measures and shows the same pictures.
 #ifndef vtkMLAAScenes_h
 #define vtkMLAAScenes_h
 

@@ -51,7 +51,7 @@ void HelpListsEveryOption()
       MLAA_CHECK(words.find(std::string(vtkMLAAOptions::GetEdgeDetectionAsString(m)) + ":") !=
         std::string::npos);
     }
-    for (int p = vtkMLAAOptions::LOW; p <= vtkMLAAOptions::ULTRA; ++p)
+    for (int p = vtkMLAAOptions::LOW; p <= vtkMLAAOptions::MAX; ++p)
     {
       MLAA_CHECK(words.find(std::string(vtkMLAAOptions::GetPresetAsString(p)) + ":") !=
         std::string::npos);
@@ -324,7 +324,7 @@ void OptionPreset()
   const fs::path input = WorkFile("in.png");
   const fs::path output = WorkFile("out.png");
   WriteFile(pixels, input, OIIO::TypeDesc::UINT8);
-  for (int preset = vtkMLAAOptions::LOW; preset <= vtkMLAAOptions::ULTRA; ++preset)
+  for (int preset = vtkMLAAOptions::LOW; preset <= vtkMLAAOptions::MAX; ++preset)
   {
     ExpectSuccess(
       { "--preset", vtkMLAAOptions::GetPresetAsString(preset), input.string(), output.string() },

@@ -3,7 +3,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """Gallery: antialias an image file with vtkImageMLAA (or vtkImageDLAA), from Python.
 
-    antialias_image.py INPUT OUTPUT [--preset low|medium|high|ultra] [--method mlaa|dlaa]
+    antialias_image.py INPUT OUTPUT [--preset low|medium|high|ultra|max] [--method mlaa|dlaa]
 
 Reads INPUT with the VTK reader that recognises it (PNG, JPEG, BMP, PNM, ...), antialiases it
 and writes OUTPUT in the format its extension names (.png, .jpg, .bmp, .pnm). Use it when you
@@ -105,7 +105,7 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("input")
     parser.add_argument("output")
-    parser.add_argument("--preset", help="low, medium, high (the default) or ultra (MLAA)")
+    parser.add_argument("--preset", help="low, medium, high (the default), ultra or max (MLAA)")
     parser.add_argument("--method", choices=vtkmlaa.METHODS, default="mlaa")
     args = parser.parse_args(argv)
     try:

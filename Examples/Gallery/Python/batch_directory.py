@@ -4,7 +4,7 @@
 """Gallery: antialias every image of a directory (frames of an animation, a folder of
 screenshots), from Python.
 
-    batch_directory.py INPUT_DIR OUTPUT_DIR [--preset low|medium|high|ultra] [--method mlaa|dlaa]
+    batch_directory.py INPUT_DIR OUTPUT_DIR [--preset low|medium|high|ultra|max] [--method mlaa|dlaa]
 
 Each PNG, JPEG, BMP or PNM file of INPUT_DIR goes through one filter, set up once and reused,
 into OUTPUT_DIR under the same name and format (through a temporary file renamed when complete).
@@ -23,7 +23,7 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("input_dir")
     parser.add_argument("output_dir")
-    parser.add_argument("--preset", help="low, medium, high (the default) or ultra (MLAA)")
+    parser.add_argument("--preset", help="low, medium, high (the default), ultra or max (MLAA)")
     parser.add_argument("--method", choices=("mlaa", "dlaa"), default="mlaa")
     args = parser.parse_args(argv)
     if not os.path.isdir(args.input_dir):

@@ -13,10 +13,11 @@
 // - the rule's caveats (vtkMLAATopology) hold as documented;
 // - through the filter, the output is MLAA's on the reconstructed image, and the restored pixel
 //   is in the output even with no edge anywhere; off by default, and off changes nothing;
-//   streamed equals unstreamed; the halo grows by the coverage window's radius;
+//   streamed equals unstreamed; the halo grows by vtkMLAATopology::ReconstructionReach;
 // - against supersampled thin lines (widths under a pixel, eight angles), reconstruction brings
-//   the antialiased picture closer to the reference, and the gap pixels closer than the full
-//   colour the paper's rule gives them would.
+//   the antialiased picture closer to the reference, the gap pixels closer than the full
+//   colour the paper's rule gives them would, and the lit pixels that the thin line rule
+//   lightens (beside gaps, on lines up to half a pixel dense) closer than their full colour.
 #include "vtkAntialiasingTestUtilities.h"
 
 #include "vtkImageDataStreamer.h"
@@ -143,10 +144,17 @@ void ClosesTheGapOnly()
   MLAA_CHECK(vtkMLAATopology::GetCoverage(6) == 6.0 / 14.0);
   MLAA_CHECK(vtkMLAATopology::GetCoverage(7) == 0.5);
   MLAA_CHECK(vtkMLAATopology::GetCoverage(8) == 0.0 && vtkMLAATopology::GetCoverage(0) == 0.0);
+  // The thin line rule: lines up to half a pixel wide (up to 3 of 7 pixels lit).
+  MLAA_CHECK(vtkMLAATopology::GetLineShare(1) == 1.0 / 7.0);
+  MLAA_CHECK(vtkMLAATopology::GetLineShare(3) == 3.0 / 7.0);
+  MLAA_CHECK(vtkMLAATopology::GetLineShare(4) == 1.0 && vtkMLAATopology::GetLineShare(0) == 1.0);
+  MLAA_CHECK(vtkMLAATopology::ReconstructionReach == vtkMLAATopology::CoverageRadius + 1);
   for (int n = 0; n < vtkMLAATopology::CoverageTableSize; ++n)
   {
     MLAA_CHECK(vtkMLAATopology::GetCoverageTable()[n] ==
       static_cast<float>(vtkMLAATopology::GetCoverage(n)));
+    MLAA_CHECK(vtkMLAATopology::GetLineShareTable()[n] ==
+      static_cast<float>(vtkMLAATopology::GetLineShare(n)));
   }
   for (int components = 1; components <= 4; ++components)
   {
@@ -281,8 +289,8 @@ void ThroughTheFilter()
   on->ReconstructionOn();
   const vtkMLAAStages::Halo halo = vtkMLAAStages::ComputeHalo(on);
   MLAA_CHECK(halo.Total() ==
-    vtkMLAAStages::ComputeHalo(defaults).Total() + vtkMLAATopology::CoverageRadius);
-  MLAA_CHECK(halo.Reconstruction == vtkMLAATopology::CoverageRadius);
+    vtkMLAAStages::ComputeHalo(defaults).Total() + vtkMLAATopology::ReconstructionReach);
+  MLAA_CHECK(halo.Reconstruction == vtkMLAATopology::ReconstructionReach);
   // The filter's output is MLAA's on the reconstructed image.
   auto reconstructed = ReconstructOnly<unsigned char>(gapped);
   auto restored = RunMLAA(gapped, on);
@@ -382,8 +390,10 @@ void AgainstSupersampledLines()
   // Lines under a pixel wide break into pieces when point-sampled; reconstruction fills the
   // gaps with the share of ink the line's density implies. Over every gap it fills, that share
   // is closer to the supersampled line than the gap left open and than the full ink of the
-  // paper's rule; and the antialiased picture as a whole comes closer to the reference.
-  int filledLines = 0;
+  // paper's rule; on lines up to half a pixel wide the lit pixels beside the gaps keep the
+  // line's share of the ink, which is closer to the reference than their full ink; and the
+  // antialiased picture as a whole comes closer to the reference.
+  int filledLines = 0, lightenedLines = 0;
   for (double width : { 0.35, 0.55, 0.75 })
   {
     for (double degrees : { 4.0, 11.0, 24.0, 38.0, 52.0, 66.0, 79.0, 86.0 })
@@ -392,15 +402,40 @@ void AgainstSupersampledLines()
       auto reference = MakeImage(W, H, 1, VTK_UNSIGNED_CHAR);
       ThinLine(width, degrees, sampled, reference);
       auto reconstructed = ReconstructOnly<unsigned char>(sampled);
-      double open = 0.0, coverage = 0.0, full = 0.0;
-      int gaps = 0;
+      double open = 0.0, coverage = 0.0, full = 0.0, lit = 0.0, share = 0.0;
+      int gaps = 0, litPixels = 0;
       for (const auto& p : Changed(sampled, reconstructed))
       {
         const double r = GetValue(reference, p.first, p.second);
-        open += std::abs(GetValue(sampled, p.first, p.second) - r);
-        coverage += std::abs(GetValue(reconstructed, p.first, p.second) - r);
+        const double before = GetValue(sampled, p.first, p.second);
+        const double after = GetValue(reconstructed, p.first, p.second);
+        if (before == Ink)
+        {
+          // A lit pixel of the line beside a gap (the thin line rule): it keeps 1, 2 or 3
+          // sevenths of the ink (the line's density), the rest going to the background.
+          bool sevenths = false;
+          for (int k = 1; k <= 3; ++k)
+          {
+            sevenths = sevenths || std::abs(after - (Background + k * (Ink - Background) / 7.0)) <= 0.5;
+          }
+          MLAA_CHECK(sevenths);
+          lit += std::abs(before - r);
+          share += std::abs(after - r);
+          ++litPixels;
+          continue;
+        }
+        open += std::abs(before - r);
+        coverage += std::abs(after - r);
         full += std::abs(Ink - r);
         ++gaps;
+      }
+      if (litPixels > 0)
+      {
+        std::cout << "width " << width << ", " << degrees << " degrees: " << litPixels
+                  << " lit pixels lightened; error over them full ink " << lit
+                  << ", line share " << share << std::endl;
+        ++lightenedLines;
+        MLAA_CHECK(share < lit);
       }
       vtkNew<vtkMLAAOptions> on;
       on->ReconstructionOn();
@@ -421,8 +456,9 @@ void AgainstSupersampledLines()
       MLAA_CHECK(withIt < without);
     }
   }
-  // Most of these lines have gaps that the rule fills.
+  // Most of these lines have gaps that the rule fills; the thinnest, lit pixels it lightens.
   MLAA_CHECK(filledLines >= 12);
+  MLAA_CHECK(lightenedLines >= 2);
 }
 }
 

@@ -65,7 +65,7 @@ int TestMLAAOptions(int, char*[])
   }
   CHECK(vtkMLAAOptions::GetEdgeDetectionFromString("lab") == vtkMLAAOptions::LAB);
   CHECK(vtkMLAAOptions::GetEdgeDetectionFromString("Lab") == -1);
-  for (int preset = vtkMLAAOptions::LOW; preset <= vtkMLAAOptions::ULTRA; ++preset)
+  for (int preset = vtkMLAAOptions::LOW; preset <= vtkMLAAOptions::MAX; ++preset)
   {
     CHECK(vtkMLAAOptions::GetPresetFromString(vtkMLAAOptions::GetPresetAsString(preset)) == preset);
   }
@@ -114,11 +114,30 @@ int TestMLAAOptions(int, char*[])
   preset->SetPresetToUltra();
   CHECK(preset->GetPreset() == vtkMLAAOptions::ULTRA);
   CHECK(preset->GetEdgeDetection() == vtkMLAAOptions::LAB);
-  CHECK(!preset->GetReconstruction()); // no preset reconstructs
+  CHECK(!preset->GetReconstruction()); // only Max reconstructs
   CHECK(preset->GetMaxSearchSteps() == 32);
   CHECK(preset->GetThreshold() == 0.05);
   CHECK(preset->GetPremultipliedAlpha());
   CHECK(preset->GetDebugOutput() == vtkMLAAOptions::EDGES);
+  // Max is Ultra with reconstruction; Ultra with reconstruction turned on is recognised as Max.
+  vtkNew<vtkMLAAOptions> ultra;
+  ultra->SetPresetToUltra();
+  preset->SetPresetToMax();
+  CHECK(preset->GetPreset() == vtkMLAAOptions::MAX);
+  CHECK(preset->GetReconstruction());
+  CHECK(std::strcmp(vtkMLAAOptions::GetPresetAsString(vtkMLAAOptions::MAX), "max") == 0);
+  ultra->ReconstructionOn();
+  CHECK(ultra->GetPreset() == vtkMLAAOptions::MAX);
+  CHECK(ultra->GetThreshold() == preset->GetThreshold() &&
+    ultra->GetEdgeDetection() == preset->GetEdgeDetection() &&
+    ultra->GetMaxSearchSteps() == preset->GetMaxSearchSteps() &&
+    ultra->GetLocalContrastFactor() == preset->GetLocalContrastFactor() &&
+    ultra->GetDiagonalDetection() == preset->GetDiagonalDetection() &&
+    ultra->GetCornerExtrapolation() == preset->GetCornerExtrapolation() &&
+    ultra->GetDominantDirectionBlending() == preset->GetDominantDirectionBlending());
+  preset->ReconstructionOff();
+  CHECK(preset->GetPreset() == vtkMLAAOptions::ULTRA);
+  preset->ReconstructionOn();
   preset->SetPresetToLow();
   CHECK(preset->GetPreset() == vtkMLAAOptions::LOW);
   CHECK(!preset->GetReconstruction());
@@ -130,7 +149,7 @@ int TestMLAAOptions(int, char*[])
   const vtkMTimeType presetTime = preset->GetMTime();
   vtkNew<vtkMLAATest::MessageObserver> messages;
   messages->Watch(preset);
-  preset->SetPreset(7); // refused with an error, nothing changes
+  preset->SetPreset(vtkMLAAOptions::MAX + 1); // refused with an error, nothing changes
   CHECK(messages->HasError("not a preset"));
   CHECK(preset->GetPreset() == vtkMLAAOptions::HIGH && preset->GetMTime() == presetTime);
 

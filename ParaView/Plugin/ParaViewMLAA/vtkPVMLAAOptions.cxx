@@ -16,11 +16,11 @@ vtkPVMLAAOptions::vtkPVMLAAOptions()
 //------------------------------------------------------------------------------
 void vtkPVMLAAOptions::SetQualityPreset(int preset)
 {
-  if (preset != CUSTOM && (preset < LOW || preset > ULTRA))
+  if (preset != CUSTOM && (preset < LOW || preset > MAX))
   {
     vtkErrorMacro("SetQualityPreset: " << preset
                                        << " is neither CUSTOM (-1) nor a preset (LOW, MEDIUM, "
-                                          "HIGH or ULTRA).");
+                                          "HIGH, ULTRA or MAX).");
     return;
   }
   if (preset != this->QualityPreset)

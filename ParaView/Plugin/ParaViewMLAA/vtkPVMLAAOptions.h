@@ -44,7 +44,7 @@ public:
 
   ///@{
   /**
-   * CUSTOM (-1, default) or a vtkMLAAOptions preset (LOW, MEDIUM, HIGH, ULTRA) whose quality
+   * CUSTOM (-1, default) or a vtkMLAAOptions preset (LOW, MEDIUM, HIGH, ULTRA, MAX) whose quality
    * settings replace the custom ones while it is chosen. Other values are refused with an error.
    */
   void SetQualityPreset(int preset);

@@ -79,7 +79,9 @@ check(options.GetPreset() == vtkMLAAOptions.LOW and options.GetMaxSearchSteps() 
       "SetPresetToLow")
 options.SetThreshold(0.2)
 check(options.GetPreset() == -1, "an option set after a preset overrides it")
-check(vtkmlaa.PRESETS == ("low", "medium", "high", "ultra"), "PRESETS %s" % (vtkmlaa.PRESETS,))
+check(vtkmlaa.PRESETS == ("low", "medium", "high", "ultra", "max"), "PRESETS %s" % (vtkmlaa.PRESETS,))
+options.SetPresetToMax()
+check(options.GetPreset() == vtkMLAAOptions.MAX and options.GetReconstruction(), "SetPresetToMax")
 for preset in vtkmlaa.PRESETS:
     check(vtkMLAAOptions.GetPresetAsString(vtkMLAAOptions.GetPresetFromString(preset)) == preset,
           "preset name round trip " + preset)

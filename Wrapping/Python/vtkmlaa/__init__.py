@@ -62,7 +62,7 @@ METHODS = ("mlaa", "dlaa")
 PRESETS = tuple(
     vtkMLAAOptions.GetPresetAsString(preset)
     for preset in (vtkMLAAOptions.LOW, vtkMLAAOptions.MEDIUM, vtkMLAAOptions.HIGH,
-                   vtkMLAAOptions.ULTRA))
+                   vtkMLAAOptions.ULTRA, vtkMLAAOptions.MAX))
 
 
 def _method_classes(method):
@@ -167,7 +167,8 @@ def enable(renderer, method="mlaa", preset=None, temporal=False, multisamples=0,
     UseDepthPeeling is on (with its MaximumNumberOfPeels, OcclusionRatio and
     UseDepthPeelingForVolumes), and renderer.GetLastRenderingUsedDepthPeeling() reports it.
 
-    preset: for MLAA, one of "low", "medium", "high" (the default) and "ultra"; DLAA has none.
+    preset: for MLAA, one of "low", "medium", "high" (the default), "ultra" and "max" (ultra with
+    reconstruction, for sub-pixel lines and points); DLAA has none.
     options: settings of the options object (vtkMLAAOptions or vtkDLAAOptions) or of the pass,
     by their VTK name in snake_case or CamelCase, e.g. threshold=0.05, max_search_steps=8,
     edge_detection="luma", keep_alpha=True, antialias_overlays=True; they are applied after
