@@ -15,7 +15,11 @@
 #include "vtkActor2DCollection.h"
 #include "vtkActorCollection.h"
 #include "vtkDLAAOptions.h"
+#include "vtkDataObject.h"
 #include "vtkExtractVOI.h"
+#include "vtkHardwareSelector.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
 #include "vtkOpenGLAntialiasingPass.h"
 #include "vtkOpenGLDLAAPass.h"
 #include "vtkOpenGLMLAAPass.h"
@@ -23,6 +27,10 @@
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkSelection.h"
+#include "vtkSelectionNode.h"
+
+#include <set>
 
 namespace vtkMLAATest
 {
@@ -314,6 +322,38 @@ struct SceneWindow
   }
   ~SceneWindow() { StopPass(this->Renderer, this->Window); }
 };
+
+// The ids of every node of a selection, with the node's prop id (plus one) in the high bits.
+inline std::set<vtkIdType> SelectedIds(vtkSelection* selection)
+{
+  std::set<vtkIdType> ids;
+  for (unsigned int n = 0; selection && n < selection->GetNumberOfNodes(); ++n)
+  {
+    vtkSelectionNode* node = selection->GetNode(n);
+    auto* list = vtkIdTypeArray::SafeDownCast(node->GetSelectionList());
+    const int prop = node->GetProperties()->Has(vtkSelectionNode::PROP_ID())
+      ? node->GetProperties()->Get(vtkSelectionNode::PROP_ID())
+      : -1;
+    for (vtkIdType i = 0; list && i < list->GetNumberOfTuples(); ++i)
+    {
+      ids.insert((static_cast<vtkIdType>(prop + 1) << 40) + list->GetValue(i));
+    }
+  }
+  return ids;
+}
+
+// The cells (SelectedIds) of a hardware area selection of the renderer's whole
+// `width` x `height` window.
+inline std::set<vtkIdType> SelectCells(vtkRenderer* renderer, int width, int height)
+{
+  vtkNew<vtkHardwareSelector> selector;
+  selector->SetRenderer(renderer);
+  selector->SetFieldAssociation(vtkDataObject::FIELD_ASSOCIATION_CELLS);
+  selector->SetArea(0, 0, width - 1, height - 1);
+  vtkSmartPointer<vtkSelection> selection;
+  selection.TakeReference(selector->Select());
+  return SelectedIds(selection);
+}
 }
 
 #endif

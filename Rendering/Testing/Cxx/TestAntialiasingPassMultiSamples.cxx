@@ -345,30 +345,6 @@ void Layers(const PassMethod& method, MessageObserver* messages)
   StopPass(upper, window);
 }
 
-std::set<vtkIdType> SelectCells(vtkRenderer* renderer, int width, int height)
-{
-  vtkNew<vtkHardwareSelector> selector;
-  selector->SetRenderer(renderer);
-  selector->SetFieldAssociation(vtkDataObject::FIELD_ASSOCIATION_CELLS);
-  selector->SetArea(0, 0, width - 1, height - 1);
-  vtkSmartPointer<vtkSelection> selection;
-  selection.TakeReference(selector->Select());
-  std::set<vtkIdType> ids;
-  for (unsigned int n = 0; selection && n < selection->GetNumberOfNodes(); ++n)
-  {
-    vtkSelectionNode* node = selection->GetNode(n);
-    auto* list = vtkIdTypeArray::SafeDownCast(node->GetSelectionList());
-    const int prop = node->GetProperties()->Has(vtkSelectionNode::PROP_ID())
-      ? node->GetProperties()->Get(vtkSelectionNode::PROP_ID())
-      : -1;
-    for (vtkIdType i = 0; list && i < list->GetNumberOfTuples(); ++i)
-    {
-      ids.insert((static_cast<vtkIdType>(prop + 1) << 40) + list->GetValue(i));
-    }
-  }
-  return ids;
-}
-
 void Picking(const PassMethod& method, MessageObserver* messages)
 {
   SceneWindow scene("silhouettes", 300, 200);

@@ -27,25 +27,6 @@ using namespace vtkMLAATest;
 
 namespace
 {
-// The ids of every node of a selection, with the node's prop id in the high bits.
-std::set<vtkIdType> SelectedIds(vtkSelection* selection)
-{
-  std::set<vtkIdType> ids;
-  for (unsigned int n = 0; selection && n < selection->GetNumberOfNodes(); ++n)
-  {
-    vtkSelectionNode* node = selection->GetNode(n);
-    auto* list = vtkIdTypeArray::SafeDownCast(node->GetSelectionList());
-    const int prop = node->GetProperties()->Has(vtkSelectionNode::PROP_ID())
-      ? node->GetProperties()->Get(vtkSelectionNode::PROP_ID())
-      : -1;
-    for (vtkIdType i = 0; list && i < list->GetNumberOfTuples(); ++i)
-    {
-      ids.insert((static_cast<vtkIdType>(prop + 1) << 40) + list->GetValue(i));
-    }
-  }
-  return ids;
-}
-
 struct Selected
 {
   std::set<vtkIdType> Cells;

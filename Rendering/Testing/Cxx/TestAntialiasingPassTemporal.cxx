@@ -355,27 +355,6 @@ void Resets(const PassMethod& method, MessageObserver* messages)
   StopPass(renderer, window);
 }
 
-// The cells of an area selection of the whole window.
-std::set<vtkIdType> SelectCells(vtkRenderer* renderer, int width, int height)
-{
-  vtkNew<vtkHardwareSelector> selector;
-  selector->SetRenderer(renderer);
-  selector->SetFieldAssociation(vtkDataObject::FIELD_ASSOCIATION_CELLS);
-  selector->SetArea(0, 0, width - 1, height - 1);
-  vtkSmartPointer<vtkSelection> selection;
-  selection.TakeReference(selector->Select());
-  std::set<vtkIdType> ids;
-  for (unsigned int n = 0; selection && n < selection->GetNumberOfNodes(); ++n)
-  {
-    auto* list = vtkIdTypeArray::SafeDownCast(selection->GetNode(n)->GetSelectionList());
-    for (vtkIdType i = 0; list && i < list->GetNumberOfTuples(); ++i)
-    {
-      ids.insert((static_cast<vtkIdType>(n + 1) << 40) + list->GetValue(i));
-    }
-  }
-  return ids;
-}
-
 void Picking(const PassMethod& method, MessageObserver* messages)
 {
   auto window = vtkMLAAScenes::NewOffscreenWindow(Width, Height);
