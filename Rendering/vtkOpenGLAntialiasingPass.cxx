@@ -1080,21 +1080,7 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
   {
     return false;
   }
-  ostate->vtkglViewport(frame.X, frame.Y, frame.Width, frame.Height);
-  ostate->vtkglScissor(frame.X, frame.Y, frame.Width, frame.Height);
-  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  if (frame.Composite)
-  {
-    ostate->vtkglEnable(GL_BLEND);
-    ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  }
-  else
-  {
-    ostate->vtkglDisable(GL_BLEND);
-  }
-  ostate->vtkglEnable(GL_DEPTH_TEST);
-  ostate->vtkglDepthFunc(GL_ALWAYS);
-  ostate->vtkglDepthMask(GL_TRUE);
+  SetTargetWriteState(ostate, frame.X, frame.Y, frame.Width, frame.Height, frame.Composite, true);
   vtkShaderProgram* program = h.OutputQuad.Quad->Program;
   h.Histories[h.Latest]->Activate();
   this->DepthTexture->Activate();
@@ -1374,22 +1360,8 @@ bool vtkOpenGLAntialiasingPass::AntialiasSamples(const Frame& frame, int samples
   }
 
   // The average into the target viewport, with the nearest depth of each pixel's samples.
-  ostate->vtkglViewport(frame.X, frame.Y, width, height);
-  ostate->vtkglScissor(frame.X, frame.Y, width, height);
-  if (frame.Composite)
-  {
-    // Premultiplied "over" onto what lower layers drew, as the single-sample pass does.
-    ostate->vtkglEnable(GL_BLEND);
-    ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  }
-  else
-  {
-    ostate->vtkglDisable(GL_BLEND);
-  }
-  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  ostate->vtkglEnable(GL_DEPTH_TEST);
-  ostate->vtkglDepthFunc(GL_ALWAYS);
-  ostate->vtkglDepthMask(GL_TRUE);
+  // Premultiplied "over" onto what lower layers drew, as the single-sample pass does.
+  SetTargetWriteState(ostate, frame.X, frame.Y, width, height, frame.Composite, true);
   vtkShaderProgram* program = this->ResolveQuad.Quad->Program;
   this->AccumulationTexture->Activate();
   this->SamplesColorTexture->Activate();

@@ -6,10 +6,13 @@
 #define vtkOpenGLAntialiasingPassInternals_h
 
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
 #include "vtkTextureObject.h"
 #include "vtkType.h"
 
 #include <string>
+
+#include "vtk_glew.h" // For GL enums only
 
 namespace vtkOpenGLAntialiasingPassInternals
 {
@@ -78,6 +81,39 @@ inline vtkIdType TextureBytes(vtkTextureObject* texture, int bytesPerTexel)
   return texture && texture->GetHandle()
     ? static_cast<vtkIdType>(texture->GetWidth()) * texture->GetHeight() * bytesPerTexel
     : 0;
+}
+
+// The state for writing a result into the target's viewport (x, y, width, height): colour writes
+// on; with `over`, premultiplied "over" blending (result + (1 - its alpha) * what lower layers
+// drew: where the renderer drew nothing, transparent black, the framebuffer keeps its pixels
+// exactly; an opaque pixel replaces them, as without the pass), else no blending; with
+// `writeDepth`, the depth test on with ALWAYS and depth writes (the fragment's depth is copied),
+// else the depth test off (colour only).
+inline void SetTargetWriteState(
+  vtkOpenGLState* ostate, int x, int y, int width, int height, bool over, bool writeDepth)
+{
+  ostate->vtkglViewport(x, y, width, height);
+  ostate->vtkglScissor(x, y, width, height);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  if (over)
+  {
+    ostate->vtkglEnable(GL_BLEND);
+    ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  }
+  else
+  {
+    ostate->vtkglDisable(GL_BLEND);
+  }
+  if (writeDepth)
+  {
+    ostate->vtkglEnable(GL_DEPTH_TEST);
+    ostate->vtkglDepthFunc(GL_ALWAYS);
+    ostate->vtkglDepthMask(GL_TRUE);
+  }
+  else
+  {
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+  }
 }
 
 // One #define line of a shader variant.

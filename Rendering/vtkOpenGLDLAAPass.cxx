@@ -115,31 +115,10 @@ bool vtkOpenGLDLAAPass::ComputeMasks(const Frame& frame)
 bool vtkOpenGLDLAAPass::Filter(const Frame& frame)
 {
   vtkOpenGLState* ostate = frame.Window->GetState();
-  ostate->vtkglViewport(frame.X, frame.Y, frame.Width, frame.Height);
-  ostate->vtkglScissor(frame.X, frame.Y, frame.Width, frame.Height);
-  if (frame.Composite)
-  {
-    // Premultiplied "over" onto what lower layers drew (see vtkOpenGLAntialiasingPass).
-    ostate->vtkglEnable(GL_BLEND);
-    ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  }
-  else
-  {
-    ostate->vtkglDisable(GL_BLEND);
-  }
-  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  if (frame.InPlace)
-  {
-    // Only the changed pixels are written, and no depth.
-    ostate->vtkglDisable(GL_DEPTH_TEST);
-  }
-  else
-  {
-    // Depth writes need the depth test on; ALWAYS copies the delegate's depth.
-    ostate->vtkglEnable(GL_DEPTH_TEST);
-    ostate->vtkglDepthFunc(GL_ALWAYS);
-    ostate->vtkglDepthMask(GL_TRUE);
-  }
+  // Premultiplied "over" onto what lower layers drew (see vtkOpenGLAntialiasingPass); in place,
+  // only the changed pixels are written, and no depth; otherwise the delegate's depth is copied.
+  SetTargetWriteState(ostate, frame.X, frame.Y, frame.Width, frame.Height, frame.Composite,
+    !frame.InPlace);
   const std::string defines = Define("DLAA_LUMA", this->Options->GetLumaFunction()) +
     Define("DLAA_LONG_EDGES", this->Options->GetLongEdges()) +
     Define("DLAA_IN_PLACE", frame.InPlace);

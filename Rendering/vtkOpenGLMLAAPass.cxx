@@ -375,34 +375,11 @@ bool vtkOpenGLMLAAPass::Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int w
   int height, bool composite, bool straightAlpha, bool inPlace)
 {
   vtkOpenGLState* ostate = renWin->GetState();
-  ostate->vtkglViewport(x, y, width, height);
-  ostate->vtkglScissor(x, y, width, height);
-  if (composite && this->Options->GetDebugOutput() == vtkMLAAOptions::NO_DEBUG_OUTPUT)
-  {
-    // Premultiplied "over": result + (1 - its alpha) * what lower layers drew. Where this
-    // renderer drew nothing (transparent black) the framebuffer keeps its pixels exactly; an
-    // opaque pixel replaces them, as it would without the pass.
-    ostate->vtkglEnable(GL_BLEND);
-    ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  }
-  else
-  {
-    ostate->vtkglDisable(GL_BLEND);
-  }
-  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  if (inPlace)
-  {
-    // The target already holds the delegate's image and depth: only the blended pixels are
-    // written, and no depth.
-    ostate->vtkglDisable(GL_DEPTH_TEST);
-  }
-  else
-  {
-    // Depth writes need the depth test on; ALWAYS copies the delegate's depth.
-    ostate->vtkglEnable(GL_DEPTH_TEST);
-    ostate->vtkglDepthFunc(GL_ALWAYS);
-    ostate->vtkglDepthMask(GL_TRUE);
-  }
+  // Premultiplied "over" onto what lower layers drew (a debug output replaces them); in place,
+  // the target already holds the delegate's image and depth: only the blended pixels are
+  // written, and no depth; otherwise the delegate's depth is copied.
+  SetTargetWriteState(ostate, x, y, width, height,
+    composite && this->Options->GetDebugOutput() == vtkMLAAOptions::NO_DEBUG_OUTPUT, !inPlace);
   const std::string blendDefines =
     Define("MLAA_DEBUG_OUTPUT", this->Options->GetDebugOutput()) +
     Define("MLAA_DOMINANT_DIRECTION", this->Options->GetDominantDirectionBlending()) +
