@@ -2,10 +2,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkOpenGLAntialiasingPass.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkDataObject.h"
 #include "vtkDualDepthPeelingPass.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
+#include "vtkMapper.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -19,11 +22,13 @@
 #include "vtkOpenGLState.h"
 #include "vtkOrderIndependentTranslucentPass.h"
 #include "vtkProp.h"
+#include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
+#include "vtkTexture.h"
 #include "vtkTextureObject.h"
 #include "vtkTranslucentPass.h"
 #include "vtkVersionMacros.h"
@@ -37,6 +42,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <utility>
 #include <vector>
 
 using namespace vtkOpenGLAntialiasingPassInternals;
@@ -84,6 +90,7 @@ public:
   };
 
   vtkTextureObject* Current = nullptr;               // this frame, antialiased
+  vtkTextureObject* Previous = nullptr;              // the last render's, antialiased
   vtkTextureObject* Histories[2] = { nullptr, nullptr }; // RGBA32F, read and written in turn
   int Latest = 0;                                    // the one written last
   vtkOpenGLFramebufferObject* Framebuffer = nullptr;
@@ -95,17 +102,20 @@ public:
   int Width = 0, Height = 0;
   double ViewProjection[16] = {}; // unjittered, of the last temporal render
   bool Parallel = false;
-  std::vector<std::uint64_t> Scene; // SceneSignature after the last render
+  std::vector<std::uint64_t> Scene;   // SceneSignature after the last render
+  std::vector<std::uint64_t> Content; // the same without the actors' placement
 
   // This render's decisions.
   Mode FrameMode = RESET;
   double Reprojection[16] = {}; // current to previous normalised device coordinates, transposed
+  bool KeepUnchanged = false;   // actors moved under a still camera: see BeginTemporalFrame
   vtkCamera* JitteredCamera = nullptr;
   double SavedWindowCenter[2] = { 0.0, 0.0 };
 
   void Release(vtkWindow* w)
   {
     DeleteObject(this->Current, w);
+    DeleteObject(this->Previous, w);
     DeleteObject(this->Histories[0], w);
     DeleteObject(this->Histories[1], w);
     DeleteObject(this->Framebuffer, w);
@@ -116,7 +126,7 @@ public:
   }
   bool HoldsResources() const
   {
-    return this->Current || this->Histories[0] || this->Histories[1] || this->Framebuffer;
+    return this->Current || this->Previous || this->Histories[0] || this->Histories[1] || this->Framebuffer;
   }
 };
 
@@ -175,15 +185,38 @@ std::uint64_t Bits(double value)
 
 // What a temporal history depends on besides the camera: the props drawn (which, and their
 // modified times, mappers and inputs included), the lights that do not follow the camera (those
-// that do move with it, which reprojection handles) and the background.
-std::vector<std::uint64_t> SceneSignature(const vtkRenderState* s)
+// that do move with it, which reprojection handles) and the background. With `placement` false an
+// actor's own modified time (its position, orientation, scale, user matrix and visibility) is left
+// out and the times of what it draws are taken instead (its mapper, the mapper's input, its
+// properties and texture): a change of that signature discards the history, a change of the
+// other one alone (actors moved, shown or hidden) keeps it, reprojected and clamped.
+std::vector<std::uint64_t> SceneSignature(const vtkRenderState* s, bool placement)
 {
   std::vector<std::uint64_t> signature;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
     vtkProp* prop = s->GetPropArray()[i];
     signature.push_back(reinterpret_cast<std::uintptr_t>(prop));
-    signature.push_back(prop->GetRedrawMTime());
+    const vtkMTimeType redraw = prop->GetRedrawMTime(); // brings the mapper's input up to date
+    vtkActor* actor = vtkActor::SafeDownCast(prop);
+    if (placement || !actor)
+    {
+      signature.push_back(redraw);
+      continue;
+    }
+    vtkMapper* mapper = actor->GetMapper();
+    vtkDataObject* input = mapper && mapper->GetNumberOfInputPorts() > 0 &&
+        mapper->GetNumberOfInputConnections(0) > 0
+      ? mapper->GetInputDataObject(0, 0)
+      : nullptr;
+    for (vtkObject* part : { static_cast<vtkObject*>(mapper), static_cast<vtkObject*>(input),
+           static_cast<vtkObject*>(actor->GetProperty()),
+           static_cast<vtkObject*>(actor->GetBackfaceProperty()),
+           static_cast<vtkObject*>(actor->GetTexture()) })
+    {
+      signature.push_back(reinterpret_cast<std::uintptr_t>(part));
+      signature.push_back(part ? part->GetMTime() : 0);
+    }
   }
   vtkRenderer* renderer = s->GetRenderer();
   vtkLightCollection* lights = renderer->GetLights();
@@ -738,6 +771,7 @@ vtkIdType vtkOpenGLAntialiasingPass::GetTargetMemorySize()
   return TextureBytes(this->ColorTexture, colorBytes) + TextureBytes(this->DepthTexture, 4) +
     TextureBytes(this->AlphaTexture, colorBytes / 4) + this->GetMethodTargetMemorySize() +
     (this->History ? TextureBytes(this->History->Current, colorBytes) +
+          TextureBytes(this->History->Previous, colorBytes) +
           TextureBytes(this->History->Histories[0], 16) +
           TextureBytes(this->History->Histories[1], 16)
                    : 0);
@@ -846,14 +880,24 @@ void vtkOpenGLAntialiasingPass::BeginTemporalFrame(const vtkRenderState* s, cons
     camera->GetCompositeProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1));
   const bool parallel = camera->GetParallelProjection() != 0;
   const bool reset = !h.Valid || h.Width != frame.Width || h.Height != frame.Height ||
-    h.Parallel != parallel || h.Scene != SceneSignature(s);
+    h.Parallel != parallel || h.Content != SceneSignature(s, false);
+  // Actors moved (or shown, or hidden) and nothing else changed: the history is kept and treated
+  // as for a moving camera (reprojected with the camera's motion, none here, and clamped to the
+  // current frame's neighbourhood, which removes what the actors left behind).
+  const bool actorsMoved = !reset && h.Scene != SceneSignature(s, true);
   // Current to previous normalised device coordinates: previous * inverse(current).
   vtkNew<vtkMatrix4x4> inverse;
   vtkMatrix4x4::Invert(viewProjection, inverse);
   vtkNew<vtkMatrix4x4> reprojection;
   vtkMatrix4x4::Multiply4x4(h.ViewProjection, inverse->GetData(), reprojection->GetData());
   const bool moved = !reset &&
-    MaximumDisplacement(reprojection->GetData(), frame.Width, frame.Height) > StillDisplacement;
+    (actorsMoved ||
+      MaximumDisplacement(reprojection->GetData(), frame.Width, frame.Height) > StillDisplacement);
+  // Under a still camera, a pixel whose antialiased value is the same as at the last render is
+  // not touched by the actors' motion: its history is kept as it is (the rest of the image stays
+  // as steady as the single-frame pass, and keeps what it accumulated).
+  h.KeepUnchanged = actorsMoved &&
+    MaximumDisplacement(reprojection->GetData(), frame.Width, frame.Height) <= StillDisplacement;
   if (reset)
   {
     h.FrameMode = TemporalHistory::RESET;
@@ -913,7 +957,8 @@ void vtkOpenGLAntialiasingPass::EndTemporalJitter(const vtkRenderState* s)
   }
   // The scene as the render left it (mappers may update themselves while they draw): what the
   // next render compares with.
-  h.Scene = SceneSignature(s);
+  h.Scene = SceneSignature(s, true);
+  h.Content = SceneSignature(s, false);
 }
 
 //------------------------------------------------------------------------------
@@ -926,13 +971,22 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
   if (!h.Current)
   {
     h.Current = NewTexture(renWin);
+    h.Previous = NewTexture(renWin);
     h.Histories[0] = NewTexture(renWin);
     h.Histories[1] = NewTexture(renWin);
     h.Framebuffer = vtkOpenGLFramebufferObject::New();
     h.Framebuffer->SetContext(renWin);
   }
-  AllocateColorTarget(
-    h.Current, width, height, 4, frame.FloatColor ? VTK_FLOAT : VTK_UNSIGNED_CHAR, false);
+  // The last render's frame, which Current becomes after the blend.
+  std::swap(h.Current, h.Previous);
+  for (vtkTextureObject* texture : { h.Current, h.Previous })
+  {
+    if (AllocateColorTarget(
+          texture, width, height, 4, frame.FloatColor ? VTK_FLOAT : VTK_UNSIGNED_CHAR, false))
+    {
+      h.KeepUnchanged = false; // what Previous held is gone
+    }
+  }
   for (vtkTextureObject* history : h.Histories)
   {
     // 32-bit floating point: a running average of many frames moves by less than 1/255 a frame.
@@ -1007,8 +1061,15 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
           matrix[i] = static_cast<float>(h.Reprojection[i]);
         }
         program->SetUniformMatrix4x4("reprojection", matrix);
+        h.Previous->Activate();
+        program->SetUniformi("previousTexture", h.Previous->GetTextureUnit());
+        program->SetUniformi("keepUnchanged", h.KeepUnchanged ? 1 : 0);
       }
       h.BlendQuad.Quad->Render();
+      if (reproject)
+      {
+        h.Previous->Deactivate();
+      }
       this->DepthTexture->Deactivate();
       h.Histories[h.Latest]->Deactivate();
       current->Deactivate();

@@ -121,11 +121,17 @@ public:
    *   blended with weight TemporalWeight for the current frame where a pixel's history did not
    *   move, rising to 0.7 where it moved a pixel or more (each read between pixels blurs the
    *   history a little);
+   * - when actors (vtkActor) only move, turn, scale or are shown or hidden, the history is kept
+   *   and treated as for a moving camera (reprojected with the camera's motion alone, so the clamp
+   *   is what removes what the actors left behind: no ghost 2 frames later); under a still
+   *   camera, a pixel whose value in the method's frame is the same as at the last render, and
+   *   whose history lies within the current 3 x 3 range, keeps its history as it is (the still
+   *   part of the image stays as it was accumulated);
    * - the history is reset (the result is the method's frame alone) when the pass is switched on,
-   *   on a resize, when the scene changes (a prop added, removed or modified, by the modified
-   *   times of the props, their mappers and inputs, of the lights that do not follow the camera,
-   *   and the background), and when the camera switches between parallel and perspective
-   *   projection. A moving actor therefore resets the history at each render.
+   *   on a resize, when the scene changes otherwise (a prop added or removed, another prop than
+   *   an actor modified, an actor's mapper, its input, its properties or texture modified, a
+   *   light that does not follow the camera modified, the background), and when the camera
+   *   switches between parallel and perspective projection.
    * Overlays (the deferred overlay step) are drawn after the blend, neither jittered nor blended.
    * The renderer is rendered into the pass's own textures (its depth is read). Hardware selection
    * renders bypass the pass and leave the history alone. A debug output of the method (MLAA)

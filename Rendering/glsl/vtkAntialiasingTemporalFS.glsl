@@ -10,8 +10,8 @@
 // Compile-time variants (#defines prepended by vtkOpenGLAntialiasingPass):
 //   TEMPORAL_OUTPUT     defined: writes the blended history (historyTexture) and the delegate's
 //                       depth into the target viewport (nothing is blended here).
-//   TEMPORAL_REPROJECT  defined (the camera moved; currentTexture is the frame antialiased by the
-//                       method): the history is read where this pixel's point was in the previous
+//   TEMPORAL_REPROJECT  defined (the camera or actors moved; currentTexture is the frame
+//                       antialiased by the method): the history is read where this pixel's point was in the previous
 //                       frame, `reprojection` taking the current normalised device coordinates to
 //                       the previous ones, with the depth and motion of the nearest point of the
 //                       3 x 3 neighbourhood, by Catmull-Rom interpolation, and clamped per channel
@@ -19,7 +19,10 @@
 //                       frame does not support: disocclusions, changed shading); a point that was
 //                       outside the previous view takes the current frame alone. The current
 //                       frame's weight rises with the distance the history moved, from
-//                       currentWeight at rest to MovingWeight at MovingPixels and more.
+//                       currentWeight at rest to MovingWeight at MovingPixels and more. With
+//                       keepUnchanged (actors moved, the camera did not), a pixel whose value in
+//                       the method's frame equals the last render's (previousTexture) keeps its
+//                       history as it is.
 //   neither             (a still camera; currentTexture is the delegate's jittered render): the
 //                       history is read at this pixel, exactly, and not clamped: with
 //                       currentWeight 1 / N the blend is the running average of N renders.
@@ -33,6 +36,10 @@ uniform sampler2D depthTexture;   // the delegate's depth
 uniform sampler2D currentTexture; // this frame
 uniform float currentWeight;
 uniform mat4 reprojection;
+#endif
+#ifdef TEMPORAL_REPROJECT
+uniform sampler2D previousTexture; // the last render's frame, antialiased by the method
+uniform int keepUnchanged;
 #endif
 
 #ifdef TEMPORAL_REPROJECT
@@ -68,6 +75,22 @@ vec4 CatmullRom(sampler2D image, vec2 uv, ivec2 size)
   }
   return sum;
 }
+
+// The range, per channel, of the current frame over the 3 x 3 neighbourhood of `p`.
+void CurrentRange(ivec2 p, ivec2 size, out vec4 lo, out vec4 hi)
+{
+  lo = texelFetch(currentTexture, p, 0);
+  hi = lo;
+  for (int j = -1; j <= 1; ++j)
+  {
+    for (int i = -1; i <= 1; ++i)
+    {
+      vec4 c = texelFetch(currentTexture, clamp(p + ivec2(i, j), ivec2(0), size - 1), 0);
+      lo = min(lo, c);
+      hi = max(hi, c);
+    }
+  }
+}
 #endif
 
 void main()
@@ -86,6 +109,19 @@ void main()
     return;
   }
 #ifdef TEMPORAL_REPROJECT
+  // Actors moved under a still camera: where this pixel's antialiased value did not change, the
+  // motion did not reach it, and its history is kept as it is.
+  vec4 lo, hi;
+  CurrentRange(p, size, lo, hi);
+  if (keepUnchanged != 0 && current == texelFetch(previousTexture, p, 0))
+  {
+    vec4 kept = texelFetch(historyTexture, p, 0);
+    if (kept == clamp(kept, lo, hi))
+    {
+      gl_FragData[0] = kept;
+      return;
+    }
+  }
   // The motion of the nearest point of the 3 x 3 neighbourhood moves this pixel: an antialiased
   // silhouette pixel, which holds some of the object, moves with the object, not with what is
   // behind it (the background, whose depth is the far plane, moves otherwise under a rotation).
@@ -112,17 +148,6 @@ void main()
     return;
   }
   vec4 history = CatmullRom(historyTexture, uv, size);
-  vec4 lo = current;
-  vec4 hi = current;
-  for (int j = -1; j <= 1; ++j)
-  {
-    for (int i = -1; i <= 1; ++i)
-    {
-      vec4 c = texelFetch(currentTexture, clamp(p + ivec2(i, j), ivec2(0), size - 1), 0);
-      lo = min(lo, c);
-      hi = max(hi, c);
-    }
-  }
   history = clamp(history, lo, hi);
   float moved = length((uv - (vec2(p) + 0.5) / vec2(size)) * vec2(size));
   float weight = mix(currentWeight, max(currentWeight, MovingWeight),
