@@ -16,8 +16,9 @@
 // - a camera orbit of a few frames: the history is reprojected (1 frame counted), flat regions of
 //   the plain render stay exactly as they are, edges are antialiased, and accumulation starts
 //   again when the camera stops;
-// - resets: a resize, a changed actor colour and switching Temporal off and on each give the same
-//   image as a new pass's first render (the history is discarded, the jitter sequence restarts);
+// - resets: a resize, a changed actor colour, a changed input and switching Temporal off and on
+//   each give the same image as a new pass's first render (the history is discarded, the jitter
+//   sequence restarts); an actor that only moves keeps the history (differs from a first render);
 // - picking: an area selection gives the same cells with the temporal pass as without a pass, and
 //   leaves the history and the camera alone;
 // - overlays: with only the text and scalar bar of the text scene visible, every render equals the
@@ -486,6 +487,20 @@ void Resets(const PassMethod& method, MessageObserver* messages)
   vtkMLAAScenes::Capture(window);
   sphere->GetProperty()->SetColor(0.2, 0.5, 0.9);
   expectReset(pass, "a changed colour");
+  vtkMLAAScenes::Capture(window);
+  vtkSphereSource::SafeDownCast(sphere->GetMapper()->GetInputAlgorithm())->SetRadius(0.5);
+  expectReset(pass, "a changed input");
+  for (int k = 0; k < 4; ++k)
+  {
+    vtkMLAAScenes::Capture(window);
+  }
+  // An actor that only moves keeps the history (the other sphere keeps what it accumulated).
+  sphere->AddPosition(0.1, 0.0, 0.0);
+  auto moved = vtkMLAAScenes::Capture(window);
+  const vtkIdType keptPixels = Compare(firstRender(), moved, 0.0).Pixels;
+  std::cout << method.Name << ", a moved actor: " << keptPixels
+            << " pixels differ from a new pass's first render" << std::endl;
+  Check(keptPixels > 50, "a moved actor keeps the history", __FILE__, __LINE__);
   vtkMLAAScenes::Capture(window);
   pass->TemporalOff();
   pass->TemporalOn();
