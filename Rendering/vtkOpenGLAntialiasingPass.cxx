@@ -90,7 +90,7 @@ public:
   };
 
   vtkTextureObject* Current = nullptr;               // this frame, antialiased
-  vtkTextureObject* Previous = nullptr;              // the last render's, antialiased
+  vtkTextureObject* Previous = nullptr; // the last unjittered render's frame, antialiased
   vtkTextureObject* Histories[2] = { nullptr, nullptr }; // RGBA32F, read and written in turn
   int Latest = 0;                                    // the one written last
   vtkOpenGLFramebufferObject* Framebuffer = nullptr;
@@ -109,6 +109,7 @@ public:
   Mode FrameMode = RESET;
   double Reprojection[16] = {}; // current to previous normalised device coordinates, transposed
   bool KeepUnchanged = false;   // actors moved under a still camera: see BeginTemporalFrame
+  bool PreviousValid = false;   // Previous holds the last unjittered render of this size
   vtkCamera* JitteredCamera = nullptr;
   double SavedWindowCenter[2] = { 0.0, 0.0 };
 
@@ -122,6 +123,7 @@ public:
     this->BlendQuad.Release(w);
     this->OutputQuad.Release(w);
     this->Valid = false;
+    this->PreviousValid = false;
     this->Accumulated = 0;
   }
   bool HoldsResources() const
@@ -879,25 +881,25 @@ void vtkOpenGLAntialiasingPass::BeginTemporalFrame(const vtkRenderState* s, cons
   viewProjection->DeepCopy(
     camera->GetCompositeProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1));
   const bool parallel = camera->GetParallelProjection() != 0;
-  const bool reset = !h.Valid || h.Width != frame.Width || h.Height != frame.Height ||
-    h.Parallel != parallel || h.Content != SceneSignature(s, false);
-  // Actors moved (or shown, or hidden) and nothing else changed: the history is kept and treated
-  // as for a moving camera (reprojected with the camera's motion, none here, and clamped to the
-  // current frame's neighbourhood, which removes what the actors left behind).
-  const bool actorsMoved = !reset && h.Scene != SceneSignature(s, true);
   // Current to previous normalised device coordinates: previous * inverse(current).
   vtkNew<vtkMatrix4x4> inverse;
   vtkMatrix4x4::Invert(viewProjection, inverse);
   vtkNew<vtkMatrix4x4> reprojection;
   vtkMatrix4x4::Multiply4x4(h.ViewProjection, inverse->GetData(), reprojection->GetData());
-  const bool moved = !reset &&
-    (actorsMoved ||
-      MaximumDisplacement(reprojection->GetData(), frame.Width, frame.Height) > StillDisplacement);
-  // Under a still camera, a pixel whose antialiased value is the same as at the last render is
-  // not touched by the actors' motion: its history is kept as it is (the rest of the image stays
-  // as steady as the single-frame pass, and keeps what it accumulated).
-  h.KeepUnchanged = actorsMoved &&
-    MaximumDisplacement(reprojection->GetData(), frame.Width, frame.Height) <= StillDisplacement;
+  const bool cameraMoved =
+    MaximumDisplacement(reprojection->GetData(), frame.Width, frame.Height) > StillDisplacement;
+  // Actors moved (or turned, scaled, shown or hidden) and nothing else changed, under a still
+  // camera: the history is kept where the method's frame did not change since the last
+  // unjittered render (the motion did not reach those pixels) and replaced by the current frame
+  // where it did (no ghost: without per-object motion vectors, clamping the history to the
+  // current neighbourhood lets an actor's colour survive over a textured background). With the
+  // camera moving too, the history is reset.
+  const bool actorsMoved = h.Valid && h.Scene != SceneSignature(s, true);
+  h.KeepUnchanged = actorsMoved && !cameraMoved && h.PreviousValid;
+  const bool reset = !h.Valid || h.Width != frame.Width || h.Height != frame.Height ||
+    h.Parallel != parallel || h.Content != SceneSignature(s, false) ||
+    (actorsMoved && !h.KeepUnchanged);
+  const bool moved = !reset && (h.KeepUnchanged || cameraMoved);
   if (reset)
   {
     h.FrameMode = TemporalHistory::RESET;
@@ -977,14 +979,21 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
     h.Framebuffer = vtkOpenGLFramebufferObject::New();
     h.Framebuffer->SetContext(renWin);
   }
-  // The last render's frame, which Current becomes after the blend.
-  std::swap(h.Current, h.Previous);
+  // Previous keeps the method's frame of the last unjittered render (a still accumulation's
+  // jittered frames go to Current and are not kept: the still scene's unjittered frame is the one
+  // its accumulation started with).
   for (vtkTextureObject* texture : { h.Current, h.Previous })
   {
     if (AllocateColorTarget(
           texture, width, height, 4, frame.FloatColor ? VTK_FLOAT : VTK_UNSIGNED_CHAR, false))
     {
-      h.KeepUnchanged = false; // what Previous held is gone
+      h.PreviousValid = false;
+      if (h.KeepUnchanged)
+      {
+        h.KeepUnchanged = false; // what Previous held is gone: start again
+        h.FrameMode = TemporalHistory::RESET;
+        h.Accumulated = 1;
+      }
     }
   }
   for (vtkTextureObject* history : h.Histories)
@@ -1083,6 +1092,11 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
   }
   h.Latest = next;
   h.Valid = true;
+  if (h.FrameMode != TemporalHistory::STILL)
+  {
+    std::swap(h.Current, h.Previous);
+    h.PreviousValid = true;
+  }
 
   // The result into the target viewport, with the delegate's depth (as the method writes it when
   // not in place), composited over lower layers when the renderer preserves the colour buffer.

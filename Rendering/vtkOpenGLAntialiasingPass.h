@@ -121,17 +121,16 @@ public:
    *   blended with weight TemporalWeight for the current frame where a pixel's history did not
    *   move, rising to 0.7 where it moved a pixel or more (each read between pixels blurs the
    *   history a little);
-   * - when actors (vtkActor) only move, turn, scale or are shown or hidden, the history is kept
-   *   and treated as for a moving camera (reprojected with the camera's motion alone, so the clamp
-   *   is what removes what the actors left behind: no ghost 2 frames later); under a still
-   *   camera, a pixel whose value in the method's frame is the same as at the last render, and
-   *   whose history lies within the current 3 x 3 range, keeps its history as it is (the still
-   *   part of the image stays as it was accumulated);
+   * - when actors (vtkActor) only move, turn, scale or are shown or hidden, under a still camera,
+   *   the frame is not jittered and the history is kept where the method's frame is the same as
+   *   at the last unjittered render (pixels the motion did not reach keep what they accumulated
+   *   and do not change), and replaced by the method's frame everywhere else (no ghost);
    * - the history is reset (the result is the method's frame alone) when the pass is switched on,
    *   on a resize, when the scene changes otherwise (a prop added or removed, another prop than
    *   an actor modified, an actor's mapper, its input, its properties or texture modified, a
-   *   light that does not follow the camera modified, the background), and when the camera
-   *   switches between parallel and perspective projection.
+   *   light that does not follow the camera modified, the background), when actors move while
+   *   the camera moves, and when the camera switches between parallel and perspective
+   *   projection.
    * Overlays (the deferred overlay step) are drawn after the blend, neither jittered nor blended.
    * The renderer is rendered into the pass's own textures (its depth is read). Hardware selection
    * renders bypass the pass and leave the history alone. A debug output of the method (MLAA)

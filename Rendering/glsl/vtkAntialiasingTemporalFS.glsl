@@ -10,8 +10,8 @@
 // Compile-time variants (#defines prepended by vtkOpenGLAntialiasingPass):
 //   TEMPORAL_OUTPUT     defined: writes the blended history (historyTexture) and the delegate's
 //                       depth into the target viewport (nothing is blended here).
-//   TEMPORAL_REPROJECT  defined (the camera or actors moved; currentTexture is the frame
-//                       antialiased by the method): the history is read where this pixel's point was in the previous
+//   TEMPORAL_REPROJECT  defined (the camera moved, or actors under a still camera;
+//                       currentTexture is the frame antialiased by the method): the history is read where this pixel's point was in the previous
 //                       frame, `reprojection` taking the current normalised device coordinates to
 //                       the previous ones, with the depth and motion of the nearest point of the
 //                       3 x 3 neighbourhood, by Catmull-Rom interpolation, and clamped per channel
@@ -20,9 +20,10 @@
 //                       outside the previous view takes the current frame alone. The current
 //                       frame's weight rises with the distance the history moved, from
 //                       currentWeight at rest to MovingWeight at MovingPixels and more. With
-//                       keepUnchanged (actors moved, the camera did not), a pixel whose value in
-//                       the method's frame equals the last render's (previousTexture) keeps its
-//                       history as it is.
+//                       keepUnchanged (actors moved, the camera did not), nothing is reprojected:
+//                       a pixel whose value in the method's frame equals the last unjittered
+//                       render's (previousTexture) keeps its history as it is, any other takes
+//                       the current frame.
 //   neither             (a still camera; currentTexture is the delegate's jittered render): the
 //                       history is read at this pixel, exactly, and not clamped: with
 //                       currentWeight 1 / N the blend is the running average of N renders.
@@ -111,17 +112,18 @@ void main()
 #ifdef TEMPORAL_REPROJECT
   // Actors moved under a still camera: where this pixel's antialiased value did not change, the
   // motion did not reach it, and its history is kept as it is.
+  if (keepUnchanged != 0)
+  {
+    // Actors moved under a still camera: a pixel whose value in the method's frame is the one of
+    // the last unjittered render was not reached by the motion and keeps its history; any other
+    // takes the current frame alone.
+    gl_FragData[0] = current == texelFetch(previousTexture, p, 0)
+      ? texelFetch(historyTexture, p, 0)
+      : current;
+    return;
+  }
   vec4 lo, hi;
   CurrentRange(p, size, lo, hi);
-  if (keepUnchanged != 0 && current == texelFetch(previousTexture, p, 0))
-  {
-    vec4 kept = texelFetch(historyTexture, p, 0);
-    if (kept == clamp(kept, lo, hi))
-    {
-      gl_FragData[0] = kept;
-      return;
-    }
-  }
   // The motion of the nearest point of the 3 x 3 neighbourhood moves this pixel: an antialiased
   // silhouette pixel, which holds some of the object, moves with the object, not with what is
   // behind it (the background, whose depth is the far plane, moves otherwise under a rotation).
