@@ -122,8 +122,8 @@ public:
    *   move, rising to 0.7 where it moved a pixel or more (each read between pixels blurs the
    *   history a little);
    * - when actors (vtkActor) only move, turn, scale or are shown or hidden, under a still camera,
-   *   the frame is not jittered and the history is kept where the method's frame is the same as
-   *   at the last unjittered render (pixels the motion did not reach keep what they accumulated
+   *   the frame is not jittered and the history is kept where the method's frame (the pixel's
+   *   3 x 3 neighbourhood) is the same as at the last unjittered render (pixels the motion did not reach keep what they accumulated
    *   and do not change), and replaced by the method's frame everywhere else (no ghost);
    * - the history is reset (the result is the method's frame alone) when the pass is switched on,
    *   on a resize, when the scene changes otherwise (a prop added or removed, another prop than

@@ -21,9 +21,9 @@
 //                       frame's weight rises with the distance the history moved, from
 //                       currentWeight at rest to MovingWeight at MovingPixels and more. With
 //                       keepUnchanged (actors moved, the camera did not), nothing is reprojected:
-//                       a pixel whose value in the method's frame equals the last unjittered
-//                       render's (previousTexture) keeps its history as it is, any other takes
-//                       the current frame.
+//                       a pixel whose 3 x 3 neighbourhood in the method's frame equals the last
+//                       unjittered render's (previousTexture) keeps its history as it is, any
+//                       other takes the current frame.
 //   neither             (a still camera; currentTexture is the delegate's jittered render): the
 //                       history is read at this pixel, exactly, and not clamped: with
 //                       currentWeight 1 / N the blend is the running average of N renders.
@@ -114,12 +114,21 @@ void main()
   // motion did not reach it, and its history is kept as it is.
   if (keepUnchanged != 0)
   {
-    // Actors moved under a still camera: a pixel whose value in the method's frame is the one of
-    // the last unjittered render was not reached by the motion and keeps its history; any other
-    // takes the current frame alone.
-    gl_FragData[0] = current == texelFetch(previousTexture, p, 0)
-      ? texelFetch(historyTexture, p, 0)
-      : current;
+    // Actors moved under a still camera: a pixel whose 3 x 3 neighbourhood in the method's frame
+    // is the one of the last unjittered render was not reached by the motion and keeps its
+    // history; any other takes the current frame alone. (The neighbourhood, not the pixel alone:
+    // a pixel that an edge crossed holds part of the actor in its history while its own sample
+    // may be the background before and after; a neighbour across the edge changed.)
+    bool unchanged = true;
+    for (int j = -1; j <= 1; ++j)
+    {
+      for (int i = -1; i <= 1; ++i)
+      {
+        ivec2 q = clamp(p + ivec2(i, j), ivec2(0), size - 1);
+        unchanged = unchanged && texelFetch(currentTexture, q, 0) == texelFetch(previousTexture, q, 0);
+      }
+    }
+    gl_FragData[0] = unchanged ? texelFetch(historyTexture, p, 0) : current;
     return;
   }
   vec4 lo, hi;
