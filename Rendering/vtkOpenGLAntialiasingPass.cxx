@@ -2,10 +2,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkOpenGLAntialiasingPass.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkDataObject.h"
 #include "vtkDualDepthPeelingPass.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
+#include "vtkMapper.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -19,11 +22,13 @@
 #include "vtkOpenGLState.h"
 #include "vtkOrderIndependentTranslucentPass.h"
 #include "vtkProp.h"
+#include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
+#include "vtkTexture.h"
 #include "vtkTextureObject.h"
 #include "vtkTranslucentPass.h"
 #include "vtkVersionMacros.h"
@@ -41,6 +46,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <utility>
 #include <vector>
 
 using namespace vtkOpenGLAntialiasingPassInternals;
@@ -88,6 +94,7 @@ public:
   };
 
   vtkTextureObject* Current = nullptr;               // this frame, antialiased
+  vtkTextureObject* Previous = nullptr; // the last unjittered render's frame, antialiased
   vtkTextureObject* Histories[2] = { nullptr, nullptr }; // RGBA32F, read and written in turn
   int Latest = 0;                                    // the one written last
   vtkOpenGLFramebufferObject* Framebuffer = nullptr;
@@ -99,28 +106,33 @@ public:
   int Width = 0, Height = 0;
   double ViewProjection[16] = {}; // unjittered, of the last temporal render
   bool Parallel = false;
-  std::vector<std::uint64_t> Scene; // SceneSignature after the last render
+  std::vector<std::uint64_t> Scene;   // SceneSignature after the last render
+  std::vector<std::uint64_t> Content; // the same without the actors' placement
 
   // This render's decisions.
   Mode FrameMode = RESET;
   double Reprojection[16] = {}; // current to previous normalised device coordinates, transposed
+  bool KeepUnchanged = false;   // actors moved under a still camera: see BeginTemporalFrame
+  bool PreviousValid = false;   // Previous holds the last unjittered render of this size
   vtkCamera* JitteredCamera = nullptr;
   double SavedWindowCenter[2] = { 0.0, 0.0 };
 
   void Release(vtkWindow* w)
   {
     DeleteObject(this->Current, w);
+    DeleteObject(this->Previous, w);
     DeleteObject(this->Histories[0], w);
     DeleteObject(this->Histories[1], w);
     DeleteObject(this->Framebuffer, w);
     this->BlendQuad.Release(w);
     this->OutputQuad.Release(w);
     this->Valid = false;
+    this->PreviousValid = false;
     this->Accumulated = 0;
   }
   bool HoldsResources() const
   {
-    return this->Current || this->Histories[0] || this->Histories[1] || this->Framebuffer;
+    return this->Current || this->Previous || this->Histories[0] || this->Histories[1] || this->Framebuffer;
   }
 };
 
@@ -179,15 +191,38 @@ std::uint64_t Bits(double value)
 
 // What a temporal history depends on besides the camera: the props drawn (which, and their
 // modified times, mappers and inputs included), the lights that do not follow the camera (those
-// that do move with it, which reprojection handles) and the background.
-std::vector<std::uint64_t> SceneSignature(const vtkRenderState* s)
+// that do move with it, which reprojection handles) and the background. With `placement` false an
+// actor's own modified time (its position, orientation, scale, user matrix and visibility) is left
+// out and the times of what it draws are taken instead (its mapper, the mapper's input, its
+// properties and texture): a change of that signature discards the history, a change of the
+// other one alone (actors moved, shown or hidden) keeps it, reprojected and clamped.
+std::vector<std::uint64_t> SceneSignature(const vtkRenderState* s, bool placement)
 {
   std::vector<std::uint64_t> signature;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
     vtkProp* prop = s->GetPropArray()[i];
     signature.push_back(reinterpret_cast<std::uintptr_t>(prop));
-    signature.push_back(prop->GetRedrawMTime());
+    const vtkMTimeType redraw = prop->GetRedrawMTime(); // brings the mapper's input up to date
+    vtkActor* actor = vtkActor::SafeDownCast(prop);
+    if (placement || !actor)
+    {
+      signature.push_back(redraw);
+      continue;
+    }
+    vtkMapper* mapper = actor->GetMapper();
+    vtkDataObject* input = mapper && mapper->GetNumberOfInputPorts() > 0 &&
+        mapper->GetNumberOfInputConnections(0) > 0
+      ? mapper->GetInputDataObject(0, 0)
+      : nullptr;
+    for (vtkObject* part : { static_cast<vtkObject*>(mapper), static_cast<vtkObject*>(input),
+           static_cast<vtkObject*>(actor->GetProperty()),
+           static_cast<vtkObject*>(actor->GetBackfaceProperty()),
+           static_cast<vtkObject*>(actor->GetTexture()) })
+    {
+      signature.push_back(reinterpret_cast<std::uintptr_t>(part));
+      signature.push_back(part ? part->GetMTime() : 0);
+    }
   }
   vtkRenderer* renderer = s->GetRenderer();
   vtkLightCollection* lights = renderer->GetLights();
@@ -784,6 +819,7 @@ vtkIdType vtkOpenGLAntialiasingPass::GetTargetMemorySize()
   return TextureBytes(this->ColorTexture, colorBytes) + TextureBytes(this->DepthTexture, 4) +
     TextureBytes(this->AlphaTexture, colorBytes / 4) + this->GetMethodTargetMemorySize() +
     (this->History ? TextureBytes(this->History->Current, colorBytes) +
+          TextureBytes(this->History->Previous, colorBytes) +
           TextureBytes(this->History->Histories[0], 16) +
           TextureBytes(this->History->Histories[1], 16)
                    : 0) +
@@ -897,15 +933,25 @@ void vtkOpenGLAntialiasingPass::BeginTemporalFrame(const vtkRenderState* s, cons
   viewProjection->DeepCopy(
     camera->GetCompositeProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1));
   const bool parallel = camera->GetParallelProjection() != 0;
-  const bool reset = !h.Valid || h.Width != frame.Width || h.Height != frame.Height ||
-    h.Parallel != parallel || h.Scene != SceneSignature(s);
   // Current to previous normalised device coordinates: previous * inverse(current).
   vtkNew<vtkMatrix4x4> inverse;
   vtkMatrix4x4::Invert(viewProjection, inverse);
   vtkNew<vtkMatrix4x4> reprojection;
   vtkMatrix4x4::Multiply4x4(h.ViewProjection, inverse->GetData(), reprojection->GetData());
-  const bool moved = !reset &&
+  const bool cameraMoved =
     MaximumDisplacement(reprojection->GetData(), frame.Width, frame.Height) > StillDisplacement;
+  // Actors moved (or turned, scaled, shown or hidden) and nothing else changed, under a still
+  // camera: the history is kept where the method's frame did not change since the last
+  // unjittered render (the motion did not reach those pixels) and replaced by the current frame
+  // where it did (no ghost: without per-object motion vectors, clamping the history to the
+  // current neighbourhood lets an actor's colour survive over a textured background). With the
+  // camera moving too, the history is reset.
+  const bool actorsMoved = h.Valid && h.Scene != SceneSignature(s, true);
+  h.KeepUnchanged = actorsMoved && !cameraMoved && h.PreviousValid;
+  const bool reset = !h.Valid || h.Width != frame.Width || h.Height != frame.Height ||
+    h.Parallel != parallel || h.Content != SceneSignature(s, false) ||
+    (actorsMoved && !h.KeepUnchanged);
+  const bool moved = !reset && (h.KeepUnchanged || cameraMoved);
   if (reset)
   {
     h.FrameMode = TemporalHistory::RESET;
@@ -939,8 +985,10 @@ void vtkOpenGLAntialiasingPass::BeginTemporalFrame(const vtkRenderState* s, cons
   // While the camera moves the frame is not jittered: the motion itself moves the samples, and
   // the jitter's frame-to-frame noise, which the blend keeps a tenth of, flickered more than it
   // removed (mlaa-temporal at 200 x 150, 24 frames of 0.2 degree: mean T-AAR 0.36 without, -0.12
-  // with, for MLAA; docs/render-pass.md).
-  if (h.FrameMode == TemporalHistory::MOVING)
+  // with, for MLAA; docs/render-pass.md). The first frame after a reset is not jittered either:
+  // it may be the first of a motion, whose history would otherwise start shifted by the offset
+  // and drift back over the next frames (thin orbit scene at 0.2 degree: T-AAR 0.23 to 0.45).
+  if (h.FrameMode != TemporalHistory::STILL)
   {
     return;
   }
@@ -963,7 +1011,8 @@ void vtkOpenGLAntialiasingPass::EndTemporalJitter(const vtkRenderState* s)
   }
   // The scene as the render left it (mappers may update themselves while they draw): what the
   // next render compares with.
-  h.Scene = SceneSignature(s);
+  h.Scene = SceneSignature(s, true);
+  h.Content = SceneSignature(s, false);
 }
 
 //------------------------------------------------------------------------------
@@ -976,13 +1025,29 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
   if (!h.Current)
   {
     h.Current = NewTexture(renWin);
+    h.Previous = NewTexture(renWin);
     h.Histories[0] = NewTexture(renWin);
     h.Histories[1] = NewTexture(renWin);
     h.Framebuffer = vtkOpenGLFramebufferObject::New();
     h.Framebuffer->SetContext(renWin);
   }
-  AllocateColorTarget(
-    h.Current, width, height, 4, frame.FloatColor ? VTK_FLOAT : VTK_UNSIGNED_CHAR, false);
+  // Previous keeps the method's frame of the last unjittered render (a still accumulation's
+  // jittered frames go to Current and are not kept: the still scene's unjittered frame is the one
+  // its accumulation started with).
+  for (vtkTextureObject* texture : { h.Current, h.Previous })
+  {
+    if (AllocateColorTarget(
+          texture, width, height, 4, frame.FloatColor ? VTK_FLOAT : VTK_UNSIGNED_CHAR, false))
+    {
+      h.PreviousValid = false;
+      if (h.KeepUnchanged)
+      {
+        h.KeepUnchanged = false; // what Previous held is gone: start again
+        h.FrameMode = TemporalHistory::RESET;
+        h.Accumulated = 1;
+      }
+    }
+  }
   for (vtkTextureObject* history : h.Histories)
   {
     // 32-bit floating point: a running average of many frames moves by less than 1/255 a frame.
@@ -1057,8 +1122,15 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
           matrix[i] = static_cast<float>(h.Reprojection[i]);
         }
         program->SetUniformMatrix4x4("reprojection", matrix);
+        h.Previous->Activate();
+        program->SetUniformi("previousTexture", h.Previous->GetTextureUnit());
+        program->SetUniformi("keepUnchanged", h.KeepUnchanged ? 1 : 0);
       }
       h.BlendQuad.Quad->Render();
+      if (reproject)
+      {
+        h.Previous->Deactivate();
+      }
       this->DepthTexture->Deactivate();
       h.Histories[h.Latest]->Deactivate();
       current->Deactivate();
@@ -1072,6 +1144,11 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
   }
   h.Latest = next;
   h.Valid = true;
+  if (h.FrameMode != TemporalHistory::STILL)
+  {
+    std::swap(h.Current, h.Previous);
+    h.PreviousValid = true;
+  }
 
   // The result into the target viewport, with the delegate's depth (as the method writes it when
   // not in place), composited over lower layers when the renderer preserves the colour buffer.

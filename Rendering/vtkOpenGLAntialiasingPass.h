@@ -112,18 +112,26 @@ public:
    *   before the overlays are drawn and before Render returns) and the history is the exact
    *   running average of these renders since the last change: N renders of a still scene give
    *   the mean of N jittered renders, which converges to the supersampled picture (line widths
-   *   and point sizes kept); the first frame of an accumulation is the method's antialiased frame
+   *   and point sizes kept); the first frame of an accumulation is the method's antialiased frame,
+   *   not jittered (it may be the first frame of a motion)
    *   (RenderConverged asks for a converged still);
    * - when the camera moves, the frame (not jittered) is antialiased by the method, and the
    *   history is reprojected with the delegate's depth and the previous and current
    *   view-projection matrices, clamped to the range of the current frame's 3 x 3 neighbourhood
    *   (rejecting what the current frame does not support: disocclusions, changed shading) and
-   *   blended with weight TemporalWeight for the current frame;
+   *   blended with weight TemporalWeight for the current frame where a pixel's history did not
+   *   move, rising to 0.7 where it moved a pixel or more (each read between pixels blurs the
+   *   history a little);
+   * - when actors (vtkActor) only move, turn, scale or are shown or hidden, under a still camera,
+   *   the frame is not jittered and the history is kept where the method's frame (the pixel's
+   *   3 x 3 neighbourhood) is the same as at the last unjittered render (pixels the motion did not reach keep what they accumulated
+   *   and do not change), and replaced by the method's frame everywhere else (no ghost);
    * - the history is reset (the result is the method's frame alone) when the pass is switched on,
-   *   on a resize, when the scene changes (a prop added, removed or modified, by the modified
-   *   times of the props, their mappers and inputs, of the lights that do not follow the camera,
-   *   and the background), and when the camera switches between parallel and perspective
-   *   projection. A moving actor therefore resets the history at each render.
+   *   on a resize, when the scene changes otherwise (a prop added or removed, another prop than
+   *   an actor modified, an actor's mapper, its input, its properties or texture modified, a
+   *   light that does not follow the camera modified, the background), when actors move while
+   *   the camera moves, and when the camera switches between parallel and perspective
+   *   projection.
    * Overlays (the deferred overlay step) are drawn after the blend, neither jittered nor blended.
    * The renderer is rendered into the pass's own textures (its depth is read). Hardware selection
    * renders bypass the pass and leave the history alone. A debug output of the method (MLAA)
@@ -139,7 +147,9 @@ public:
   // /@{
   /**
    * Weight of the current frame in the blend while the camera moves (the history has 1 minus
-   * it). Smaller is steadier and slower to follow. Default 0.1, clamped to [0.01, 1].
+   * it), for pixels whose history did not move; it rises linearly to 0.7 (or TemporalWeight if
+   * larger) for pixels whose history moved one pixel or more since the last frame. Smaller is
+   * steadier and slower to follow. Default 0.1, clamped to [0.01, 1].
    */
   vtkSetClampMacro(TemporalWeight, double, 0.01, 1.0);
   vtkGetMacro(TemporalWeight, double);

@@ -38,6 +38,7 @@
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -152,6 +153,24 @@ std::vector<Method> Methods()
   return methods;
 }
 
+// Writes `frame` (rows bottom to top, as read back) as a binary PPM, top row first.
+bool WritePPM(const std::string& path, const Frame& frame, int width, int height)
+{
+  std::ofstream out(path, std::ios::binary);
+  out << "P6\n" << width << " " << height << "\n255\n";
+  std::vector<unsigned char> row(static_cast<std::size_t>(width) * 3);
+  for (int y = height - 1; y >= 0; --y)
+  {
+    for (std::size_t v = 0; v < row.size(); ++v)
+    {
+      row[v] = static_cast<unsigned char>(
+        std::lround(std::min(255.0, std::max(0.0, frame[y * row.size() + v]))));
+    }
+    out.write(reinterpret_cast<const char*>(row.data()), static_cast<std::streamsize>(row.size()));
+  }
+  return static_cast<bool>(out);
+}
+
 // AAR of MEASURING.md: 1 - MSE_E(method, reference) / MSE_E(none, reference) over the values of
 // the pixels where none and the reference differ by more than 4/255 in some channel.
 double AAR(const Frame& none, const Frame& method, const Frame& reference)
@@ -194,7 +213,10 @@ void Usage(const char* program)
             << "  --frames K        frames of the orbit (default 60)\n"
             << "  --degrees D       camera azimuth step per frame (default 0.25)\n"
             << "  --samples N       reference is N x N shifted renders per frame (default 8)\n"
-            << "  --output-dir DIR  where temporal.csv goes (default .)\n";
+            << "  --methods a,b,c   methods measured (default all; none, the T-AAR's baseline, always)\n"
+            << "  --output-dir DIR  where temporal.csv goes (default .)\n"
+            << "  --write-frames    also write every frame of every method and the reference as\n"
+            << "                    DIR/frames/<scene>-<method>-<k>.ppm (binary PPM, 8-bit RGB)\n";
 }
 }
 
@@ -204,6 +226,8 @@ int main(int argc, char* argv[])
   double degrees = 0.25;
   std::vector<std::string> scenes = { "horizon", "thin", "texture", "silhouettes", "orbit" };
   std::string outputDir = ".";
+  std::vector<std::string> chosen; // empty: every method
+  bool writeFrames = false;
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -234,6 +258,14 @@ int main(int argc, char* argv[])
     else if (arg == "--samples" && hasValue && mlaaBenchmark::ParsePositive(argv[i + 1], samples))
     {
       ++i;
+    }
+    else if (arg == "--write-frames")
+    {
+      writeFrames = true;
+    }
+    else if (arg == "--methods" && hasValue)
+    {
+      chosen = mlaaBenchmark::SplitList(argv[++i]);
     }
     else if (arg == "--output-dir" && hasValue)
     {
@@ -266,7 +298,40 @@ int main(int argc, char* argv[])
   std::cout << "mlaa-temporal: " << width << "x" << height << ", " << frames << " frames, "
             << degrees << " degree(s) of azimuth a frame, reference " << samples << "x" << samples
             << " shifted renders a frame" << std::endl;
-  const std::vector<Method> methods = Methods();
+  std::vector<Method> methods;
+  {
+    std::vector<Method> all = Methods();
+    for (const auto& name : chosen)
+    {
+      bool known = false;
+      for (const auto& method : all)
+      {
+        known = known || method.Name == name;
+      }
+      if (!known)
+      {
+        std::cerr << "unknown method: " << name << " (known:";
+        for (const auto& method : all)
+        {
+          std::cerr << " " << method.Name;
+        }
+        std::cerr << ")" << std::endl;
+        return EXIT_FAILURE;
+      }
+    }
+    for (auto& method : all)
+    {
+      bool wanted = chosen.empty() || method.Name == "none";
+      for (const auto& name : chosen)
+      {
+        wanted = wanted || method.Name == name;
+      }
+      if (wanted)
+      {
+        methods.push_back(std::move(method));
+      }
+    }
+  }
   std::map<std::string, std::map<std::string, Result>> results; // scene -> method -> result
   std::string rendererName;
   const std::size_t values = static_cast<std::size_t>(width) * height * 3;
@@ -326,6 +391,25 @@ int main(int argc, char* argv[])
         method.Enable(renderer, window);
         current[method.Name] = Grab(window);
         method.Disable(renderer, window);
+      }
+      if (writeFrames)
+      {
+        const std::string stem = outputDir + "/frames/" + scene + "-";
+        std::filesystem::create_directories(outputDir + "/frames", directoryError);
+        bool written = WritePPM(stem + "reference-" + std::to_string(k) + ".ppm", reference,
+          width, height);
+        for (const auto& method : methods)
+        {
+          written = written &&
+            WritePPM(stem + method.Name + "-" + std::to_string(k) + ".ppm", current[method.Name],
+              width, height);
+        }
+        if (!written)
+        {
+          std::cerr << "mlaa-temporal: cannot write the frames under " << outputDir << "/frames"
+                    << std::endl;
+          return EXIT_FAILURE;
+        }
       }
       // Spatial error over E (none and reference differ by more than 4/255 in some channel).
       const Frame& none = current["none"];

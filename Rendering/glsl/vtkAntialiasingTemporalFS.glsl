@@ -10,14 +10,20 @@
 // Compile-time variants (#defines prepended by vtkOpenGLAntialiasingPass):
 //   TEMPORAL_OUTPUT     defined: writes the blended history (historyTexture) and the delegate's
 //                       depth into the target viewport (nothing is blended here).
-//   TEMPORAL_REPROJECT  defined (the camera moved; currentTexture is the frame antialiased by the
-//                       method): the history is read where this pixel's point was in the previous
+//   TEMPORAL_REPROJECT  defined (the camera moved, or actors under a still camera;
+//                       currentTexture is the frame antialiased by the method): the history is read where this pixel's point was in the previous
 //                       frame, `reprojection` taking the current normalised device coordinates to
 //                       the previous ones, with the depth and motion of the nearest point of the
 //                       3 x 3 neighbourhood, by Catmull-Rom interpolation, and clamped per channel
 //                       to the range of the current frame's 3 x 3 neighbourhood (what the current
 //                       frame does not support: disocclusions, changed shading); a point that was
-//                       outside the previous view takes the current frame alone.
+//                       outside the previous view takes the current frame alone. The current
+//                       frame's weight rises with the distance the history moved, from
+//                       currentWeight at rest to MovingWeight at MovingPixels and more. With
+//                       keepUnchanged (actors moved, the camera did not), nothing is reprojected:
+//                       a pixel whose 3 x 3 neighbourhood in the method's frame equals the last
+//                       unjittered render's (previousTexture) keeps its history as it is, any
+//                       other takes the current frame.
 //   neither             (a still camera; currentTexture is the delegate's jittered render): the
 //                       history is read at this pixel, exactly, and not clamped: with
 //                       currentWeight 1 / N the blend is the running average of N renders.
@@ -32,8 +38,20 @@ uniform sampler2D currentTexture; // this frame
 uniform float currentWeight;
 uniform mat4 reprojection;
 #endif
+#ifdef TEMPORAL_REPROJECT
+uniform sampler2D previousTexture; // the last render's frame, antialiased by the method
+uniform int keepUnchanged;
+#endif
 
 #ifdef TEMPORAL_REPROJECT
+// The weight of the current frame for a pixel whose history moved MovingPixels or more since the
+// last frame. Reading the history between texels blurs it a little (Catmull-Rom is close to exact
+// only near texel centres), and a pixel's history has been read again at every frame it carries:
+// the farther it moves a frame, the shorter the history it keeps. Measured on mlaa-temporal's five
+// orbit scenes at 0.2 and 0.5 degrees a frame (docs/measurements.md).
+const float MovingWeight = 0.7;
+const float MovingPixels = 1.0;
+
 // The history at `uv` (texture coordinates), interpolated by Catmull-Rom over the 4 x 4 texels
 // around it: a bilinear read would blur the history a little more at every frame of a moving
 // camera, and the blur would add up.
@@ -58,6 +76,22 @@ vec4 CatmullRom(sampler2D image, vec2 uv, ivec2 size)
   }
   return sum;
 }
+
+// The range, per channel, of the current frame over the 3 x 3 neighbourhood of `p`.
+void CurrentRange(ivec2 p, ivec2 size, out vec4 lo, out vec4 hi)
+{
+  lo = texelFetch(currentTexture, p, 0);
+  hi = lo;
+  for (int j = -1; j <= 1; ++j)
+  {
+    for (int i = -1; i <= 1; ++i)
+    {
+      vec4 c = texelFetch(currentTexture, clamp(p + ivec2(i, j), ivec2(0), size - 1), 0);
+      lo = min(lo, c);
+      hi = max(hi, c);
+    }
+  }
+}
 #endif
 
 void main()
@@ -76,6 +110,29 @@ void main()
     return;
   }
 #ifdef TEMPORAL_REPROJECT
+  // Actors moved under a still camera: where this pixel's antialiased value did not change, the
+  // motion did not reach it, and its history is kept as it is.
+  if (keepUnchanged != 0)
+  {
+    // Actors moved under a still camera: a pixel whose 3 x 3 neighbourhood in the method's frame
+    // is the one of the last unjittered render was not reached by the motion and keeps its
+    // history; any other takes the current frame alone. (The neighbourhood, not the pixel alone:
+    // a pixel that an edge crossed holds part of the actor in its history while its own sample
+    // may be the background before and after; a neighbour across the edge changed.)
+    bool unchanged = true;
+    for (int j = -1; j <= 1; ++j)
+    {
+      for (int i = -1; i <= 1; ++i)
+      {
+        ivec2 q = clamp(p + ivec2(i, j), ivec2(0), size - 1);
+        unchanged = unchanged && texelFetch(currentTexture, q, 0) == texelFetch(previousTexture, q, 0);
+      }
+    }
+    gl_FragData[0] = unchanged ? texelFetch(historyTexture, p, 0) : current;
+    return;
+  }
+  vec4 lo, hi;
+  CurrentRange(p, size, lo, hi);
   // The motion of the nearest point of the 3 x 3 neighbourhood moves this pixel: an antialiased
   // silhouette pixel, which holds some of the object, moves with the object, not with what is
   // behind it (the background, whose depth is the far plane, moves otherwise under a rotation).
@@ -102,21 +159,14 @@ void main()
     return;
   }
   vec4 history = CatmullRom(historyTexture, uv, size);
-  vec4 lo = current;
-  vec4 hi = current;
-  for (int j = -1; j <= 1; ++j)
-  {
-    for (int i = -1; i <= 1; ++i)
-    {
-      vec4 c = texelFetch(currentTexture, clamp(p + ivec2(i, j), ivec2(0), size - 1), 0);
-      lo = min(lo, c);
-      hi = max(hi, c);
-    }
-  }
   history = clamp(history, lo, hi);
+  float moved = length((uv - (vec2(p) + 0.5) / vec2(size)) * vec2(size));
+  float weight = mix(currentWeight, max(currentWeight, MovingWeight),
+    clamp(moved / MovingPixels, 0.0, 1.0));
+  gl_FragData[0] = mix(history, current, weight);
 #else
   vec4 history = texelFetch(historyTexture, p, 0);
-#endif
   gl_FragData[0] = mix(history, current, currentWeight);
+#endif
 #endif
 }
