@@ -113,6 +113,23 @@ inline void CombineUnlike(const unsigned char* __restrict toE,
 }
 
 /** The number of bits set in an 8-bit mask. */
+// Where x is a multiple of 8 with eight mask bytes left in the row (w wide) and all eight are
+// zero, moves x to the last of them and returns true, so that the caller's loop goes past them.
+inline bool SkipClearEight(const unsigned char* mask, int& x, int w)
+{
+  if ((x & 7) == 0 && x + 8 <= w)
+  {
+    std::uint64_t eight;
+    std::memcpy(&eight, mask + x, sizeof(eight));
+    if (eight == 0)
+    {
+      x += 7;
+      return true;
+    }
+  }
+  return false;
+}
+
 inline int Popcount8(unsigned int m)
 {
   m = (m & 0x55u) + ((m >> 1) & 0x55u);
@@ -279,16 +296,9 @@ void Reconstruct(const ReconstructionSettings& setup, const T* input, vtkIdType 
       unsigned char* shapeCount = shapeCounts.data() + s * uw;
       for (int x = 0; x < w; ++x)
       {
-        if ((x & 7) == 0 && x + 8 <= w)
+        if (SkipClearEight(mask, x, w))
         {
-          // Most pixels have no unlike neighbour: eight at a time are skipped.
-          std::uint64_t eight;
-          std::memcpy(&eight, mask + x, sizeof(eight));
-          if (eight == 0)
-          {
-            x += 7;
-            continue;
-          }
+          continue; // most pixels have no unlike neighbour
         }
         if (!selected[mask[x]])
         {
@@ -357,15 +367,9 @@ void Reconstruct(const ReconstructionSettings& setup, const T* input, vtkIdType 
       const unsigned char* mask = masks.data() + s * uw;
       for (int x = 0; x < w; ++x)
       {
-        if ((x & 7) == 0 && x + 8 <= w)
+        if (SkipClearEight(mask, x, w))
         {
-          std::uint64_t eight;
-          std::memcpy(&eight, mask + x, sizeof(eight));
-          if (eight == 0)
-          {
-            x += 7;
-            continue;
-          }
+          continue;
         }
         const int unlike = mask[x];
         if (!unlike)
