@@ -219,21 +219,7 @@ std::string ReadMessages(int fd, off_t limit = 65536)
   }
   const off_t start = size > limit ? size - limit : 0;
   std::string text(static_cast<size_t>(size - start), '\0');
-  size_t got = 0;
-  while (got < text.size())
-  {
-    const ssize_t n = pread(fd, &text[got], text.size() - got, start + static_cast<off_t>(got));
-    if (n < 0 && errno == EINTR)
-    {
-      continue;
-    }
-    if (n <= 0)
-    {
-      break;
-    }
-    got += static_cast<size_t>(n);
-  }
-  text.resize(got);
+  text.resize(mlaa::ReadAt(fd, static_cast<std::uint64_t>(start), &text[0], text.size()));
   return (start > 0 ? "[... earlier messages left out ...]\n" : "") + text;
 }
 } // namespace

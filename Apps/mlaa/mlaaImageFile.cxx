@@ -161,6 +161,25 @@ double IntegerTypeMaximum(OIIO::TypeDesc type)
 } // namespace
 
 //------------------------------------------------------------------------------
+size_t ReadAt(int fd, std::uint64_t offset, char* data, size_t size)
+{
+  size_t done = 0;
+  while (done < size)
+  {
+    const ssize_t got = pread(fd, data + done, size - done, static_cast<off_t>(offset + done));
+    if (got < 0 && errno == EINTR)
+    {
+      continue;
+    }
+    if (got <= 0)
+    {
+      break;
+    }
+    done += static_cast<size_t>(got);
+  }
+  return done;
+}
+
 std::string Printable(const std::string& text, size_t maxLength, bool joinLines)
 {
   if (!joinLines)
@@ -488,24 +507,10 @@ public:
   const std::string& GetReadPath() const { return this->ReadPath; }
   /** The extension of the input's name ("" for standard input). */
   const std::string& GetFormatHint() const { return this->FormatHint; }
-  /** Up to `size` bytes of the file from `offset` (fewer at its end, none on an error). */
+  /** Up to `size` bytes of the file from `offset` (mlaa::ReadAt). */
   size_t ReadAt(std::uint64_t offset, unsigned char* data, size_t size) const
   {
-    size_t done = 0;
-    while (done < size)
-    {
-      const ssize_t got = pread(this->Fd, data + done, size - done, static_cast<off_t>(offset + done));
-      if (got < 0 && errno == EINTR)
-      {
-        continue;
-      }
-      if (got <= 0)
-      {
-        break;
-      }
-      done += static_cast<size_t>(got);
-    }
-    return done;
+    return mlaa::ReadAt(this->Fd, offset, reinterpret_cast<char*>(data), size);
   }
 
   /** OpenImageIO's message with the descriptor path replaced by the input's name. */

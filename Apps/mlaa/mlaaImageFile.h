@@ -56,6 +56,12 @@ namespace mlaa
 std::string Printable(const std::string& text, size_t maxLength = 300, bool joinLines = true);
 
 /**
+ * Reads up to `size` bytes of the file open as `fd` from `offset` into `data`, retrying
+ * interrupted reads; returns how many it read (fewer at the end of the file, or on an error).
+ */
+size_t ReadAt(int fd, std::uint64_t offset, char* data, size_t size);
+
+/**
  * The largest image, in pixels, that reading `channels` channels of `type` may allocate by
  * default: what the tool would hold of it (input, output, the filter's buffers) must fit in half
  * of the memory the kernel says is available (MemAvailable), divided between the images in
