@@ -1342,14 +1342,8 @@ bool vtkOpenGLAntialiasingPass::CopySample(
   fbo->AddColorAttachment(0, this->ColorTexture);
   fbo->ActivateDrawBuffer(0);
   fbo->AddDepthAttachment(this->DepthTexture);
-  ostate->vtkglViewport(0, 0, width, height);
-  ostate->vtkglScissor(0, 0, width, height);
-  ostate->vtkglDisable(GL_BLEND);
-  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  // Depth writes need the depth test on; ALWAYS copies the sample's depth.
-  ostate->vtkglEnable(GL_DEPTH_TEST);
-  ostate->vtkglDepthFunc(GL_ALWAYS);
-  ostate->vtkglDepthMask(GL_TRUE);
+  // No blending; the sample's depth is copied.
+  SetTargetWriteState(ostate, 0, 0, width, height, false, true);
   if (!this->ReadyQuad(
         renWin, this->SampleCopyQuad, vtkAntialiasingSamplesFS, Define("SAMPLES_COPY", true)))
   {

@@ -14,6 +14,7 @@
 #include "vtkActor2D.h"
 #include "vtkActor2DCollection.h"
 #include "vtkActorCollection.h"
+#include "vtkCamera.h"
 #include "vtkDLAAOptions.h"
 #include "vtkDataObject.h"
 #include "vtkExtractVOI.h"
@@ -29,6 +30,7 @@
 #include "vtkRenderer.h"
 #include "vtkSelection.h"
 #include "vtkSelectionNode.h"
+#include "vtkWindowToImageFilter.h"
 
 #include <set>
 
@@ -322,6 +324,33 @@ struct SceneWindow
   }
   ~SceneWindow() { StopPass(this->Renderer, this->Window); }
 };
+
+// The window's z-buffer as it was last rendered (not rendered again), as an image.
+inline vtkSmartPointer<vtkImageData> ZBuffer(vtkRenderWindow* window)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToZBuffer();
+  grab->ReadFrontBufferOff();
+  grab->ShouldRerenderOff();
+  grab->Update();
+  auto depth = vtkSmartPointer<vtkImageData>::New();
+  depth->DeepCopy(grab->GetOutput());
+  return depth;
+}
+
+// A parallel camera over a `width` x `height` window that maps one world unit to one pixel:
+// world (x, y, 0) lands at pixel (x, y) counted from the bottom left corner of the window.
+inline void UsePixelCamera(vtkRenderer* renderer, int width, int height)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->ParallelProjectionOn();
+  camera->SetFocalPoint(width / 2.0, height / 2.0, 0.0);
+  camera->SetPosition(width / 2.0, height / 2.0, 100.0);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->SetParallelScale(height / 2.0);
+  renderer->ResetCameraClippingRange();
+}
 
 // The ids of every node of a selection, with the node's prop id (plus one) in the high bits.
 inline std::set<vtkIdType> SelectedIds(vtkSelection* selection)

@@ -343,19 +343,6 @@ struct Window
   Window() { this->RenderWindow->AddRenderer(this->Renderer); }
   ~Window() { StopPass(this->Renderer, this->RenderWindow); }
 };
-
-vtkSmartPointer<vtkImageData> ZBuffer(vtkRenderWindow* window)
-{
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->SetInputBufferTypeToZBuffer();
-  grab->ReadFrontBufferOff();
-  grab->ShouldRerenderOff();
-  grab->Update();
-  auto depth = vtkSmartPointer<vtkImageData>::New();
-  depth->DeepCopy(grab->GetOutput());
-  return depth;
-}
 }
 
 int TestAntialiasingPassTranslucency(int, char*[])

@@ -5,21 +5,12 @@
 // edges inside a surface are left alone (unlike luma edges).
 #include "vtkAntialiasingRenderTestUtilities.h"
 
-#include "vtkWindowToImageFilter.h"
-
 using namespace vtkMLAATest;
 
 int TestMLAAPassDepthEdges(int, char*[])
 {
   SceneWindow scene("isosurface", 400, 300);
-  vtkNew<vtkWindowToImageFilter> zGrab;
-  zGrab->SetInput(scene.Window);
-  zGrab->SetInputBufferTypeToZBuffer();
-  zGrab->ReadFrontBufferOff();
-  zGrab->ShouldRerenderOff();
-  zGrab->Update();
-  auto depth = vtkSmartPointer<vtkImageData>::New();
-  depth->DeepCopy(zGrab->GetOutput());
+  auto depth = ZBuffer(scene.Window);
 
   vtkNew<vtkMLAAOptions> options;
   options->SetEdgeDetectionToDepth();

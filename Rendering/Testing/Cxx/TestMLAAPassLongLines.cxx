@@ -65,13 +65,7 @@ void ShowFlat(vtkRenderer* renderer, vtkPolyData* polyData, double background, i
   actor->GetProperty()->LightingOff();
   renderer->AddActor(actor);
   renderer->SetBackground(background, background, background);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->ParallelProjectionOn();
-  camera->SetFocalPoint(width / 2.0, height / 2.0, 0.0);
-  camera->SetPosition(width / 2.0, height / 2.0, 100.0);
-  camera->SetViewUp(0.0, 1.0, 0.0);
-  camera->SetParallelScale(height / 2.0);
-  renderer->ResetCameraClippingRange();
+  UsePixelCamera(renderer, width, height);
 }
 
 // A black polygon below a line rising by 1 degree, on white, one world unit per pixel.

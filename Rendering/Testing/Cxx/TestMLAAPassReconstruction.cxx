@@ -66,19 +66,6 @@ vtkSmartPointer<vtkPolyData> SampledLine(double width, double degrees)
   return polyData;
 }
 
-vtkSmartPointer<vtkImageData> ZBuffer(vtkRenderWindow* window)
-{
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->SetInputBufferTypeToZBuffer();
-  grab->ReadFrontBufferOff();
-  grab->ShouldRerenderOff();
-  grab->Update();
-  auto depth = vtkSmartPointer<vtkImageData>::New();
-  depth->DeepCopy(grab->GetOutput());
-  return depth;
-}
-
 void CheckLine(double width, double degrees, int& filled, int& lightened)
 {
   auto window = vtkMLAAScenes::NewOffscreenWindow(Width, Height);
@@ -111,13 +98,7 @@ void CheckLine(double width, double degrees, int& filled, int& lightened)
   backdropActor->GetProperty()->LightingOff();
   renderer->AddActor(backdropActor);
   renderer->SetBackground(0.0, 0.0, 0.0);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->ParallelProjectionOn();
-  camera->SetFocalPoint(Width / 2.0, Height / 2.0, 0.0);
-  camera->SetPosition(Width / 2.0, Height / 2.0, 100.0);
-  camera->SetViewUp(0.0, 1.0, 0.0);
-  camera->SetParallelScale(Height / 2.0);
-  renderer->ResetCameraClippingRange();
+  UsePixelCamera(renderer, Width, Height);
   auto plain = vtkMLAAScenes::Capture(window);
   auto depth = ZBuffer(window);
   const double background = GetValue(plain, 0, 0); // a corner, away from the line
