@@ -18,9 +18,10 @@
 // and per configuration of the filter, AAR over E (none and reference differ by more than 4/255)
 // and damage over F (pixels farther than 2 pixels from E, changed by more than 4/255), as
 // mlaa-quality computes them. Reported per configuration: the AAR of the pooled squared errors,
-// the mean AAR over the images, the damage pooled over all F pixels, the share of the remaining
-// error in E pixels the filter left unchanged and in those with no edge found at their
-// boundaries, per family and per contrast.
+// the mean AAR over the images, the damage pooled over all F pixels, the shares of the remaining
+// error in E pixels the filter left unchanged, in those with no edge found at their boundaries,
+// along stepless sides, sides with one step and the end runs of other sides (ClassifyRuns), the
+// AAR along sides with two steps or more, per family and per contrast.
 //
 // Configurations: the four presets, and the high preset with 32, 64 and 128 search steps; with
 // MLAA settings on the command line, those settings instead ("given").
@@ -28,7 +29,8 @@
 // --output-dir DIR writes, per image, none.png, reference.png and, for the configuration named by
 // --dump (default P-ultra), out.png and damage.png (grey: the input dimmed; blue: E; red: damaged
 // F pixels; yellow: F pixels changed by 1 to 4 levels) and error.png (the remaining error over E:
-// red in end runs, green in whole runs, blue along stepless sides; see ClassifyRuns).
+// red in end runs, yellow along sides with one step, green in whole runs, blue along stepless
+// sides; see ClassifyRuns).
 #include "BenchmarkUtilities.h"
 
 #include "vtkImageData.h"
@@ -359,15 +361,17 @@ void ComputeSets(const Image& none, const Image& reference, std::vector<char>& e
 // of sides included: the shapes overlap little). A side nearly horizontal steps where it crosses
 // a row of pixel centres (a column if nearly vertical); the runs of its staircase lie between
 // those steps, and the runs at the side's ends are cut by its corners or by the image border.
-// Classes: a whole run between two steps; an end run, between a step and a corner or the border
-// (the runs of a side with one step in the image are both such); a stepless side, which crosses
-// no row (column) of centres in the image and is sampled as a straight run of edgels: its
-// sub-pixel offset from the pixel boundary is not in the input at all.
+// Classes: a whole run between two steps; an end run, between a step and a corner or the border,
+// of a side with two steps or more (the next run past its step is a whole run, which gives the
+// slope); a side with one step, whose two runs are both end runs (no run gives the slope); a
+// stepless side, which crosses no row (column) of centres in the image and is sampled as a
+// straight run of edgels: its sub-pixel offset from the pixel boundary is not in the input.
 enum RunClass : char
 {
   NotE = 0,
   WholeRun,
   EndRun,
+  OneStepSide,
   SteplessSide
 };
 std::vector<char> ClassifyRuns(const Scene& scene, const std::vector<char>& e)
@@ -438,7 +442,9 @@ std::vector<char> ClassifyRuns(const Scene& scene, const std::vector<char>& e)
     }
     else
     {
-      classes[i] = here == lo || here == hi ? EndRun : WholeRun;
+      classes[i] = std::abs(hi - lo) == 1 ? OneStepSide
+        : here == lo || here == hi       ? EndRun
+                                         : WholeRun;
     }
   }
   return classes;
@@ -451,7 +457,8 @@ struct Sums
   double UntouchedSE = 0.0; // part of MethodSE in E pixels the method left as they were
   double MissedSE = 0.0; // part of MethodSE in E pixels with no edge found at their boundaries
   double SteplessNoneSE = 0.0, SteplessSE = 0.0; // NoneSE and MethodSE along stepless sides
-  double EndRunSE = 0.0; // part of MethodSE in the end runs of sides
+  double EndRunSE = 0.0; // part of MethodSE in the end runs of sides with two steps or more
+  double OneStepNoneSE = 0.0, OneStepSE = 0.0; // NoneSE and MethodSE along sides with one step
   size_t F = 0;
   size_t Damaged = 0;
   double SumAAR = 0.0;
@@ -465,6 +472,8 @@ struct Sums
     this->SteplessNoneSE += o.SteplessNoneSE;
     this->SteplessSE += o.SteplessSE;
     this->EndRunSE += o.EndRunSE;
+    this->OneStepNoneSE += o.OneStepNoneSE;
+    this->OneStepSE += o.OneStepSE;
     this->F += o.F;
     this->Damaged += o.Damaged;
     this->SumAAR += o.SumAAR;
@@ -483,11 +492,15 @@ struct Sums
     return this->MethodSE > 0 ? this->SteplessSE / this->MethodSE : 0.0;
   }
   double EndRunShare() const { return this->MethodSE > 0 ? this->EndRunSE / this->MethodSE : 0.0; }
-  // AAR over the E pixels that do not lie along stepless sides.
-  double StepAAR() const
+  double OneStepShare() const
   {
-    const double none = this->NoneSE - this->SteplessNoneSE;
-    return none > 0 ? 1.0 - (this->MethodSE - this->SteplessSE) / none : 0.0;
+    return this->MethodSE > 0 ? this->OneStepSE / this->MethodSE : 0.0;
+  }
+  // AAR over the E pixels along sides with two steps or more (whose slope the image holds).
+  double SlopeAAR() const
+  {
+    const double none = this->NoneSE - this->SteplessNoneSE - this->OneStepNoneSE;
+    return none > 0 ? 1.0 - (this->MethodSE - this->SteplessSE - this->OneStepSE) / none : 0.0;
   }
 };
 
@@ -643,6 +656,11 @@ int main(int argc, char* argv[])
           {
             s.EndRunSE += se;
           }
+          else if (runs[i] == OneStepSide)
+          {
+            s.OneStepNoneSE += noneSquared;
+            s.OneStepSE += se;
+          }
           if (MaxDifference(out, none, i) == 0.0)
           {
             s.UntouchedSE += se;
@@ -692,14 +710,23 @@ int main(int argc, char* argv[])
         }
         WritePNG(ToVTK(map), prefix + "-damage.png");
         // The error map: over E, the remaining error (root of the squared error, doubled) in
-        // red for end runs, green for whole runs, blue for stepless sides; black elsewhere.
+        // red for end runs, yellow for sides with one step, green for whole runs, blue for
+        // stepless sides; black elsewhere.
         for (size_t i = 0; i < e.size(); ++i)
         {
           std::array<double, 3> v = { 0.0, 0.0, 0.0 };
           if (e[i])
           {
             const double error = std::min(255.0, 2.0 * std::sqrt(SquaredError(out, reference, i)));
-            v[runs[i] == EndRun ? 0 : runs[i] == WholeRun ? 1 : 2] = error;
+            // Yellow for sides with one step.
+            if (runs[i] == OneStepSide)
+            {
+              v = { error, error, 0.0 };
+            }
+            else
+            {
+              v[runs[i] == EndRun ? 0 : runs[i] == WholeRun ? 1 : 2] = error;
+            }
           }
           for (int ch = 0; ch < 3; ++ch)
           {
@@ -716,14 +743,17 @@ int main(int argc, char* argv[])
   // One table per breakdown: the images' families, then their contrasts. "untouched" is the share
   // of the remaining squared error over E that lies in pixels the filter left as they were
   // (edges it did not find or did not ramp), the rest lies in pixels it changed; "missed" the
-  // share in pixels with no edge found at any of their four boundaries (a threshold question).
+  // share in pixels with no edge found at any of their four boundaries (a threshold question);
+  // "stepless", "1step" and "endrun" the shares of the classes of ClassifyRuns (the rest lies in
+  // whole runs), "AAR-2+" the AAR along sides with two steps or more.
   const std::vector<std::string> families = { "halfplane", "rects", "strips", "bars" };
   const std::vector<std::string> contrasts = { "255", "160", "80", "30" };
   auto printTable = [&](const std::vector<std::string>& parts, bool byContrast) {
     std::cout << std::left << std::setw(10) << "config" << std::right << std::setw(9) << "AAR"
               << std::setw(9) << "meanAAR" << std::setw(10) << "damage%" << std::setw(9)
               << "damaged" << std::setw(10) << "untouched" << std::setw(8) << "missed" << std::setw(9)
-              << "stepless" << std::setw(8) << "endrun" << std::setw(8) << "AAR-st";
+              << "stepless" << std::setw(8) << "1step" << std::setw(8) << "endrun" << std::setw(8)
+              << "AAR-2+";
     for (const std::string& part : parts)
     {
       std::cout << std::setw(19) << ((byContrast ? "c" : "") + part + " AAR/dmg%");
@@ -741,7 +771,8 @@ int main(int argc, char* argv[])
                 << all.MeanAAR() << std::setw(10) << 100.0 * all.Damage() << std::setw(9)
                 << all.Damaged << std::setw(10) << all.UntouchedShare() << std::setw(8)
                 << all.MissedShare() << std::setw(9) << all.SteplessShare() << std::setw(8)
-                << all.EndRunShare() << std::setw(8) << all.StepAAR();
+                << all.OneStepShare() << std::setw(8) << all.EndRunShare() << std::setw(8)
+                << all.SlopeAAR();
       for (const std::string& part : parts)
       {
         Sums sub;
@@ -771,8 +802,9 @@ int main(int argc, char* argv[])
                   << std::setw(10) << scenes[k].Family << std::right << std::setw(4)
                   << scenes[k].Contrast << std::fixed << std::setprecision(3) << std::setw(8)
                   << s.AAR() << std::setw(8) << s.UntouchedShare() << std::setw(8) << s.MissedShare()
-                  << std::setw(8) << s.SteplessShare() << std::setw(8) << s.EndRunShare()
-                  << std::setw(8) << s.StepAAR()
+                  << std::setw(8) << s.SteplessShare() << std::setw(8) << s.OneStepShare()
+                  << std::setw(8) << s.EndRunShare()
+                  << std::setw(8) << s.SlopeAAR()
                   << std::setw(7) << s.Damaged
                   << "\n";
       }
