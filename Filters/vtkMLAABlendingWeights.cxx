@@ -323,6 +323,7 @@ private:
     int Distance;
     bool Unseen = false;
     int Next = 0;
+    bool NextUnseen = false; // the next run ends at a corner or the border: no second step
     bool Half = false; // set by ExtrapolateCorners: the end's height is unknown
   };
 
@@ -341,12 +342,19 @@ private:
   // Biri et al., section 3.3, do), and this line, cut short by the corner, is ramped as the
   // whole run it is part of: a Z shape from the step to a virtual step L - 1 - d pixels from the
   // pixel, in the same table. A next run beyond the search's reach puts the virtual step beyond it
-  // too (code 0 at the maximum distance, as a capped search). Where nothing is seen to
+  // too (code 0 at the maximum distance, as a capped search). Where the next run itself ends at a
+  // corner or the image border (End::NextUnseen), the step is the side's only one and neither run
+  // is seen whole: the run R is at least the longer of the two, m. With no run length more likely
+  // than another at its scale (prior density 1 / R), a step at that place has probability 1 / R,
+  // so R's posterior density is proportional to 1 / R^2 on [m, inf), under which the mean slope
+  // E[1 / R] is 1 / (2m): the line is ramped as a run of L = 2m (issue 20), whose ramp falls from
+  // the step to nothing at distance m. Where nothing is seen to
   // extrapolate from (corners at both ends, an end beyond the reach or of code 4, or a next run
   // that cannot belong to one straight staircase with this line: shorter than 2, or more than
-  // one pixel shorter than this line) the chapter's reading stays, which is right on average
-  // there, with one exception (issue 20): where the other end is seen, within the reach, but
-  // gives no slope (such a next run, or no crossing edge there), the corner's height is unknown:
+  // one pixel shorter than this line, and ending at a step) the chapter's reading stays, which is
+  // right on average there, with one exception (issue 20): where the other end is seen, within the
+  // reach, but gives no slope (such a next run, or no crossing edge there), the corner's height is
+  // unknown:
   // the chapter's step (half a pixel) and a flat end (nothing) are equally likely readings, and
   // the end takes their mean, half the chapter's ramp (End::Half; the area table's ramps are
   // linear in the end's height, so that is half of the corner end's share of the two areas, see
@@ -364,7 +372,12 @@ private:
     const End& step = first.Unseen ? second : first;
     const int length = first.Distance + second.Distance + 1;
     const int maxDistance = this->S.CellSize - 1;
-    if (step.Next < 2 || step.Next + 1 < length)
+    int run = std::max(length, step.Next);
+    if (step.NextUnseen)
+    {
+      run *= 2; // the step is the side's only one: the expected run is twice the longer one seen
+    }
+    else if (step.Next < 2 || step.Next + 1 < length)
     {
       if (step.Code == 4 || step.Distance >= maxDistance || (corner.Code != 1 && corner.Code != 3))
       {
@@ -373,7 +386,7 @@ private:
       corner.Half = true;
       return true;
     }
-    const int distance = std::max(length, step.Next) - 1 - step.Distance;
+    const int distance = run - 1 - step.Distance;
     if (step.Next > maxDistance || distance > maxDistance)
     {
       corner.Code = 0;
@@ -390,8 +403,8 @@ private:
   // An end of a horizontal line of row y with a crossing edge on one side: `beyond` is the column
   // just past the end, `crossing` the column whose left edgels are the crossing edge, dx the
   // direction of the end. A step if the line goes on one row over from `beyond` (then the length
-  // of that next run), a corner if the crossing edge goes on instead. Edgels outside the image
-  // are none.
+  // of that next run, and whether it ends unseen), a corner if the crossing edge goes on
+  // instead. Edgels outside the image are none.
   void HorizontalEnd(int beyond, int crossing, int y, int dx, End& end) const
   {
     if (end.Code != 1 && end.Code != 3)
@@ -402,6 +415,7 @@ private:
     if (this->DiagonalTopAt(beyond, next))
     {
       end.Next = this->SearchTopEdges(beyond, next, dx) + 1;
+      end.NextUnseen = this->HorizontalRunEndsUnseen(beyond, next, dx, end.Next);
     }
     else
     {
@@ -420,11 +434,60 @@ private:
     if (this->DiagonalLeftAt(next, beyond))
     {
       end.Next = this->SearchLeftEdges(next, beyond, dy) + 1;
+      end.NextUnseen = this->VerticalRunEndsUnseen(beyond, next, dy, end.Next);
     }
     else
     {
       end.Unseen = this->DiagonalTopAt(end.Code == 3 ? x + 1 : x - 2, crossing) != 0;
     }
+  }
+
+  // Whether the next run of a staircase (of row `row`, from column `beyond` in direction dx,
+  // `length` pixels) ends at a corner or the image border, so that the staircase shows no second
+  // step and that run is cut short too: past its last pixel the crossing edge is on one side only
+  // and goes on for a second pixel that way, and the run does not go on one row over. Within the
+  // reach; edgels outside the image are none.
+  bool HorizontalRunEndsUnseen(int beyond, int row, int dx, int length) const
+  {
+    const int last = beyond + dx * (length - 1);
+    if (dx < 0 ? last <= this->Whole.X0 : last >= this->Whole.X1)
+    {
+      return true;
+    }
+    if (length - 1 >= 2 * this->S.SearchSteps)
+    {
+      return false;
+    }
+    const int crossing = dx < 0 ? last : last + 1;
+    const int code =
+      3 * this->DiagonalLeftAt(crossing, row) + this->DiagonalLeftAt(crossing, row + 1);
+    if ((code != 1 && code != 3) || this->DiagonalTopAt(last + dx, code == 3 ? row - 1 : row + 1))
+    {
+      return false;
+    }
+    return this->DiagonalLeftAt(crossing, code == 3 ? row - 1 : row + 2) != 0;
+  }
+  // The same for the next run of column `column`, from row `beyond` in direction dy.
+  bool VerticalRunEndsUnseen(int beyond, int column, int dy, int length) const
+  {
+    const int last = beyond + dy * (length - 1);
+    if (dy < 0 ? last <= this->Whole.Y0 : last >= this->Whole.Y1)
+    {
+      return true;
+    }
+    if (length - 1 >= 2 * this->S.SearchSteps)
+    {
+      return false;
+    }
+    const int crossing = dy > 0 ? last : last - 1;
+    const int code =
+      3 * this->DiagonalTopAt(column, crossing) + this->DiagonalTopAt(column - 1, crossing);
+    if ((code != 1 && code != 3) ||
+      this->DiagonalLeftAt(code == 3 ? column + 1 : column - 1, last + dy))
+    {
+      return false;
+    }
+    return this->DiagonalTopAt(code == 3 ? column + 1 : column - 2, crossing) != 0;
   }
 
   // The edgels at (x, y) clamped to the available pixels, as a GPU reads a texture with

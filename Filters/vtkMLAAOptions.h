@@ -65,11 +65,15 @@
  *   length of the next run past that step gives the slope): the line is ramped as the whole run
  *   of that staircase it is part of. The chapter reads every crossing edge as a one-pixel step,
  *   so a long line's ramp rounds the corner over half the line's length, the more the longer
- *   the search, also where the side lies on a pixel boundary. Where the other end is seen but
- *   gives no slope (no next run, or one too short to belong to one straight staircase with the
- *   line), the corner's height is unknown and it takes half the chapter's ramp, the mean of a
- *   step and a flat end. Where nothing is seen at all (corners at both ends, the other end
- *   beyond the search's reach), the chapter's reading stays. Raises AAR and lowers damage on
+ *   the search, also where the side lies on a pixel boundary. Where that step is the side's
+ *   only one (the next run past it ends at a corner or the border too), the run is not seen
+ *   whole: it is at least as long as the longer of the two runs, and the line is ramped as a
+ *   run twice that long, the expected run when no run length is more likely than another at
+ *   its scale. Where the other end is seen but gives no slope (no next run, or one that ends at
+ *   a step but is too short to belong to one straight staircase with the line), the corner's
+ *   height is unknown and it takes half the chapter's ramp, the mean of a step and a flat end.
+ *   Where nothing is seen at all (corners at both ends, the other end beyond the search's
+ *   reach), the chapter's reading stays. Raises AAR and lowers damage on
  *   long lines (docs/measurements.md), but not on every scene, hence off by default.
  * - DominantDirectionBlending (default on): in the neighbourhood blending, a pixel that lies on
  *   both a horizontal and a vertical line (the corner of a staircase) is blended along the one

@@ -18,13 +18,19 @@
 // and per configuration of the filter, AAR over E (none and reference differ by more than 4/255)
 // and damage over F (pixels farther than 2 pixels from E, changed by more than 4/255), as
 // mlaa-quality computes them. Reported per configuration: the AAR of the pooled squared errors,
-// the mean AAR over the images, the damage pooled over all F pixels, and per family.
+// the mean AAR over the images, the damage pooled over all F pixels, the shares of the remaining
+// error in E pixels the filter left unchanged, in those with no edge found at their boundaries,
+// along stepless sides, sides with one step and the end runs of other sides (ClassifyRuns), the
+// AAR along sides with two steps or more, per family and per contrast.
 //
 // Configurations: the four presets, and the high preset with 32, 64 and 128 search steps; with
 // MLAA settings on the command line, those settings instead ("given").
+// --per-image lists AAR, the untouched and missed shares and the damaged pixels of every image.
 // --output-dir DIR writes, per image, none.png, reference.png and, for the configuration named by
 // --dump (default P-ultra), out.png and damage.png (grey: the input dimmed; blue: E; red: damaged
-// F pixels; yellow: F pixels changed by 1 to 4 levels).
+// F pixels; yellow: F pixels changed by 1 to 4 levels) and error.png (the remaining error over E:
+// red in end runs, yellow along sides with one step, green in whole runs, blue along stepless
+// sides; see ClassifyRuns).
 #include "BenchmarkUtilities.h"
 
 #include "vtkImageData.h"
@@ -45,6 +51,7 @@
 #include <iostream>
 #include <limits>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -81,6 +88,7 @@ struct Shape
 struct Scene
 {
   std::string Family;
+  int Contrast;
   int Width, Height;
   std::array<int, 3> Background;
   std::vector<Shape> Shapes;
@@ -184,6 +192,7 @@ std::vector<Scene> MakeSet(int count, int width, int height, std::uint32_t seed)
     const bool vertical = (k / 4) % 2 == 1;
     const double axis = vertical ? 0.5 * Pi : 0.0;
     const int contrast = contrasts[(k / 8) % 4];
+    scene.Contrast = contrast;
     scene.Background = RandomColour(random);
     auto colour = [&]() { return Contrasting(random, scene.Background, contrast); };
     const double w = width, h = height;
@@ -348,10 +357,108 @@ void ComputeSets(const Image& none, const Image& reference, std::vector<char>& e
   }
 }
 
+// Where each E pixel lies on the staircase of its side (the side nearest its centre, hidden parts
+// of sides included: the shapes overlap little). A side nearly horizontal steps where it crosses
+// a row of pixel centres (a column if nearly vertical); the runs of its staircase lie between
+// those steps, and the runs at the side's ends are cut by its corners or by the image border.
+// Classes: a whole run between two steps; an end run, between a step and a corner or the border,
+// of a side with two steps or more (the next run past its step is a whole run, which gives the
+// slope); a side with one step, whose two runs are both end runs (no run gives the slope); a
+// stepless side, which crosses no row (column) of centres in the image and is sampled as a
+// straight run of edgels: its sub-pixel offset from the pixel boundary is not in the input.
+enum RunClass : char
+{
+  NotE = 0,
+  WholeRun,
+  EndRun,
+  OneStepSide,
+  SteplessSide
+};
+std::vector<char> ClassifyRuns(const Scene& scene, const std::vector<char>& e)
+{
+  struct Side
+  {
+    Point A, B;
+    bool Horizontal;
+    double Lo, Hi; // the part inside the image, along the major axis
+  };
+  std::vector<Side> sides;
+  const double w = scene.Width, h = scene.Height;
+  for (const Shape& shape : scene.Shapes)
+  {
+    for (int i = 0; i < 4; ++i)
+    {
+      const Point a = shape.P[i], b = shape.P[(i + 1) % 4];
+      const bool horizontal = std::abs(b.X - a.X) >= std::abs(b.Y - a.Y);
+      const double u0 = horizontal ? a.X : a.Y, u1 = horizontal ? b.X : b.Y;
+      const double lo = std::max(std::min(u0, u1), 0.0);
+      const double hi = std::min(std::max(u0, u1), horizontal ? w : h);
+      if (lo < hi)
+      {
+        sides.push_back({ a, b, horizontal, lo, hi });
+      }
+    }
+  }
+  std::vector<char> classes(e.size(), NotE);
+  for (size_t i = 0; i < e.size(); ++i)
+  {
+    if (!e[i])
+    {
+      continue;
+    }
+    const double px = static_cast<double>(i % scene.Width) + 0.5;
+    const double py = static_cast<double>(i / scene.Width) + 0.5;
+    double best = std::numeric_limits<double>::max();
+    const Side* nearest = nullptr;
+    for (const Side& side : sides)
+    {
+      const double dx = side.B.X - side.A.X, dy = side.B.Y - side.A.Y;
+      const double t = std::min(
+        1.0, std::max(0.0, ((px - side.A.X) * dx + (py - side.A.Y) * dy) / (dx * dx + dy * dy)));
+      const double d = std::hypot(side.A.X + t * dx - px, side.A.Y + t * dy - py);
+      if (d < best)
+      {
+        best = d;
+        nearest = &side;
+      }
+    }
+    if (!nearest)
+    {
+      continue;
+    }
+    // The staircase's row (column) of centres below the side, at the pixel and at both ends of
+    // the side's part in the image: a step lies between two places where it differs.
+    const Side& side = *nearest;
+    const double u0 = side.Horizontal ? side.A.X : side.A.Y;
+    const double u1 = side.Horizontal ? side.B.X : side.B.Y;
+    const double v0 = side.Horizontal ? side.A.Y : side.A.X;
+    const double v1 = side.Horizontal ? side.B.Y : side.B.X;
+    auto level = [&](double u) { return std::floor(v0 + (v1 - v0) * (u - u0) / (u1 - u0) - 0.5); };
+    const double u = std::min(side.Hi, std::max(side.Lo, side.Horizontal ? px : py));
+    const double lo = level(side.Lo), hi = level(side.Hi), here = level(u);
+    if (lo == hi)
+    {
+      classes[i] = SteplessSide;
+    }
+    else
+    {
+      classes[i] = std::abs(hi - lo) == 1 ? OneStepSide
+        : here == lo || here == hi       ? EndRun
+                                         : WholeRun;
+    }
+  }
+  return classes;
+}
+
 struct Sums
 {
   double NoneSE = 0.0;   // squared error of none over E
   double MethodSE = 0.0; // squared error of the method over E
+  double UntouchedSE = 0.0; // part of MethodSE in E pixels the method left as they were
+  double MissedSE = 0.0; // part of MethodSE in E pixels with no edge found at their boundaries
+  double SteplessNoneSE = 0.0, SteplessSE = 0.0; // NoneSE and MethodSE along stepless sides
+  double EndRunSE = 0.0; // part of MethodSE in the end runs of sides with two steps or more
+  double OneStepNoneSE = 0.0, OneStepSE = 0.0; // NoneSE and MethodSE along sides with one step
   size_t F = 0;
   size_t Damaged = 0;
   double SumAAR = 0.0;
@@ -360,6 +467,13 @@ struct Sums
   {
     this->NoneSE += o.NoneSE;
     this->MethodSE += o.MethodSE;
+    this->UntouchedSE += o.UntouchedSE;
+    this->MissedSE += o.MissedSE;
+    this->SteplessNoneSE += o.SteplessNoneSE;
+    this->SteplessSE += o.SteplessSE;
+    this->EndRunSE += o.EndRunSE;
+    this->OneStepNoneSE += o.OneStepNoneSE;
+    this->OneStepSE += o.OneStepSE;
     this->F += o.F;
     this->Damaged += o.Damaged;
     this->SumAAR += o.SumAAR;
@@ -368,6 +482,26 @@ struct Sums
   double AAR() const { return this->NoneSE > 0 ? 1.0 - this->MethodSE / this->NoneSE : 0.0; }
   double MeanAAR() const { return this->Images ? this->SumAAR / this->Images : 0.0; }
   double Damage() const { return this->F ? static_cast<double>(this->Damaged) / this->F : 0.0; }
+  double UntouchedShare() const
+  {
+    return this->MethodSE > 0 ? this->UntouchedSE / this->MethodSE : 0.0;
+  }
+  double MissedShare() const { return this->MethodSE > 0 ? this->MissedSE / this->MethodSE : 0.0; }
+  double SteplessShare() const
+  {
+    return this->MethodSE > 0 ? this->SteplessSE / this->MethodSE : 0.0;
+  }
+  double EndRunShare() const { return this->MethodSE > 0 ? this->EndRunSE / this->MethodSE : 0.0; }
+  double OneStepShare() const
+  {
+    return this->MethodSE > 0 ? this->OneStepSE / this->MethodSE : 0.0;
+  }
+  // AAR over the E pixels along sides with two steps or more (whose slope the image holds).
+  double SlopeAAR() const
+  {
+    const double none = this->NoneSE - this->SteplessNoneSE - this->OneStepNoneSE;
+    return none > 0 ? 1.0 - (this->MethodSE - this->SteplessSE - this->OneStepSE) / none : 0.0;
+  }
 };
 
 void WritePNG(vtkImageData* data, const std::string& path)
@@ -390,6 +524,7 @@ int main(int argc, char* argv[])
   int width = 512, height = 512, count = 32, samples = 8;
   std::uint32_t seed = 20;
   std::string outputDir, dump = "P-ultra";
+  bool perImage = false;
   vtkNew<vtkMLAAOptions> given;
   bool haveGiven = false;
   for (int i = 1; i < argc; ++i)
@@ -416,6 +551,10 @@ int main(int argc, char* argv[])
     {
       outputDir = argv[++i];
     }
+    else if (arg == "--per-image")
+    {
+      perImage = true;
+    }
     else if (arg == "--dump" && i + 1 < argc)
     {
       dump = argv[++i];
@@ -427,7 +566,7 @@ int main(int argc, char* argv[])
     else
     {
       std::cerr << "usage: mlaa-long-lines [--size WxH] [--images N] [--samples N] [--seed S]\n"
-                   "  [--output-dir DIR] [--dump CONFIGURATION] [MLAA settings]\n"
+                   "  [--output-dir DIR] [--dump CONFIGURATION] [--per-image] [MLAA settings]\n"
                 << mlaaBenchmark::MLAAOptionsUsage();
       return 2;
     }
@@ -463,6 +602,7 @@ int main(int argc, char* argv[])
     Render(scene, samples, reference);
     std::vector<char> e, f;
     ComputeSets(none, reference, e, f);
+    const std::vector<char> runs = ClassifyRuns(scene, e);
     auto input = ToVTK(none);
     char name[32];
     std::snprintf(name, sizeof(name), "%02zu-%s", k, scene.Family.c_str());
@@ -480,6 +620,22 @@ int main(int argc, char* argv[])
       filter->SetInputData(input);
       filter->Update();
       const Image out = FromVTK(filter->GetOutput());
+      // The edges the filter found (DebugOutput Edges: red, the pixel's left edgel; green, its
+      // top edgel, towards higher rows), to tell the error of edges it did not find.
+      vtkNew<vtkImageMLAA> edgesFilter;
+      edgesFilter->GetOptions()->CopyQualitySettings(filter->GetOptions());
+      edgesFilter->GetOptions()->SetDebugOutputToEdges();
+      edgesFilter->SetInputData(input);
+      edgesFilter->Update();
+      vtkImageData* edges = edgesFilter->GetOutput(); // RGBA
+      const auto* edgeBytes = static_cast<const unsigned char*>(edges->GetScalarPointer());
+      auto edgel = [edgeBytes, width, height](int x, int y, int which) {
+        if (x < 0 || y < 0 || x >= width || y >= height)
+        {
+          return false;
+        }
+        return edgeBytes[4 * (static_cast<size_t>(y) * width + x) + which] > 0;
+      };
       Sums s;
       s.Images = 1;
       double noneSE = 0.0, methodSE = 0.0;
@@ -487,8 +643,33 @@ int main(int argc, char* argv[])
       {
         if (e[i])
         {
-          noneSE += SquaredError(none, reference, i);
-          methodSE += SquaredError(out, reference, i);
+          const double noneSquared = SquaredError(none, reference, i);
+          noneSE += noneSquared;
+          const double se = SquaredError(out, reference, i);
+          methodSE += se;
+          if (runs[i] == SteplessSide)
+          {
+            s.SteplessNoneSE += noneSquared;
+            s.SteplessSE += se;
+          }
+          else if (runs[i] == EndRun)
+          {
+            s.EndRunSE += se;
+          }
+          else if (runs[i] == OneStepSide)
+          {
+            s.OneStepNoneSE += noneSquared;
+            s.OneStepSE += se;
+          }
+          if (MaxDifference(out, none, i) == 0.0)
+          {
+            s.UntouchedSE += se;
+          }
+          const int x = static_cast<int>(i % width), y = static_cast<int>(i / width);
+          if (!edgel(x, y, 0) && !edgel(x, y, 1) && !edgel(x + 1, y, 0) && !edgel(x, y - 1, 1))
+          {
+            s.MissedSE += se;
+          }
         }
         if (f[i])
         {
@@ -528,47 +709,109 @@ int main(int argc, char* argv[])
           }
         }
         WritePNG(ToVTK(map), prefix + "-damage.png");
+        // The error map: over E, the remaining error (root of the squared error, doubled) in
+        // red for end runs, yellow for sides with one step, green for whole runs, blue for
+        // stepless sides; black elsewhere.
+        for (size_t i = 0; i < e.size(); ++i)
+        {
+          std::array<double, 3> v = { 0.0, 0.0, 0.0 };
+          if (e[i])
+          {
+            const double error = std::min(255.0, 2.0 * std::sqrt(SquaredError(out, reference, i)));
+            // Yellow for sides with one step.
+            if (runs[i] == OneStepSide)
+            {
+              v = { error, error, 0.0 };
+            }
+            else
+            {
+              v[runs[i] == EndRun ? 0 : runs[i] == WholeRun ? 1 : 2] = error;
+            }
+          }
+          for (int ch = 0; ch < 3; ++ch)
+          {
+            map.Values[3 * i + ch] = v[ch];
+          }
+        }
+        WritePNG(ToVTK(map), prefix + "-error.png");
       }
     }
   }
 
   std::cout << "mlaa-long-lines: " << scenes.size() << " images of " << width << " x " << height
             << ", seed " << seed << ", reference " << samples << " x " << samples << "\n";
-  std::cout << std::left << std::setw(10) << "config" << std::right << std::setw(9) << "AAR"
-            << std::setw(9) << "meanAAR" << std::setw(10) << "damage%" << std::setw(9)
-            << "damaged";
-  static const char* const families[] = { "halfplane", "rects", "strips", "bars" };
-  for (const char* family : families)
-  {
-    std::cout << std::setw(18) << (std::string(family) + " AAR/dmg%");
-  }
-  std::cout << "\n";
-  for (size_t c = 0; c < configurations.size(); ++c)
-  {
-    Sums all;
-    for (const Sums& s : sums[c])
+  // One table per breakdown: the images' families, then their contrasts. "untouched" is the share
+  // of the remaining squared error over E that lies in pixels the filter left as they were
+  // (edges it did not find or did not ramp), the rest lies in pixels it changed; "missed" the
+  // share in pixels with no edge found at any of their four boundaries (a threshold question);
+  // "stepless", "1step" and "endrun" the shares of the classes of ClassifyRuns (the rest lies in
+  // whole runs), "AAR-2+" the AAR along sides with two steps or more.
+  const std::vector<std::string> families = { "halfplane", "rects", "strips", "bars" };
+  const std::vector<std::string> contrasts = { "255", "160", "80", "30" };
+  auto printTable = [&](const std::vector<std::string>& parts, bool byContrast) {
+    std::cout << std::left << std::setw(10) << "config" << std::right << std::setw(9) << "AAR"
+              << std::setw(9) << "meanAAR" << std::setw(10) << "damage%" << std::setw(9)
+              << "damaged" << std::setw(10) << "untouched" << std::setw(8) << "missed" << std::setw(9)
+              << "stepless" << std::setw(8) << "1step" << std::setw(8) << "endrun" << std::setw(8)
+              << "AAR-2+";
+    for (const std::string& part : parts)
     {
-      all.Add(s);
-    }
-    std::cout << std::left << std::setw(10) << configurations[c].Name << std::right << std::fixed
-              << std::setprecision(3) << std::setw(9) << all.AAR() << std::setw(9)
-              << all.MeanAAR() << std::setw(10) << 100.0 * all.Damage() << std::setw(9)
-              << all.Damaged;
-    for (const char* family : families)
-    {
-      Sums part;
-      for (size_t k = 0; k < scenes.size(); ++k)
-      {
-        if (scenes[k].Family == family)
-        {
-          part.Add(sums[c][k]);
-        }
-      }
-      std::ostringstream cell;
-      cell << std::fixed << std::setprecision(3) << part.AAR() << "/" << 100.0 * part.Damage();
-      std::cout << std::setw(18) << cell.str();
+      std::cout << std::setw(19) << ((byContrast ? "c" : "") + part + " AAR/dmg%");
     }
     std::cout << "\n";
+    for (size_t c = 0; c < configurations.size(); ++c)
+    {
+      Sums all;
+      for (const Sums& s : sums[c])
+      {
+        all.Add(s);
+      }
+      std::cout << std::left << std::setw(10) << configurations[c].Name << std::right
+                << std::fixed << std::setprecision(3) << std::setw(9) << all.AAR() << std::setw(9)
+                << all.MeanAAR() << std::setw(10) << 100.0 * all.Damage() << std::setw(9)
+                << all.Damaged << std::setw(10) << all.UntouchedShare() << std::setw(8)
+                << all.MissedShare() << std::setw(9) << all.SteplessShare() << std::setw(8)
+                << all.OneStepShare() << std::setw(8) << all.EndRunShare() << std::setw(8)
+                << all.SlopeAAR();
+      for (const std::string& part : parts)
+      {
+        Sums sub;
+        for (size_t k = 0; k < scenes.size(); ++k)
+        {
+          if (byContrast ? std::to_string(scenes[k].Contrast) == part : scenes[k].Family == part)
+          {
+            sub.Add(sums[c][k]);
+          }
+        }
+        std::ostringstream cell;
+        cell << std::fixed << std::setprecision(3) << sub.AAR() << "/" << 100.0 * sub.Damage();
+        std::cout << std::setw(19) << cell.str();
+      }
+      std::cout << "\n";
+    }
+  };
+  if (perImage)
+  {
+    // Per configuration and image: AAR, the untouched share and the damaged pixels.
+    for (size_t c = 0; c < configurations.size(); ++c)
+    {
+      for (size_t k = 0; k < scenes.size(); ++k)
+      {
+        const Sums& s = sums[c][k];
+        std::cout << configurations[c].Name << " " << std::setw(2) << k << " " << std::left
+                  << std::setw(10) << scenes[k].Family << std::right << std::setw(4)
+                  << scenes[k].Contrast << std::fixed << std::setprecision(3) << std::setw(8)
+                  << s.AAR() << std::setw(8) << s.UntouchedShare() << std::setw(8) << s.MissedShare()
+                  << std::setw(8) << s.SteplessShare() << std::setw(8) << s.OneStepShare()
+                  << std::setw(8) << s.EndRunShare()
+                  << std::setw(8) << s.SlopeAAR()
+                  << std::setw(7) << s.Damaged
+                  << "\n";
+      }
+    }
   }
+  printTable(families, false);
+  std::cout << "by contrast (levels):\n";
+  printTable(contrasts, true);
   return 0;
 }

@@ -239,11 +239,13 @@ int runDistance(ivec2 q, int direction)
 // length of the staircase's next run past each end that is a step (0: none). Where exactly one
 // end is unseen and the other is a step whose next run can belong to one straight staircase with
 // this line, the unseen end becomes a virtual step one whole run from the step (a Z shape), or
-// beyond the reach (code 0 at the maximum distance). Where the other end, within the reach and
-// of code 0, 1 or 3, gives no such run, an unseen end of code 1 or 3 keeps its code and takes
-// half its ramp instead (halved: which end; its height is unknown). Returns whether it changed
-// the ends.
-bool extrapolateCorners(inout ivec4 ends, bvec2 unseen, ivec2 next, out bvec2 halved)
+// beyond the reach (code 0 at the maximum distance); where that next run ends unseen as well
+// (nextUnseen: the side's only step), one run of twice the longer of the two. Where the other
+// end, within the reach and of code 0, 1 or 3, gives no such run, an unseen end of code 1 or 3
+// keeps its code and takes half its ramp instead (halved: which end; its height is unknown).
+// Returns whether it changed the ends.
+bool extrapolateCorners(
+  inout ivec4 ends, bvec2 unseen, ivec2 next, bvec2 nextUnseen, out bvec2 halved)
 {
   halved = bvec2(false);
   if (unseen.x == unseen.y)
@@ -255,7 +257,12 @@ bool extrapolateCorners(inout ivec4 ends, bvec2 unseen, ivec2 next, out bvec2 ha
   int stepNext = unseen.x ? next.y : next.x;
   int length = ends.y + ends.w + 1;
   int maxDistance = cellSize - 1;
-  if (stepNext < 2 || stepNext + 1 < length)
+  int run = max(length, stepNext);
+  if (unseen.x ? nextUnseen.y : nextUnseen.x)
+  {
+    run *= 2; // the step is the side's only one: the expected run is twice the longer one seen
+  }
+  else if (stepNext < 2 || stepNext + 1 < length)
   {
     if (step.x == 4 || step.y >= maxDistance || (unseenEnd.x != 1 && unseenEnd.x != 3))
     {
@@ -264,7 +271,7 @@ bool extrapolateCorners(inout ivec4 ends, bvec2 unseen, ivec2 next, out bvec2 ha
     halved = unseen;
     return true;
   }
-  int distance = max(length, stepNext) - 1 - step.y;
+  int distance = run - 1 - step.y;
   ivec2 corner = ivec2(4 - step.x, distance);
   if (stepNext > maxDistance || distance > maxDistance)
   {
@@ -281,37 +288,82 @@ bool extrapolateCorners(inout ivec4 ends, bvec2 unseen, ivec2 next, out bvec2 ha
   return true;
 }
 
+// Whether the staircase's next run, which starts at q and is `length` pixels long in `direction`,
+// ends at a corner or the image border (WeightsComputer::HorizontalRunEndsUnseen).
+bool horizontalRunEndsUnseen(ivec2 q, int direction, int length)
+{
+  int last = q.x + direction * (length - 1);
+  if (direction < 0 ? last <= 0 : last >= int(edgesSize.x) - 1)
+  {
+    return true;
+  }
+  if (length - 1 >= 2 * maxSearchSteps)
+  {
+    return false;
+  }
+  int crossing = direction < 0 ? last : last + 1;
+  int code = 3 * int(leftAt(ivec2(crossing, q.y))) + int(leftAt(ivec2(crossing, q.y + 1)));
+  if ((code != 1 && code != 3) || topAt(ivec2(last + direction, code == 3 ? q.y - 1 : q.y + 1)))
+  {
+    return false;
+  }
+  return leftAt(ivec2(crossing, code == 3 ? q.y - 1 : q.y + 2));
+}
+// The same for the next run of a column (WeightsComputer::VerticalRunEndsUnseen).
+bool verticalRunEndsUnseen(ivec2 q, int direction, int length)
+{
+  int last = q.y + direction * (length - 1);
+  if (direction < 0 ? last <= 0 : last >= int(edgesSize.y) - 1)
+  {
+    return true;
+  }
+  if (length - 1 >= 2 * maxSearchSteps)
+  {
+    return false;
+  }
+  int crossing = direction > 0 ? last : last - 1;
+  int code = 3 * int(topAt(ivec2(q.x, crossing))) + int(topAt(ivec2(q.x - 1, crossing)));
+  if ((code != 1 && code != 3) || leftAt(ivec2(code == 3 ? q.x + 1 : q.x - 1, last + direction)))
+  {
+    return false;
+  }
+  return topAt(ivec2(code == 3 ? q.x + 1 : q.x - 2, crossing));
+}
+
 // The end of a horizontal line of row y with crossing-edge code `code` (WeightsComputer::
 // HorizontalEnd): `beyond` is the column just past the end, `crossing` the column whose left
-// edgels are the crossing edge. Returns (unseen, next run length).
-ivec2 horizontalEnd(int code, int beyond, int crossing, int y, int direction)
+// edgels are the crossing edge. Returns (unseen, next run length, whether the next run ends
+// unseen).
+ivec3 horizontalEnd(int code, int beyond, int crossing, int y, int direction)
 {
   if (code != 1 && code != 3)
   {
-    return ivec2(0);
+    return ivec3(0);
   }
   ivec2 q = ivec2(beyond, code == 3 ? y - 1 : y + 1);
   if (topAt(q))
   {
-    return ivec2(0, runDistance(q, direction < 0 ? 0 : 1) + 1);
+    int length = runDistance(q, direction < 0 ? 0 : 1) + 1;
+    return ivec3(0, length, horizontalRunEndsUnseen(q, direction, length) ? 1 : 0);
   }
-  return ivec2(leftAt(ivec2(crossing, code == 3 ? y - 1 : y + 2)) ? 1 : 0, 0);
+  return ivec3(leftAt(ivec2(crossing, code == 3 ? y - 1 : y + 2)) ? 1 : 0, 0, 0);
 }
 
 // The same for a vertical line of column x (WeightsComputer::VerticalEnd): `beyond` is the row
 // just past the end, `crossing` the row whose top edgels are the crossing edge.
-ivec2 verticalEnd(int code, int x, int beyond, int crossing, int direction)
+ivec3 verticalEnd(int code, int x, int beyond, int crossing, int direction)
 {
   if (code != 1 && code != 3)
   {
-    return ivec2(0);
+    return ivec3(0);
   }
   ivec2 q = ivec2(code == 3 ? x + 1 : x - 1, beyond);
   if (leftAt(q))
   {
-    return ivec2(0, runDistance(q, direction < 0 ? 2 : 3) + 1);
+    int length = runDistance(q, direction < 0 ? 2 : 3) + 1;
+    return ivec3(0, length, verticalRunEndsUnseen(q, direction, length) ? 1 : 0);
   }
-  return ivec2(topAt(ivec2(code == 3 ? x + 1 : x - 2, crossing)) ? 1 : 0, 0);
+  return ivec3(topAt(ivec2(code == 3 ? x + 1 : x - 2, crossing)) ? 1 : 0, 0, 0);
 }
 #endif
 
@@ -411,24 +463,27 @@ void main()
 #ifdef MLAA_CORNER_EXTRAPOLATION
     if (left + right > 0)
     {
-      ivec2 end1 = horizontalEnd(e1, p.x - left - 1, p.x - left, p.y, -1);
-      ivec2 end2 = horizontalEnd(e2, p.x + right + 1, p.x + right + 1, p.y, 1);
+      ivec3 end1 = horizontalEnd(e1, p.x - left - 1, p.x - left, p.y, -1);
+      ivec3 end2 = horizontalEnd(e2, p.x + right + 1, p.x + right + 1, p.y, 1);
       ivec4 ends = ivec4(e1, left, e2, right);
       bvec2 unseen = bvec2(end1.x != 0, end2.x != 0);
       ivec2 next = ivec2(end1.y, end2.y);
+      bvec2 nextUnseen = bvec2(end1.z != 0, end2.z != 0);
       if (p.x - left <= 0) // the image border: the line's course beyond it is not seen
       {
         ends.xy = ivec2(0, p.x);
         unseen.x = true;
         next.x = 0;
+        nextUnseen.x = false;
       }
       if (p.x + right >= size.x - 1)
       {
         ends.zw = ivec2(0, size.x - 1 - p.x);
         unseen.y = true;
         next.y = 0;
+        nextUnseen.y = false;
       }
-      if (extrapolateCorners(ends, unseen, next, halved))
+      if (extrapolateCorners(ends, unseen, next, nextUnseen, halved))
       {
         e1 = ends.x;
         left = ends.y;
@@ -457,24 +512,27 @@ void main()
 #ifdef MLAA_CORNER_EXTRAPOLATION
     if (up + down > 0)
     {
-      ivec2 end1 = verticalEnd(e1, p.x, p.y + up + 1, p.y + up, 1);
-      ivec2 end2 = verticalEnd(e2, p.x, p.y - down - 1, p.y - down - 1, -1);
+      ivec3 end1 = verticalEnd(e1, p.x, p.y + up + 1, p.y + up, 1);
+      ivec3 end2 = verticalEnd(e2, p.x, p.y - down - 1, p.y - down - 1, -1);
       ivec4 ends = ivec4(e1, up, e2, down);
       bvec2 unseen = bvec2(end1.x != 0, end2.x != 0);
       ivec2 next = ivec2(end1.y, end2.y);
+      bvec2 nextUnseen = bvec2(end1.z != 0, end2.z != 0);
       if (p.y + up >= size.y - 1) // the image border
       {
         ends.xy = ivec2(0, size.y - 1 - p.y);
         unseen.x = true;
         next.x = 0;
+        nextUnseen.x = false;
       }
       if (p.y - down <= 0)
       {
         ends.zw = ivec2(0, p.y);
         unseen.y = true;
         next.y = 0;
+        nextUnseen.y = false;
       }
-      if (extrapolateCorners(ends, unseen, next, halved))
+      if (extrapolateCorners(ends, unseen, next, nextUnseen, halved))
       {
         e1 = ends.x;
         up = ends.y;

@@ -14,14 +14,19 @@
 //   both ends, keep the chapter's weights (nothing is seen to extrapolate from);
 // - the transposed image gives the transposed weights (the vertical lines follow the same rule);
 // - with CornerExtrapolation off, the chapter's weights everywhere.
-// Ends of unknown height (issue 20), on a second shape: a dark rectangle whose top side, 20
-// pixels long, ends at a corner on the right and on the left at a step up to a run of 2 pixels
-// (a narrower, taller rectangle beside it), too short to belong to one straight staircase with
-// the side, so nothing is extrapolated: the corner takes half the chapter's ramp (the side's
-// first half keeps the chapter's Z exactly, the second half gets the step's part plus half the
-// corner's, quantised after the sum), in rows and, transposed, in columns; a rectangle whose
-// sides are longer than the search's reach (a corner at one end, the reach at the other) and
-// have corners at both ends keeps the chapter's weights everywhere.
+// Sides with one step (issue 20), on a second shape: a dark rectangle whose top side, 20 pixels
+// long, ends at a corner on the right and on the left at a step up to a run of 2 pixels (a
+// narrower, taller rectangle beside it) that ends at a corner too, so that the step is the
+// side's only one: both runs are ramped as one run twice as long as the longer (40 pixels, the
+// virtual step beyond the reach of 16 steps for the 7 pixels nearest the step), exactly the
+// table's weights, in rows and, transposed, in columns; the long run's ramp falls to nothing at
+// its corner and never changes sign. Ends of unknown height, on a third shape, the second with
+// one more step up past the 2-pixel run: that run ends at a step but is too short to belong to
+// one straight staircase with the side, so nothing is extrapolated: the corner takes half the
+// chapter's ramp (the side's first half keeps the chapter's Z exactly, the second half gets the
+// step's part plus half the corner's, quantised after the sum), in rows and in columns; a
+// rectangle whose sides are longer than the search's reach (a corner at one end, the reach at
+// the other) and have corners at both ends keeps the chapter's weights everywhere.
 #include "vtkAntialiasingTestUtilities.h"
 
 #include "vtkMLAAAreaTexture.h"
@@ -69,6 +74,16 @@ bool InsideStepAndCorner(int x, int y)
 {
   return (x >= SideX0 && x <= SideX1 && y >= Bottom && y <= SideRow) ||
     (x >= StepX0 && x < SideX0 && y >= Bottom && y <= SideRow + 1);
+}
+
+// The third shape: the second with one more step up, to a 3-pixel run (columns 5 to 7 of row
+// 16), left of the 2-pixel run: that run ends at a step, a whole run too short to belong to one
+// straight staircase with the side.
+const int TopStepX0 = 5;
+bool InsideTwoSteps(int x, int y)
+{
+  return InsideStepAndCorner(x, y) ||
+    (x >= TopStepX0 && x < StepX0 && y >= Bottom && y <= SideRow + 2);
 }
 
 vtkSmartPointer<vtkMLAAOptions> Options(bool corners)
@@ -196,7 +211,25 @@ float FloatArea(int e1, int e2, int d1, int d2, int channel, int maxDistance)
   return table[2 * (static_cast<size_t>(cell * e2 + d2) * size + (cell * e1 + d1)) + channel];
 }
 
-void UnknownHeight()
+// The table's quantised weights of a line of which one end, a step of code `stepCode` at
+// distance `stepDistance`, is the only step of a side whose other runs end at corners: the
+// corner end is a virtual step `run` - 1 - stepDistance away, or code 0 at the maximum distance
+// beyond it (ExtrapolateCorners).
+double OneStepArea(bool stepFirst, int stepCode, int stepDistance, int run, int channel,
+  int maxDistance)
+{
+  int cornerCode = 4 - stepCode;
+  int cornerDistance = run - 1 - stepDistance;
+  if (cornerDistance > maxDistance)
+  {
+    cornerCode = 0;
+    cornerDistance = maxDistance;
+  }
+  return stepFirst ? Area(stepCode, cornerCode, stepDistance, cornerDistance, channel, maxDistance)
+                   : Area(cornerCode, stepCode, cornerDistance, stepDistance, channel, maxDistance);
+}
+
+void OneStepSide()
 {
   auto on = Options(true);
   auto off = Options(false);
@@ -204,6 +237,81 @@ void UnknownHeight()
   for (const bool transposed : { false, true })
   {
     auto image = Shape(transposed, &InsideStepAndCorner);
+    auto weights = RunMLAA(image, on);
+    auto chapter = RunMLAA(image, off);
+    // A top edgel of (x, y) is, transposed, the left edgel of (y + 1, x), whose channels 3 and 2
+    // hold what 0 and 1 hold (see Corners).
+    auto weight = [transposed](vtkImageData* w, int x, int y, int channel) {
+      return transposed ? GetValue(w, y + 1, x, 3 - channel) : GetValue(w, x, y, channel);
+    };
+    // The side's two runs: columns 10 to 29 of row 14 and 8 to 9 of row 15, one step between
+    // them, corners at both ends. The expected run is twice the longer one seen: 40 pixels.
+    const int length = SideX1 - SideX0 + 1;
+    const int run = 2 * length;
+    int fewer = 0;
+    for (int x = SideX0; x <= SideX1; ++x)
+    {
+      const int d1 = x - SideX0;
+      const int d2 = SideX1 - x;
+      for (int channel = 0; channel < 2; ++channel)
+      {
+        // The step on the row above at the left end (code 1), the corner at the right end.
+        const double expected = OneStepArea(true, 1, d1, run, channel, maxDistance);
+        const double got = weight(weights, x, SideRow, channel);
+        const double theirs = weight(chapter, x, SideRow, channel);
+        if (!MLAA_CHECK(got == expected))
+        {
+          std::cerr << (transposed ? "transposed, " : "") << "x " << x << ", channel "
+                    << channel << ": " << got << ", expected " << expected << std::endl;
+        }
+        // The chapter's Z over the 20 pixels: the step's ramp now reaches the whole side,
+        // the corner's (to the other side of the boundary) is gone.
+        MLAA_CHECK(theirs == Area(1, 3, d1, d2, channel, maxDistance));
+        fewer += got < theirs ? 1 : 0;
+      }
+      // The ramp from the step falls to nothing at the corner, and never changes sign.
+      MLAA_CHECK(weight(weights, x, SideRow, 0) == 0.0 || weight(weights, x, SideRow, 1) == 0.0);
+    }
+    MLAA_CHECK(fewer > 0);
+    MLAA_CHECK(weight(weights, SideX1, SideRow, 0) + weight(weights, SideX1, SideRow, 1) <= 3.0);
+    // The short run: its corner at the left, the step down (code 3) at its right end.
+    for (int x = StepX0; x < SideX0; ++x)
+    {
+      for (int channel = 0; channel < 2; ++channel)
+      {
+        const double expected =
+          OneStepArea(false, 3, SideX0 - 1 - x, run, channel, maxDistance);
+        const double got = weight(weights, x, SideRow + 1, channel);
+        if (!MLAA_CHECK(got == expected))
+        {
+          std::cerr << (transposed ? "transposed, " : "") << "short run, x " << x
+                    << ", channel " << channel << ": " << got << ", expected " << expected
+                    << std::endl;
+        }
+      }
+    }
+  }
+
+  // Sides of 60 pixels, twice the reach of 16 steps: the pixels nearer one corner see the other
+  // end beyond the reach, where nothing is seen either.
+  auto rectangle = MakeImage(Width, Height, 1);
+  FillImage(rectangle, [](int x, int y, int, int) {
+    return (x >= 2 && x <= 61 && y >= Bottom && y <= SideRow) ? 0.0 : 255.0;
+  });
+  MLAA_CHECK(2 * on->GetMaxSearchSteps() < 61 - 2);
+  auto weights = RunMLAA(rectangle, on);
+  MLAA_CHECK(Compare(weights, RunMLAA(rectangle, off), 0.0).Count == 0);
+  MLAA_CHECK(GetValue(weights, 58, SideRow, 0) > 0.0);
+}
+
+void UnknownHeight()
+{
+  auto on = Options(true);
+  auto off = Options(false);
+  const int maxDistance = on->GetMaxDistance();
+  for (const bool transposed : { false, true })
+  {
+    auto image = Shape(transposed, &InsideTwoSteps);
     auto weights = RunMLAA(image, on);
     auto chapter = RunMLAA(image, off);
     // The side's left end: the crossing edge on the row above (code 1), past it the 2-pixel run;
@@ -247,23 +355,13 @@ void UnknownHeight()
     }
     MLAA_CHECK(halved >= length / 2 - 2);
   }
-
-  // Sides of 60 pixels, twice the reach of 16 steps: the pixels nearer one corner see the other
-  // end beyond the reach, where nothing is seen either.
-  auto rectangle = MakeImage(Width, Height, 1);
-  FillImage(rectangle, [](int x, int y, int, int) {
-    return (x >= 2 && x <= 61 && y >= Bottom && y <= SideRow) ? 0.0 : 255.0;
-  });
-  MLAA_CHECK(2 * on->GetMaxSearchSteps() < 61 - 2);
-  auto weights = RunMLAA(rectangle, on);
-  MLAA_CHECK(Compare(weights, RunMLAA(rectangle, off), 0.0).Count == 0);
-  MLAA_CHECK(GetValue(weights, 58, SideRow, 0) > 0.0);
 }
 }
 
 int TestImageMLAACorners(int, char*[])
 {
   Corners();
+  OneStepSide();
   UnknownHeight();
   return Result();
 }

@@ -16,10 +16,11 @@
 //   the same image, equal to vtkImageMLAA's within 2/255;
 // - AUTOMATIC resolves by MaxSearchSteps (staircases with the rows and columns), and the
 //   doubling textures only exist while used;
-// - CornerExtrapolation's ends of unknown height (a side between a corner and a step to a run
-//   too short to extrapolate from, horizontal and vertical, as in TestImageMLAACorners): the
-//   pass's blending weights equal the filter's exactly, searched and counted, at 16 and 128
-//   steps, and differ from those without the option there.
+// - CornerExtrapolation's sides with one step (a side between a corner and a step to a short run
+//   that ends at a corner, horizontal and vertical) and ends of unknown height (the short run
+//   ends at a step), as in TestImageMLAACorners: the pass's blending weights equal the filter's
+//   exactly, searched and counted, at 16 and 128 steps, and differ from those without the option
+//   there.
 #include "vtkAntialiasingRenderTestUtilities.h"
 #include "vtkMLAAScenes.h"
 #include "vtkAntialiasingTestUtilities.h"
@@ -373,18 +374,24 @@ void BuildRectangles(vtkRenderer* renderer, const std::vector<std::array<int, 4>
 void UnknownHeightEnds()
 {
   // A side of 20 pixels (columns 10 to 29, top row 14) between a corner and a step up to a run
-  // of 2 pixels; and the same turned by 90 degrees (a side of 20 pixels in column 40).
+  // of 2 pixels that ends at a corner (the side's only step); the same turned by 90 degrees (a
+  // side of 20 pixels in column 40); and the first again with one more step up past the 2-pixel
+  // run (columns 5 to 7, top row 36 over a side in row 34), an end of unknown height.
   const int width = 64, height = 48;
   auto window = vtkMLAAScenes::NewOffscreenWindow(width, height);
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
   BuildRectangles(renderer,
-    { { 10, 29, 2, 14 }, { 8, 9, 2, 15 }, { 40, 52, 20, 39 }, { 40, 53, 18, 19 } }, width,
-    height);
+    { { 10, 29, 2, 14 }, { 8, 9, 2, 15 }, { 40, 52, 20, 39 }, { 40, 53, 18, 19 },
+      { 10, 29, 22, 34 }, { 8, 9, 22, 35 }, { 5, 7, 22, 36 } },
+    width, height);
   auto plain = vtkMLAAScenes::Capture(window);
   MLAA_CHECK(GetValue(plain, 29, 14) < 128.0 && GetValue(plain, 29, 15) > 128.0 &&
     GetValue(plain, 9, 15) < 128.0 && GetValue(plain, 10, 15) > 128.0 &&
     GetValue(plain, 52, 39) < 128.0 && GetValue(plain, 53, 39) > 128.0 &&
+    GetValue(plain, 7, 36) < 128.0 && GetValue(plain, 7, 37) > 128.0 &&
+    GetValue(plain, 4, 36) > 128.0 && GetValue(plain, 29, 34) < 128.0 &&
+    GetValue(plain, 29, 35) > 128.0 &&
     GetValue(plain, 53, 19) < 128.0);
   for (const int searchSteps : { 16, 128 })
   {
@@ -395,8 +402,11 @@ void UnknownHeightEnds()
     auto chapter = RunMLAA(plain, options);
     options->SetCornerExtrapolation(true);
     auto cpu = RunMLAA(plain, options);
-    // The side's pixels nearer the corner take half the corner's ramp: they differ.
+    // The side's pixels nearer the corner take the step's longer ramp (one step) or half the
+    // corner's ramp (unknown height): they differ.
     MLAA_CHECK(GetValue(cpu, 27, 14, 0) < GetValue(chapter, 27, 14, 0));
+    MLAA_CHECK(GetValue(cpu, 27, 34, 0) < GetValue(chapter, 27, 34, 0));
+    MLAA_CHECK(GetValue(cpu, 27, 14, 1) != GetValue(cpu, 27, 34, 1));
     MLAA_CHECK(GetValue(cpu, 53, 37, 2) < GetValue(chapter, 53, 37, 2) ||
       GetValue(cpu, 53, 37, 3) < GetValue(chapter, 53, 37, 3));
     for (int doubling = 0; doubling < 2; ++doubling)
