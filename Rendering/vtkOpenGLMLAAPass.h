@@ -112,6 +112,8 @@
 #include "vtkOpenGLAntialiasingPass.h"
 #include "vtkRenderingMLAAModule.h" // For export macro
 
+#include <vector> // For std::vector
+
 class vtkMLAAOptions;
 class vtkTextureObject;
 
@@ -195,6 +197,27 @@ public:
    */
   bool GetUsesDiagonalRecursiveDoubling();
 
+  ///@{
+  /**
+   * With vtkOpenGLAntialiasingPass::SetMultiSamples: whether the areas of each sample set are
+   * taken for the whole pixel (default off). Each sample set is the scene seen at one sample
+   * position of every pixel; the line that MLAA finds in it is moved by that sample's offset
+   * from the pixel centre (the driver's sample positions) before its areas are read
+   * (vtkMLAAAreaTexture::ComputeAreas with offsets), wherever a pixel on either side of the
+   * edgel has samples that differ (a geometric edge crosses it; elsewhere the samples were
+   * shaded at the pixel centre and the usual table applies). The average of the sample sets
+   * then approaches the pixel's coverage along straight edges instead of blurring it by the
+   * spread of the sample positions. Off: each sample set is antialiased exactly as the
+   * single-sample pass (and vtkImageMLAA) would. Orthogonal lines only: staircases of
+   * vtkMLAAOptions::DiagonalDetection and ends halved by CornerExtrapolation keep the usual
+   * areas. Off by default because it lowers scenes of thin lines and points on the project's
+   * quality scenes (docs/measurements.md, "Multisampled renders").
+   */
+  vtkSetMacro(SampleAreas, bool);
+  vtkGetMacro(SampleAreas, bool);
+  vtkBooleanMacro(SampleAreas, bool);
+  ///@}
+
   /**
    * Bytes of GPU memory held by the pass's render targets at the last render (the copy of the
    * delegate's colour, its reconstructed copy with vtkMLAAOptions::Reconstruction, and of its
@@ -216,6 +239,7 @@ protected:
 
   vtkMLAAOptions* Options = nullptr;
   int LineLengths = AUTOMATIC;
+  bool SampleAreas = false;
 
   // The hooks of vtkOpenGLAntialiasingPass.
   bool NeedsDelegateDepth() override;
@@ -268,6 +292,14 @@ private:
   vtkTextureObject* DiagonalLengthsTextures[2] = { nullptr, nullptr }; // the same, staircases
   vtkTextureObject* ReconstructedTexture = nullptr; // with vtkMLAAOptions::Reconstruction only
   int AreaTextureMaxDistance = 0;
+  // With MultiSamples and SampleAreas: the area tables of each sample's offsets, stacked
+  // (sample s: rows 2 s T to (2 s + 1) T - 1 for horizontal lines, the next T for vertical
+  // ones, T the area texture's size), and the offsets and maximum distance they were made for.
+  vtkTextureObject* SampleAreaTexture = nullptr;
+  std::vector<double> SampleAreaOffsets;
+  int SampleAreaMaxDistance = 0;
+  // Uploads SampleAreaTexture for the current sample set's count when its offsets changed.
+  void PrepareSampleAreas(vtkOpenGLRenderWindow* renWin, const SampleSet& set);
   ShaderVariant ReconstructionQuad;
   ShaderVariant WriteBackQuad;
   ShaderVariant EdgesQuad;
