@@ -290,6 +290,14 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
     program->SetUniformi("samplesColor", set.Colors->GetTextureUnit());
     program->SetUniformi("numberOfSamples", static_cast<int>(set.Offsets.size() / 2));
     program->SetUniformi("sampleIndex", set.Index);
+    // How near a pixel's border its samples come (the edge between two pixels whose samples
+    // all agree lies within this of the border).
+    double gap = 0.5;
+    for (double offset : set.Offsets)
+    {
+      gap = std::min(gap, 0.5 - std::abs(offset));
+    }
+    program->SetUniformf("sampleGap", static_cast<float>(gap));
   }
   if (lengths)
   {

@@ -205,7 +205,10 @@ public:
    * from the pixel centre (the driver's sample positions) before its areas are read
    * (vtkMLAAAreaTexture::ComputeAreas with offsets), wherever a pixel on either side of the
    * edgel has samples that differ (a geometric edge crosses it; elsewhere the samples were
-   * shaded at the pixel centre and the usual table applies). The average of the sample sets
+   * shaded at the pixel centre and the usual table applies, except that where a pixel at an
+   * end of the line has differing samples, the edge runs between the two pixels' sample
+   * patterns and their areas are limited to the gap between those patterns and the pixel
+   * border: 1/8 with 4 samples). The average of the sample sets
    * then approaches the pixel's coverage along straight edges instead of blurring it by the
    * spread of the sample positions. Off: each sample set is antialiased exactly as the
    * single-sample pass (and vtkImageMLAA) would. Orthogonal lines only: staircases of

@@ -65,6 +65,7 @@ uniform sampler2D sampleAreaTexture;
 uniform sampler2DMS samplesColor; // the multisampled render
 uniform int numberOfSamples;
 uniform int sampleIndex;
+uniform float sampleGap; // 1/2 less the largest |offset| of a sample from the pixel centre
 #endif
 #ifdef MLAA_RECURSIVE_DOUBLING
 // Line lengths (left, right, down, up), RGBA16F integers, exact up to 4^passes >= maxDistance.
@@ -178,9 +179,14 @@ bool samplesDiffer(ivec2 q)
 }
 #endif
 
-// The areas of the line through the edgel between pixels p and q (vertical: a vertical line):
-// from this sample's tables where either pixel's samples differ (MLAA_SAMPLE_AREAS), else from
-// the area texture.
+// The areas of the line through the edgel between pixels p and q (vertical: a vertical line),
+// from the area texture; with MLAA_SAMPLE_AREAS:
+// - where either pixel's samples differ (a geometric edge crosses it), from this sample's
+//   tables (the line moved by the sample's offset);
+// - where neither does but a pixel at an end of the line does (the line is a staircase of a
+//   geometric edge), the edge passes between the two pixels' sample patterns: within
+//   `sampleGap` (1/2 less the largest offset of a sample from the pixel centre) of the pixel
+//   boundary, so neither pixel takes more than that of the other's colour.
 vec2 lineArea(ivec2 p, ivec2 q, bool vertical, int e1, int e2, int d1, int d2)
 {
 #ifdef MLAA_SAMPLE_AREAS
@@ -189,6 +195,12 @@ vec2 lineArea(ivec2 p, ivec2 q, bool vertical, int e1, int e2, int d1, int d2)
     int size = 5 * cellSize;
     int row = (2 * sampleIndex + (vertical ? 1 : 0)) * size;
     return texelFetch(sampleAreaTexture, ivec2(cellSize * e1 + d1, row + cellSize * e2 + d2), 0).rg;
+  }
+  ivec2 along = vertical ? ivec2(0, 1) : ivec2(-1, 0); // towards the first end
+  if (samplesDiffer(p + d1 * along) || samplesDiffer(q + d1 * along) ||
+    samplesDiffer(p - d2 * along) || samplesDiffer(q - d2 * along))
+  {
+    return min(area(e1, e2, d1, d2), vec2(sampleGap));
   }
 #endif
   return area(e1, e2, d1, d2);

@@ -23,7 +23,7 @@
 //   per pixel (the sample images of a translucent cube alone are identical);
 // - MLAA's debug images (edges) are averaged as they are, not mixed with the scene's colours;
 // - MLAA's SampleAreas: on straight edges (shallow and steep, rising and falling), the result
-//   is nearer the exact coverage of each pixel than without (10 % less RMS error in all);
+//   is nearer the exact coverage of each pixel than without (a quarter less RMS error in all);
 // - with Temporal on, MultiSamples is not used (one sample per pixel, one warning);
 // - MultiSamples back to 0 gives the single-sample pass's image exactly and frees the
 //   multisampled targets (GetTargetMemorySize).
@@ -571,8 +571,9 @@ void SampleAreas(const PassMethod& method, MessageObserver* messages)
   }
   // Shallow and steep edges (horizontal and vertical lines of edgels), rising and falling:
   // with the sample areas, the resolve is nearer the exact coverage than with each sample set
-  // antialiased alone: no edge worse (by more than 0.002), all of them together better by 10 %
-  // at least (llvmpipe, 4 samples: 0.039 against 0.046 on average, each edge within 0.045).
+  // antialiased alone: no edge worse (by more than 0.002), all of them together better by a
+  // quarter at least (llvmpipe, 4 samples: 0.028 against 0.046 on average, each edge within
+  // 0.044).
   double sumWith = 0.0, sumWithout = 0.0;
   for (bool steep : { false, true })
   {
@@ -589,7 +590,7 @@ void SampleAreas(const PassMethod& method, MessageObserver* messages)
       sumWithout += without;
     }
   }
-  MLAA_CHECK(sumWith < 0.9 * sumWithout);
+  MLAA_CHECK(sumWith < 0.75 * sumWithout);
 }
 
 void BackToSingleSample(const PassMethod& method, MessageObserver* messages)
