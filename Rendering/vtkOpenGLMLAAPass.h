@@ -200,21 +200,21 @@ public:
   ///@{
   /**
    * With vtkOpenGLAntialiasingPass::SetMultiSamples: whether the areas of each sample set are
-   * taken for the whole pixel (default off). Each sample set is the scene seen at one sample
+   * taken for the whole pixel (default on). Each sample set is the scene seen at one sample
    * position of every pixel; the line that MLAA finds in it is moved by that sample's offset
    * from the pixel centre (the driver's sample positions) before its areas are read
    * (vtkMLAAAreaTexture::ComputeAreas with offsets), wherever a pixel on either side of the
-   * edgel has samples that differ (a geometric edge crosses it; elsewhere the samples were
-   * shaded at the pixel centre and the usual table applies, except that where a pixel at an
-   * end of the line has differing samples, the edge runs between the two pixels' sample
-   * patterns and their areas are limited to the gap between those patterns and the pixel
-   * border: 1/8 with 4 samples). The average of the sample sets
-   * then approaches the pixel's coverage along straight edges instead of blurring it by the
-   * spread of the sample positions. Off: each sample set is antialiased exactly as the
-   * single-sample pass (and vtkImageMLAA) would. Orthogonal lines only: staircases of
-   * vtkMLAAOptions::DiagonalDetection and ends halved by CornerExtrapolation keep the usual
-   * areas. Off by default because it lowers scenes of thin lines and points on the project's
-   * quality scenes (docs/measurements.md, "Multisampled renders").
+   * edgel has samples that differ (a geometric edge crosses it). Elsewhere the samples were
+   * shaded at the pixel centre and the usual table applies, except that where a pixel at an end
+   * of the line has differing samples, the edge runs between the two pixels' sample patterns
+   * and their areas are limited to the gap between those patterns and the pixel border (1/8
+   * with 4 samples). U shapes (both ends of the line step to the same side: bumps, dots, ends of
+   * thin lines) keep the usual areas. The average of the sample sets then approaches the
+   * pixel's coverage along edges instead of blurring it by the spread of the sample positions
+   * (docs/measurements.md, "Multisampled renders"). Off: each sample set is antialiased exactly
+   * as the single-sample pass, and so as vtkImageMLAA, would (the CPU filter has no samples).
+   * Orthogonal lines only: staircases of vtkMLAAOptions::DiagonalDetection and ends halved by
+   * CornerExtrapolation keep the usual areas.
    */
   vtkSetMacro(SampleAreas, bool);
   vtkGetMacro(SampleAreas, bool);
@@ -242,7 +242,7 @@ protected:
 
   vtkMLAAOptions* Options = nullptr;
   int LineLengths = AUTOMATIC;
-  bool SampleAreas = false;
+  bool SampleAreas = true;
 
   // The hooks of vtkOpenGLAntialiasingPass.
   bool NeedsDelegateDepth() override;

@@ -182,7 +182,9 @@ bool samplesDiffer(ivec2 q)
 // The areas of the line through the edgel between pixels p and q (vertical: a vertical line),
 // from the area texture; with MLAA_SAMPLE_AREAS:
 // - where either pixel's samples differ (a geometric edge crosses it), from this sample's
-//   tables (the line moved by the sample's offset);
+//   tables (the line moved by the sample's offset), except for U shapes (both ends step to the
+//   same side: the outline of a bump, a dot or the end of a thin line, whose reconstruction
+//   does not place the feature; moving them lowered the scenes of points and thin lines);
 // - where neither does but a pixel at an end of the line does (the line is a staircase of a
 //   geometric edge), the edge passes between the two pixels' sample patterns: within
 //   `sampleGap` (1/2 less the largest offset of a sample from the pixel centre) of the pixel
@@ -190,7 +192,8 @@ bool samplesDiffer(ivec2 q)
 vec2 lineArea(ivec2 p, ivec2 q, bool vertical, int e1, int e2, int d1, int d2)
 {
 #ifdef MLAA_SAMPLE_AREAS
-  if (samplesDiffer(p) || samplesDiffer(q))
+  bool bump = e1 == e2 && (e1 == 1 || e1 == 3); // a U shape: both ends step the same way
+  if (!bump && (samplesDiffer(p) || samplesDiffer(q)))
   {
     int size = 5 * cellSize;
     int row = (2 * sampleIndex + (vertical ? 1 : 0)) * size;
