@@ -249,8 +249,6 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   fbo->AddColorAttachment(0, this->WeightsTexture);
   fbo->ActivateDrawBuffer(0);
   ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
-  // The search length and the diagonal patterns are compile-time: constant loop bounds, and no
-  // diagonal code at all without DiagonalDetection (section 4.3).
   // A sample set of a multisampled render (SampleAreas): the areas of its sample's offsets.
   const SampleSet& set = this->GetCurrentSampleSet();
   const bool sampleAreas = this->SampleAreas && set.Index >= 0 && set.Colors;
@@ -263,6 +261,8 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
     DeleteObject(this->SampleAreaTexture, renWin);
     this->SampleAreaOffsets.clear();
   }
+  // The search length and the diagonal patterns are compile-time: constant loop bounds, and no
+  // diagonal code at all without DiagonalDetection (section 4.3).
   const std::string weightsDefines =
     Define("MLAA_MAX_SEARCH_STEPS", this->Options->GetMaxSearchSteps()) +
     Define("MLAA_DIAGONAL_DETECTION", this->Options->GetDiagonalDetection()) +
