@@ -11,6 +11,7 @@
 #include <cmath>
 #include <map>
 #include <mutex>
+#include <utility>
 
 vtkStandardNewMacro(vtkMLAAAreaTexture);
 
@@ -41,25 +42,30 @@ double IntegrateFallingRamp(double h, double m, double a, double b)
 
 using SharedTable = std::shared_ptr<const std::vector<float>>;
 
-// The table of one kind for `maxDistance` (at least 1) from that kind's cache, made by
-// `build(maxDistance)` on first use. Thread-safe.
+// The offsets of a table's line (vtkMLAAAreaTexture::ComputeAreas): across, along.
+using Offset = std::pair<double, double>;
+
+// The table of one kind for `maxDistance` (at least 1) and `offset` from that kind's cache,
+// made by `build(maxDistance, offset)` on first use. Thread-safe.
 template <typename Build>
-SharedTable CachedTable(
-  std::mutex& cacheMutex, std::map<int, SharedTable>& cache, int maxDistance, Build build)
+SharedTable CachedTable(std::mutex& cacheMutex,
+  std::map<std::pair<int, Offset>, SharedTable>& cache, int maxDistance, Offset offset,
+  Build build)
 {
   maxDistance = std::max(1, maxDistance);
   std::lock_guard<std::mutex> lock(cacheMutex);
-  SharedTable& table = cache[maxDistance];
+  SharedTable& table = cache[{ maxDistance, offset }];
   if (!table)
   {
-    table = build(maxDistance);
+    table = build(maxDistance, offset);
   }
   return table;
 }
 }
 
 //------------------------------------------------------------------------------
-void vtkMLAAAreaTexture::ComputeAreas(int e1, int e2, int left, int right, double areas[2])
+void vtkMLAAAreaTexture::ComputeAreas(
+  int e1, int e2, int left, int right, double areas[2], double across, double along)
 {
   areas[0] = areas[1] = 0.0;
   if (left < 0 || right < 0)
@@ -87,35 +93,89 @@ void vtkMLAAAreaTexture::ComputeAreas(int e1, int e2, int left, int right, doubl
     h2 = -h1;
   }
 
-  double signedAreas[2] = { 0.0, 0.0 }; // first half, second half
-  if (h1 != 0.0 && x0 < middle)
+  if (across == 0.0 && along == 0.0)
   {
-    signedAreas[0] = IntegrateFallingRamp(h1, middle, x0, std::min(x1, middle));
-  }
-  if (h2 != 0.0 && x1 > middle)
-  {
-    // Mirror the second half onto the first: x -> L - x.
-    signedAreas[1] = IntegrateFallingRamp(h2, middle, length - x1, length - std::max(x0, middle));
-  }
-  for (double a : signedAreas)
-  {
-    if (a < 0.0)
+    double signedAreas[2] = { 0.0, 0.0 }; // first half, second half
+    if (h1 != 0.0 && x0 < middle)
     {
-      areas[0] -= a; // below the edge: the owning pixel takes the opposite colour
+      signedAreas[0] = IntegrateFallingRamp(h1, middle, x0, std::min(x1, middle));
     }
-    else
+    if (h2 != 0.0 && x1 > middle)
     {
-      areas[1] += a; // above the edge: the opposite pixel takes the owning pixel's colour
+      // Mirror the second half onto the first: x -> L - x.
+      signedAreas[1] = IntegrateFallingRamp(h2, middle, length - x1, length - std::max(x0, middle));
     }
+    for (double a : signedAreas)
+    {
+      if (a < 0.0)
+      {
+        areas[0] -= a; // below the edge: the owning pixel takes the opposite colour
+      }
+      else
+      {
+        areas[1] += a; // above the edge: the opposite pixel takes the owning pixel's colour
+      }
+    }
+    return;
+  }
+
+  // The line raised by `across` and moved by `along` relative to the pixel: its height at x
+  // (measured in the pixel's frame) is h(x - along) + across, where h continues each half's
+  // slope past its end (a straight staircase goes on beyond its step). The pixel's areas are
+  // the parts of [x0, x1] between the edge and the line, below it (owning pixel) or above it
+  // (opposite pixel), at most one pixel high. The height is linear between the breakpoints
+  // (the middle of the line, and where it crosses -1, 0 and 1), so each piece is a trapezoid.
+  auto height = [&](double x) {
+    const double t = x - along;
+    return across + (t < middle ? h1 * (1.0 - t / middle) : h2 * (1.0 - (length - t) / middle));
+  };
+  std::vector<double> cuts = { x0, x1 };
+  const double kink = middle + along;
+  if (kink > x0 && kink < x1)
+  {
+    cuts.push_back(kink);
+  }
+  std::sort(cuts.begin(), cuts.end());
+  std::vector<double> pieces;
+  for (size_t i = 0; i + 1 < cuts.size(); ++i)
+  {
+    const double a = cuts[i], b = cuts[i + 1];
+    const double ha = height(a), hb = height(b);
+    pieces.push_back(a);
+    for (double level : { -1.0, 0.0, 1.0 })
+    {
+      if ((ha - level) * (hb - level) < 0.0)
+      {
+        pieces.push_back(a + (b - a) * (ha - level) / (ha - hb));
+      }
+    }
+  }
+  pieces.push_back(x1);
+  std::sort(pieces.begin(), pieces.end());
+  for (size_t i = 0; i + 1 < pieces.size(); ++i)
+  {
+    const double a = pieces[i], b = pieces[i + 1];
+    const double area = 0.5 * (std::min(1.0, std::max(-1.0, height(a))) +
+                          std::min(1.0, std::max(-1.0, height(b)))) * (b - a);
+    (area < 0.0 ? areas[0] : areas[1]) += std::abs(area);
   }
 }
 
 //------------------------------------------------------------------------------
 std::shared_ptr<const std::vector<float>> vtkMLAAAreaTexture::GetSharedTable(int maxDistance)
 {
+  return GetSharedTable(maxDistance, 0.0, 0.0);
+}
+
+//------------------------------------------------------------------------------
+std::shared_ptr<const std::vector<float>> vtkMLAAAreaTexture::GetSharedTable(
+  int maxDistance, double across, double along)
+{
   static std::mutex cacheMutex;
-  static std::map<int, SharedTable> cache;
-  return CachedTable(cacheMutex, cache, maxDistance, [](int distance) {
+  static std::map<std::pair<int, Offset>, SharedTable> cache;
+  const Offset offset = { std::min(0.5, std::max(-0.5, across)),
+    std::min(0.5, std::max(-0.5, along)) };
+  return CachedTable(cacheMutex, cache, maxDistance, offset, [](int distance, Offset shift) {
     const int d = distance + 1;
     const int size = NumberOfCodes * d;
     auto table =
@@ -133,7 +193,7 @@ std::shared_ptr<const std::vector<float>> vtkMLAAAreaTexture::GetSharedTable(int
           for (int left = 0; left < d; ++left)
           {
             double areas[2];
-            ComputeAreas(e1, e2, left, right, areas);
+            ComputeAreas(e1, e2, left, right, areas, shift.first, shift.second);
             const size_t texel = static_cast<size_t>(d * e2 + right) * size + (d * e1 + left);
             (*table)[2 * texel] = static_cast<float>(areas[0]);
             (*table)[2 * texel + 1] = static_cast<float>(areas[1]);
@@ -177,8 +237,8 @@ std::shared_ptr<const std::vector<float>> vtkMLAAAreaTexture::GetSharedDiagonalT
   int maxDistance)
 {
   static std::mutex cacheMutex;
-  static std::map<int, SharedTable> cache;
-  return CachedTable(cacheMutex, cache, maxDistance, [](int distance) {
+  static std::map<std::pair<int, Offset>, SharedTable> cache;
+  return CachedTable(cacheMutex, cache, maxDistance, Offset(), [](int distance, Offset) {
     const int d = distance + 1;
     const int size = NumberOfDiagonalCodes * d;
     auto table =

@@ -105,13 +105,32 @@ public:
    * The analytical areas, in double precision, without a table: areas[0] for the pixel that
    * owns the edgel, areas[1] for the pixel opposite. Codes other than 1 and 3 add no slope.
    * Distances must be non-negative.
+   *
+   * `across` and `along` (default 0, in pixels) move the whole revectorised line relative to
+   * the pixel before the areas are taken: `across` towards the opposite pixel, `along` along
+   * the line (towards its second end); past its ends the line continues with the slope it
+   * has there. They serve images that are one sample set of a multisampled render
+   * (vtkOpenGLAntialiasingPass::SetMultiSamples): such an image holds the scene at each
+   * pixel's sample position, not at its centre, so the line found in it lies where the edge
+   * is as seen from the samples; moved by the sample's offset from the pixel centre, the areas
+   * are those of the whole pixel, and averaging the sample images gives the pixel's coverage
+   * rather than the coverages of shifted pixels. A straight line (codes 0) moved across gives
+   * |across| to one of the pixels. The areas are exact integrals, the line's height clamped to
+   * one pixel on either side.
    */
-  static void ComputeAreas(int e1, int e2, int left, int right, double areas[2]);
+  static void ComputeAreas(int e1, int e2, int left, int right, double areas[2],
+    double across = 0.0, double along = 0.0);
 
+  ///@{
   /**
-   * The shared table for cells of side D = maxDistance + 1, computing it on first use.
+   * The shared table for cells of side D = maxDistance + 1, computing it on first use; with
+   * `across` and `along`, the table of the line moved by them (ComputeAreas; each clamped to
+   * [-1/2, 1/2]).
    */
   static std::shared_ptr<const std::vector<float>> GetSharedTable(int maxDistance);
+  static std::shared_ptr<const std::vector<float>> GetSharedTable(
+    int maxDistance, double across, double along);
+  ///@}
 
   ///@{
   /**

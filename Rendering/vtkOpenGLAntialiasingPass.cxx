@@ -1380,6 +1380,19 @@ bool vtkOpenGLAntialiasingPass::AntialiasSamples(const Frame& frame, int samples
   const int last = debug ? first + 1 : samples;
 
   ostate->PushFramebufferBindings();
+  // The sample positions the driver uses, for the method (GetCurrentSampleSet): queried with
+  // the multisampled framebuffer bound (glGetMultisamplefv, OpenGL 3.2: VTK has no wrapper).
+  SampleSet set;
+  set.Offsets.assign(2 * samples, 0.0);
+  set.Colors = this->SamplesColorTexture;
+  this->SamplesFramebuffer->Bind();
+  for (int sample = 0; sample < samples; ++sample)
+  {
+    GLfloat position[2] = { 0.5f, 0.5f };
+    glGetMultisamplefv(GL_SAMPLE_POSITION, sample, position);
+    set.Offsets[2 * sample] = position[0] - 0.5;
+    set.Offsets[2 * sample + 1] = position[1] - 0.5;
+  }
   bool done = true;
   for (int sample = first; done && sample < last; ++sample)
   {
@@ -1390,7 +1403,10 @@ bool vtkOpenGLAntialiasingPass::AntialiasSamples(const Frame& frame, int samples
       this->SampleFramebuffer->Bind();
       this->SampleFramebuffer->AddColorAttachment(0, this->SampleTexture);
       this->SampleFramebuffer->ActivateDrawBuffer(0);
+      set.Index = sample;
+      this->CurrentSampleSet = set;
       done = this->Antialias(sampleFrame);
+      this->CurrentSampleSet = SampleSet();
       result = this->SampleTexture;
     }
     // Accumulated: the sum of the sample images, each scaled by 1 / N.

@@ -272,6 +272,18 @@ protected:
   virtual vtkIdType GetMethodTargetMemorySize() = 0;
   // Substitutions in a fragment source beyond //VTK::Antialiasing::Dec (shared snippets).
   virtual void SubstituteShaderSnippets(std::string&) {}
+
+  // With MultiSamples, while Antialias runs on one sample set: its index (-1 otherwise), the
+  // offsets of all the samples from the pixel centre in pixels (x, y of sample s at 2 s, 2 s + 1;
+  // x right, y up, where the driver places them) and the multisampled colour texture (to tell
+  // which pixels' samples differ).
+  struct SampleSet
+  {
+    int Index = -1;
+    std::vector<double> Offsets;
+    vtkTextureObject* Colors = nullptr;
+  };
+  const SampleSet& GetCurrentSampleSet() const { return this->CurrentSampleSet; }
   // /@}
 
   // A full-screen quad and the #defines its fragment shader was built with: the options that change
@@ -401,6 +413,7 @@ private:
   vtkTextureObject* SampleTexture = nullptr;       // one antialiased sample image
   vtkTextureObject* AccumulationTexture = nullptr; // the average of the antialiased samples
   ShaderVariant SampleCopyQuad, AccumulateQuad, ResolveQuad;
+  SampleSet CurrentSampleSet;
 };
 
 #endif

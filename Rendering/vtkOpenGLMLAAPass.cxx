@@ -249,6 +249,18 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   fbo->AddColorAttachment(0, this->WeightsTexture);
   fbo->ActivateDrawBuffer(0);
   ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+  // A sample set of a multisampled render (SampleAreas): the areas of its sample's offsets.
+  const SampleSet& set = this->GetCurrentSampleSet();
+  const bool sampleAreas = this->SampleAreas && set.Index >= 0 && set.Colors;
+  if (sampleAreas)
+  {
+    this->PrepareSampleAreas(renWin, set);
+  }
+  else if (this->SampleAreaTexture && set.Index < 0) // a single-sample render: not kept
+  {
+    DeleteObject(this->SampleAreaTexture, renWin);
+    this->SampleAreaOffsets.clear();
+  }
   // The search length and the diagonal patterns are compile-time: constant loop bounds, and no
   // diagonal code at all without DiagonalDetection (section 4.3).
   const std::string weightsDefines =
@@ -257,7 +269,8 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
     Define("MLAA_CORNER_EXTRAPOLATION", this->Options->GetCornerExtrapolation()) +
     Define("MLAA_MINIMUM_DIAGONAL_LENGTH", vtkMLAAOptions::MinimumDiagonalLength) +
     Define("MLAA_RECURSIVE_DOUBLING", lengths != nullptr) +
-    Define("MLAA_DIAGONAL_LENGTHS", diagonalLengths != nullptr);
+    Define("MLAA_DIAGONAL_LENGTHS", diagonalLengths != nullptr) +
+    Define("MLAA_SAMPLE_AREAS", sampleAreas);
   if (!this->ReadyQuad(renWin, this->WeightsQuad, vtkMLAABlendingWeightsFS, weightsDefines))
   {
     return false;
@@ -269,6 +282,23 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   program->SetUniformi("edgesTexture", this->EdgesTexture->GetTextureUnit());
   program->SetUniformi("areaTexture", this->AreaTexture->GetTextureUnit());
   program->SetUniformi("diagonalAreaTexture", this->DiagonalAreaTexture->GetTextureUnit());
+  if (sampleAreas)
+  {
+    this->SampleAreaTexture->Activate();
+    set.Colors->Activate();
+    program->SetUniformi("sampleAreaTexture", this->SampleAreaTexture->GetTextureUnit());
+    program->SetUniformi("samplesColor", set.Colors->GetTextureUnit());
+    program->SetUniformi("numberOfSamples", static_cast<int>(set.Offsets.size() / 2));
+    program->SetUniformi("sampleIndex", set.Index);
+    // How near a pixel's border its samples come (the edge between two pixels whose samples
+    // all agree lies within this of the border).
+    double gap = 0.5;
+    for (double offset : set.Offsets)
+    {
+      gap = std::min(gap, 0.5 - std::abs(offset));
+    }
+    program->SetUniformf("sampleGap", static_cast<float>(gap));
+  }
   if (lengths)
   {
     lengths->Activate();
@@ -288,11 +318,63 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   {
     lengths->Deactivate();
   }
+  if (sampleAreas)
+  {
+    set.Colors->Deactivate();
+    this->SampleAreaTexture->Deactivate();
+  }
   this->DiagonalAreaTexture->Deactivate();
   this->AreaTexture->Deactivate();
   this->EdgesTexture->Deactivate();
   ostate->vtkglDepthMask(GL_TRUE);
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLMLAAPass::PrepareSampleAreas(vtkOpenGLRenderWindow* renWin, const SampleSet& set)
+{
+  const int maxDistance = this->Options->GetMaxDistance();
+  if (this->SampleAreaTexture && this->SampleAreaMaxDistance == maxDistance &&
+    this->SampleAreaOffsets == set.Offsets)
+  {
+    return;
+  }
+  // Per sample (offset x, y from the pixel centre), the line moved by it: across a horizontal
+  // line towards the edgel's opposite pixel is +y, along it (towards its second end) +x; across
+  // a vertical line -x (the opposite pixel is to the left), along it -y (its first end is the
+  // upper one).
+  const int size = vtkMLAAAreaTexture::NumberOfCodes * (maxDistance + 1);
+  const size_t tableSize = static_cast<size_t>(size) * size * 2;
+  const size_t samples = set.Offsets.size() / 2;
+  std::vector<float> stacked;
+  stacked.reserve(2 * samples * tableSize);
+  for (size_t s = 0; s < samples; ++s)
+  {
+    const double x = set.Offsets[2 * s], y = set.Offsets[2 * s + 1];
+    for (const auto& offset : { std::make_pair(y, x), std::make_pair(-x, -y) })
+    {
+      const auto table =
+        vtkMLAAAreaTexture::GetSharedTable(maxDistance, offset.first, offset.second);
+      stacked.insert(stacked.end(), table->begin(), table->end());
+    }
+  }
+  if (this->SampleAreaTexture)
+  {
+    this->SampleAreaTexture->ReleaseGraphicsResources(renWin);
+  }
+  else
+  {
+    this->SampleAreaTexture = NewTexture(renWin);
+  }
+  vtkTextureObject* texture = this->SampleAreaTexture;
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  texture->SetMinificationFilter(vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  texture->Create2DFromRaw(size, static_cast<unsigned int>(2 * samples * size), 2, VTK_FLOAT,
+    stacked.data());
+  this->SampleAreaOffsets = set.Offsets;
+  this->SampleAreaMaxDistance = maxDistance;
 }
 
 //------------------------------------------------------------------------------
@@ -554,11 +636,13 @@ void vtkOpenGLMLAAPass::ReleaseMethodResources(vtkWindow* w)
          &this->MaskTexture, &this->AreaTexture,
          &this->DiagonalAreaTexture, &this->LengthsTextures[0], &this->LengthsTextures[1],
          &this->DiagonalLengthsTextures[0], &this->DiagonalLengthsTextures[1],
-         &this->ReconstructedTexture })
+         &this->ReconstructedTexture, &this->SampleAreaTexture })
   {
     DeleteObject(*texture, w);
   }
   this->AreaTextureMaxDistance = 0;
+  this->SampleAreaOffsets.clear();
+  this->SampleAreaMaxDistance = 0;
 }
 
 //------------------------------------------------------------------------------
@@ -584,7 +668,7 @@ vtkIdType vtkOpenGLMLAAPass::GetMethodTargetMemorySize()
     TextureBytes(this->AreaTexture, 8) + TextureBytes(this->DiagonalAreaTexture, 12) +
     TextureBytes(this->LengthsTextures[0], 8) + TextureBytes(this->LengthsTextures[1], 8) +
     TextureBytes(this->DiagonalLengthsTextures[0], 8) +
-    TextureBytes(this->DiagonalLengthsTextures[1], 8);
+    TextureBytes(this->DiagonalLengthsTextures[1], 8) + TextureBytes(this->SampleAreaTexture, 8);
 }
 
 //------------------------------------------------------------------------------
@@ -628,6 +712,7 @@ void vtkOpenGLMLAAPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "LineLengths: " << GetLineLengthsAsString(this->LineLengths) << "\n";
+  os << indent << "SampleAreas: " << (this->SampleAreas ? "On" : "Off") << "\n";
   os << indent << "Options:\n";
   this->Options->PrintSelf(os, indent.GetNextIndent());
 }

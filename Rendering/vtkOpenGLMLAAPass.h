@@ -112,6 +112,8 @@
 #include "vtkOpenGLAntialiasingPass.h"
 #include "vtkRenderingMLAAModule.h" // For export macro
 
+#include <vector> // For std::vector
+
 class vtkMLAAOptions;
 class vtkTextureObject;
 
@@ -195,6 +197,30 @@ public:
    */
   bool GetUsesDiagonalRecursiveDoubling();
 
+  ///@{
+  /**
+   * With vtkOpenGLAntialiasingPass::SetMultiSamples: whether the areas of each sample set are
+   * taken for the whole pixel (default on). Each sample set is the scene seen at one sample
+   * position of every pixel; the line that MLAA finds in it is moved by that sample's offset
+   * from the pixel centre (the driver's sample positions) before its areas are read
+   * (vtkMLAAAreaTexture::ComputeAreas with offsets), wherever a pixel on either side of the
+   * edgel has samples that differ (a geometric edge crosses it). Elsewhere the samples were
+   * shaded at the pixel centre and the usual table applies, except that where a pixel at an end
+   * of the line has differing samples, the edge runs between the two pixels' sample patterns
+   * and their areas are limited to the gap between those patterns and the pixel border (1/8
+   * with 4 samples). U shapes (both ends of the line step to the same side: bumps, dots, ends of
+   * thin lines) keep the usual areas. The average of the sample sets then approaches the
+   * pixel's coverage along edges instead of blurring it by the spread of the sample positions
+   * (docs/measurements.md, "Multisampled renders"). Off: each sample set is antialiased exactly
+   * as the single-sample pass, and so as vtkImageMLAA, would (the CPU filter has no samples).
+   * Orthogonal lines only: staircases of vtkMLAAOptions::DiagonalDetection and ends halved by
+   * CornerExtrapolation keep the usual areas.
+   */
+  vtkSetMacro(SampleAreas, bool);
+  vtkGetMacro(SampleAreas, bool);
+  vtkBooleanMacro(SampleAreas, bool);
+  ///@}
+
   /**
    * Bytes of GPU memory held by the pass's render targets at the last render (the copy of the
    * delegate's colour, its reconstructed copy with vtkMLAAOptions::Reconstruction, and of its
@@ -216,6 +242,7 @@ protected:
 
   vtkMLAAOptions* Options = nullptr;
   int LineLengths = AUTOMATIC;
+  bool SampleAreas = true;
 
   // The hooks of vtkOpenGLAntialiasingPass.
   bool NeedsDelegateDepth() override;
@@ -268,6 +295,14 @@ private:
   vtkTextureObject* DiagonalLengthsTextures[2] = { nullptr, nullptr }; // the same, staircases
   vtkTextureObject* ReconstructedTexture = nullptr; // with vtkMLAAOptions::Reconstruction only
   int AreaTextureMaxDistance = 0;
+  // With MultiSamples and SampleAreas: the area tables of each sample's offsets, stacked
+  // (sample s: rows 2 s T to (2 s + 1) T - 1 for horizontal lines, the next T for vertical
+  // ones, T the area texture's size), and the offsets and maximum distance they were made for.
+  vtkTextureObject* SampleAreaTexture = nullptr;
+  std::vector<double> SampleAreaOffsets;
+  int SampleAreaMaxDistance = 0;
+  // Uploads SampleAreaTexture for the current sample set's count when its offsets changed.
+  void PrepareSampleAreas(vtkOpenGLRenderWindow* renWin, const SampleSet& set);
   ShaderVariant ReconstructionQuad;
   ShaderVariant WriteBackQuad;
   ShaderVariant EdgesQuad;

@@ -19,6 +19,8 @@
 //   MLAA-S2, MLAA-S4, MLAA-S8, DLAA-S4
 //              the passes with SetMultiSamples(2, 4, 8): the method on each sample set of a
 //              multisampled render, resolved (the count the driver gave is printed per scene);
+//   MLAA-S4plain  MLAA-S4 without vtkOpenGLMLAAPass::SampleAreas (each sample set antialiased
+//              as a single-sample image);
 //   variants   (unless --no-variants) MLAA-pass with each feature of "Morphological
 //              antialiasing and topological reconstruction" over the medium preset (+lab, +steps32,
 //              +steps128, +recon), the three together (+all3) and each preset (P-low ...
@@ -80,7 +82,8 @@ using mlaaBenchmark::Stopwatch;
 // The methods in table order ("none" first: its AAR is 0 by definition); the variants are
 // added unless --no-variants is given.
 std::vector<std::string> Methods = { "none", "FXAA", "MSAA2", "MSAA4", "MSAA8", "MLAA-CPU",
-  "MLAA-pass", "DLAA-pass", "MLAA-S2", "MLAA-S4", "MLAA-S8", "DLAA-S4", "MLAA-temporal",
+  "MLAA-pass", "DLAA-pass", "MLAA-S2", "MLAA-S4", "MLAA-S8", "MLAA-S4plain", "DLAA-S4",
+  "MLAA-temporal",
   "DLAA-temporal" };
 // The methods of the crop mosaic, in order.
 std::vector<std::string> MosaicMethods = { "none", "FXAA", "MSAA4", "MLAA-CPU", "MLAA-pass",
@@ -605,6 +608,10 @@ int main(int argc, char* argv[])
         multisampleNote += " MLAA-S" + std::to_string(count) + ": " +
           std::to_string(pass->GetRenderedMultiSamples()) + " samples;";
       }
+      pass->SetMultiSamples(4);
+      pass->SampleAreasOff();
+      Capture(window, images["MLAA-S4plain"]);
+      pass->SampleAreasOn();
       pass->SetMultiSamples(0);
       // Parity with MLAA-CPU: the overlays antialiased too, as the filter sees them.
       pass->AntialiasOverlaysOn();

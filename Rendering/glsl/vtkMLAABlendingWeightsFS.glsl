@@ -30,6 +30,12 @@
 //                                 from the line lengths of vtkMLAALineLengthsFS.glsl (Biri et
 //                                 al., section 3.3) instead of being searched here; they are the
 //                                 same integers (vtkOpenGLMLAAPass::LineLengths)
+//   MLAA_SAMPLE_AREAS             defined: the image is sample `sampleIndex` of a multisampled
+//                                 render (vtkOpenGLMLAAPass::SampleAreas): orthogonal lines whose
+//                                 edgel has, on either side, a pixel whose samples differ read
+//                                 their areas from that sample's tables of sampleAreaTexture (the
+//                                 line moved by the sample's offset from the pixel centre,
+//                                 vtkMLAAAreaTexture::ComputeAreas); no CPU twin
 //   MLAA_DIAGONAL_LENGTHS         defined (with MLAA_DIAGONAL_DETECTION): the numbers of units of
 //                                 staircases are read from the diagonal lengths that
 //                                 vtkMLAALineLengthsFS.glsl counted by recursive doubling
@@ -52,6 +58,15 @@ in vec2 texCoord;
 uniform sampler2D edgesTexture; // RG8, red = left edgel, green = top edgel; LINEAR, clamp to edge
 uniform sampler2D areaTexture;  // vtkMLAAAreaTexture's table, RG32F (texelFetch only)
 uniform sampler2D diagonalAreaTexture; // vtkMLAAAreaTexture's diagonal table, RGB32F
+#ifdef MLAA_SAMPLE_AREAS
+// Per sample s, the area table of horizontal lines (rows 2 s T...) then of vertical lines,
+// T = 5 D texels high each; RG32F (texelFetch only).
+uniform sampler2D sampleAreaTexture;
+uniform sampler2DMS samplesColor; // the multisampled render
+uniform int numberOfSamples;
+uniform int sampleIndex;
+uniform float sampleGap; // 1/2 less the largest |offset| of a sample from the pixel centre
+#endif
 #ifdef MLAA_RECURSIVE_DOUBLING
 // Line lengths (left, right, down, up), RGBA16F integers, exact up to 4^passes >= maxDistance.
 uniform sampler2D lengthsTexture;
@@ -142,6 +157,56 @@ int crossingCode(float fetched, int endPixel, int size)
 vec2 area(int e1, int e2, int d1, int d2)
 {
   return texelFetch(areaTexture, ivec2(cellSize * e1 + d1, cellSize * e2 + d2), 0).rg;
+}
+
+#ifdef MLAA_SAMPLE_AREAS
+// Whether the samples of pixel q differ (a geometric edge crosses it); none outside the image.
+bool samplesDiffer(ivec2 q)
+{
+  if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, textureSize(samplesColor))))
+  {
+    return false;
+  }
+  vec4 first = texelFetch(samplesColor, q, 0);
+  for (int s = 1; s < numberOfSamples; ++s)
+  {
+    if (any(notEqual(texelFetch(samplesColor, q, s), first)))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+#endif
+
+// The areas of the line through the edgel between pixels p and q (vertical: a vertical line),
+// from the area texture; with MLAA_SAMPLE_AREAS:
+// - where either pixel's samples differ (a geometric edge crosses it), from this sample's
+//   tables (the line moved by the sample's offset), except for U shapes (both ends step to the
+//   same side: the outline of a bump, a dot or the end of a thin line, whose reconstruction
+//   does not place the feature; moving them lowered the scenes of points and thin lines);
+// - where neither does but a pixel at an end of the line does (the line is a staircase of a
+//   geometric edge), the edge passes between the two pixels' sample patterns: within
+//   `sampleGap` (1/2 less the largest offset of a sample from the pixel centre) of the pixel
+//   boundary, so neither pixel takes more than that of the other's colour.
+vec2 lineArea(ivec2 p, ivec2 q, bool vertical, int e1, int e2, int d1, int d2)
+{
+#ifdef MLAA_SAMPLE_AREAS
+  bool bump = e1 == e2 && (e1 == 1 || e1 == 3); // a U shape: both ends step the same way
+  if (!bump && (samplesDiffer(p) || samplesDiffer(q)))
+  {
+    int size = 5 * cellSize;
+    int row = (2 * sampleIndex + (vertical ? 1 : 0)) * size;
+    return texelFetch(sampleAreaTexture, ivec2(cellSize * e1 + d1, row + cellSize * e2 + d2), 0).rg;
+  }
+  ivec2 along = vertical ? ivec2(0, 1) : ivec2(-1, 0); // towards the first end
+  if (samplesDiffer(p + d1 * along) || samplesDiffer(q + d1 * along) ||
+    samplesDiffer(p - d2 * along) || samplesDiffer(q - d2 * along))
+  {
+    return min(area(e1, e2, d1, d2), vec2(sampleGap));
+  }
+#endif
+  return area(e1, e2, d1, d2);
 }
 
 // The areas with the heights of the ends flagged in `halved` halved (CornerExtrapolation): each
@@ -492,7 +557,8 @@ void main()
       }
     }
 #endif
-    weights.rg = area(e1, e2, left, right, halved);
+    weights.rg = any(halved) ? area(e1, e2, left, right, halved)
+                             : lineArea(p, p + ivec2(0, 1), false, e1, e2, left, right);
   }
 
   if (left) // edge at the left: a vertical line, its first end is the upper one
@@ -541,7 +607,8 @@ void main()
       }
     }
 #endif
-    weights.ba = area(e1, e2, up, down, halved);
+    weights.ba = any(halved) ? area(e1, e2, up, down, halved)
+                             : lineArea(p, p - ivec2(1, 0), true, e1, e2, up, down);
   }
 
   gl_FragData[0] = weights;

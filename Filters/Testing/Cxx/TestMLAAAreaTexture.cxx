@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <vector>
 
 namespace
 {
@@ -231,6 +232,79 @@ int TestMLAAAreaTexture(int, char*[])
   // Tables are shared per size.
   EXPECT(vtkMLAAAreaTexture::GetSharedTable(8) == vtkMLAAAreaTexture::GetSharedTable(8));
   EXPECT(vtkMLAAAreaTexture::GetSharedTable(8) != vtkMLAAAreaTexture::GetSharedTable(16));
+
+  // The line moved by a sample's offset (across towards the opposite pixel, along towards the
+  // second end), worked by hand.
+  auto expectMoved = [](int e1, int e2, int left, int right, double across, double along,
+                       double own, double opposite, int line) {
+    double a[2];
+    vtkMLAAAreaTexture::ComputeAreas(e1, e2, left, right, a, across, along);
+    if (!Near(a[0], own) || !Near(a[1], opposite))
+    {
+      std::cerr << "line " << line << ": e1=" << e1 << " e2=" << e2 << " left=" << left
+                << " right=" << right << " moved by (" << across << ", " << along << ") gives ("
+                << a[0] << ", " << a[1] << "), expected (" << own << ", " << opposite << ")"
+                << std::endl;
+      ++Failures;
+    }
+  };
+  // A straight line (no slope at either end) raised or lowered by 1/4: a quarter of the pixel
+  // on one side, wherever the pixel is; moving it along changes nothing.
+  expectMoved(0, 0, 3, 5, 0.25, 0.0, 0.0, 0.25, __LINE__);
+  expectMoved(0, 0, 3, 5, -0.25, 0.375, 0.25, 0.0, __LINE__);
+  // L of one pixel (height 1/2 at x = 0 falling to 0 at x = 1/2; unmoved: 1/8 above).
+  expectMoved(1, 0, 0, 0, 0.0, 0.0, 0.0, 0.125, __LINE__);
+  // Raised by 1/4: 3/4 to 1/4 over the first half, 1/4 over the second: 1/4 + 1/8.
+  expectMoved(1, 0, 0, 0, 0.25, 0.0, 0.0, 0.375, __LINE__);
+  // Lowered by 1/4: crosses the edge at x = 1/4: 1/32 above, 1/32 + 1/8 below.
+  expectMoved(1, 0, 0, 0, -0.25, 0.0, 0.15625, 0.03125, __LINE__);
+  // Moved along by 1/4: the slope continues past the end (3/4 at x = 0), reaching 0 at
+  // x = 3/4: (3/4)^2 / 2 above.
+  expectMoved(1, 0, 0, 0, 0.0, 0.25, 0.0, 0.28125, __LINE__);
+  // Moved by 1/2 both ways: height 3/2 - x, clamped to one pixel: 1/2 + 3/8 above.
+  expectMoved(1, 0, 0, 0, 0.5, 0.5, 0.0, 0.875, __LINE__);
+  // The middle pixel of an L of 5 (code 3, below the edge), moved along by 1/8: the line
+  // -(1/2)(1 - x / 2.5), which reaches the edge at the middle x = 2.5, becomes
+  // -(1/2)(1 - (x - 1/8) / 2.5) and reaches it at x = 2.625: a triangle over [2, 2.625].
+  {
+    const double h = [](double x) { return -0.5 * (1.0 - (x - 0.125) / 2.5); }(2.0);
+    expectMoved(3, 0, 2, 2, 0.0, 0.125, 0.5 * -h * 0.625, 0.0, __LINE__);
+  }
+  // Unmoved, the same areas as the table; the tables of no offset are the usual one (shared),
+  // of an offset another one, and offsets are clamped to half a pixel.
+  double unmoved[2], plain[2];
+  vtkMLAAAreaTexture::ComputeAreas(3, 1, 2, 5, unmoved, 0.0, 0.0);
+  vtkMLAAAreaTexture::ComputeAreas(3, 1, 2, 5, plain);
+  EXPECT(unmoved[0] == plain[0] && unmoved[1] == plain[1]);
+  EXPECT(vtkMLAAAreaTexture::GetSharedTable(8, 0.0, 0.0) == vtkMLAAAreaTexture::GetSharedTable(8));
+  EXPECT(vtkMLAAAreaTexture::GetSharedTable(8, 0.125, -0.375) !=
+    vtkMLAAAreaTexture::GetSharedTable(8));
+  EXPECT(vtkMLAAAreaTexture::GetSharedTable(8, 0.9, 0.0) ==
+    vtkMLAAAreaTexture::GetSharedTable(8, 0.5, 0.0));
+  {
+    // A moved table holds ComputeAreas of its offsets, texel for texel.
+    const std::vector<float>& moved = *vtkMLAAAreaTexture::GetSharedTable(8, 0.125, -0.375);
+    const int size = vtkMLAAAreaTexture::NumberOfCodes * 9;
+    bool same = true;
+    for (int e1 : { 0, 1, 3, 4 })
+    {
+      for (int e2 : { 0, 1, 3, 4 })
+      {
+        for (int left = 0; left < 9; ++left)
+        {
+          for (int right = 0; right < 9; ++right)
+          {
+            double a[2];
+            vtkMLAAAreaTexture::ComputeAreas(e1, e2, left, right, a, 0.125, -0.375);
+            const size_t texel = static_cast<size_t>(9 * e2 + right) * size + (9 * e1 + left);
+            same = same && moved[2 * texel] == static_cast<float>(a[0]) &&
+              moved[2 * texel + 1] == static_cast<float>(a[1]);
+          }
+        }
+      }
+    }
+    EXPECT(same);
+  }
 
   // Diagonal areas, worked by hand: (in, before, after) = ((1/2 + s)^2 / 2 at the unit's middle,
   // (1/2 - s)^2 / 2 at its two ends), s the revectorised line's shift.
