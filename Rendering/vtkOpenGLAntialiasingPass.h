@@ -108,8 +108,9 @@ public:
    * Temporal antialiasing (default off). The pass keeps a history of its results and blends each
    * frame into it:
    * - while neither the camera nor the scene changes, each render is jittered by a sub-pixel
-   *   offset (the Halton (2, 3) sequence, through the active camera's WindowCenter, put back
-   *   before the overlays are drawn and before Render returns) and the history is the exact
+   *   offset (the Sobol sequence, whose first ConvergedFrames points sample the pixel's box
+   *   evenly, through the active camera's WindowCenter, put back before the overlays are drawn
+   *   and before Render returns) and the history is the exact
    *   running average of these renders since the last change: N renders of a still scene give
    *   the mean of N jittered renders, which converges to the supersampled picture (line widths
    *   and point sizes kept); the first frame of an accumulation is the method's antialiased frame,
@@ -158,7 +159,8 @@ public:
   // /@{
   /**
    * Number of frames of an unchanged scene that RenderConverged accumulates. Default 16, clamped
-   * to [1, 4096].
+   * to [1, 4096]. The still jitter's offsets are placed for this many renders (rounded up to a
+   * power of two): they then lie on the centres of as many equal strata of the pixel.
    */
   vtkSetClampMacro(ConvergedFrames, int, 1, 4096);
   vtkGetMacro(ConvergedFrames, int);
