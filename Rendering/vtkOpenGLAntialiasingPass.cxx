@@ -1151,10 +1151,13 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
         h.Previous->Activate();
         program->SetUniformi("previousTexture", h.Previous->GetTextureUnit());
         program->SetUniformi("keepUnchanged", h.KeepUnchanged ? 1 : 0);
+        this->ColorTexture->Activate(); // this frame, not jittered: the clamp's range
+        program->SetUniformi("frameTexture", this->ColorTexture->GetTextureUnit());
       }
       h.BlendQuad.Quad->Render();
       if (reproject)
       {
+        this->ColorTexture->Deactivate();
         h.Previous->Deactivate();
       }
       this->DepthTexture->Deactivate();

@@ -118,8 +118,9 @@ public:
    *   (RenderConverged asks for a converged still);
    * - when the camera moves, the frame (not jittered) is antialiased by the method, and the
    *   history is reprojected with the delegate's depth and the previous and current
-   *   view-projection matrices, clamped to the range of the current frame's 3 x 3 neighbourhood
-   *   (rejecting what the current frame does not support: disocclusions, changed shading) and
+   *   view-projection matrices, clamped to the range of the 3 x 3 neighbourhood of the current
+   *   frame as rendered, before the method (rejecting what the current frame does not support:
+   *   disocclusions, changed shading), and
    *   blended with weight TemporalWeight for the current frame where a pixel's history did not
    *   move, rising to 0.7 where it moved a pixel or more (each read between pixels blurs the
    *   history a little);
