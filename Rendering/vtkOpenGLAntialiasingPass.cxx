@@ -96,6 +96,7 @@ public:
   vtkTextureObject* Current = nullptr;               // this frame, antialiased
   vtkTextureObject* Previous = nullptr; // the last unjittered render's frame, antialiased
   vtkTextureObject* Histories[2] = { nullptr, nullptr }; // RGBA32F, read and written in turn
+  vtkTextureObject* Counts[2] = { nullptr, nullptr }; // R32F: frames each pixel's history holds
   int Latest = 0;                                    // the one written last
   vtkOpenGLFramebufferObject* Framebuffer = nullptr;
   ShaderVariant BlendQuad, OutputQuad;
@@ -123,6 +124,8 @@ public:
     DeleteObject(this->Previous, w);
     DeleteObject(this->Histories[0], w);
     DeleteObject(this->Histories[1], w);
+    DeleteObject(this->Counts[0], w);
+    DeleteObject(this->Counts[1], w);
     DeleteObject(this->Framebuffer, w);
     this->BlendQuad.Release(w);
     this->OutputQuad.Release(w);
@@ -132,7 +135,8 @@ public:
   }
   bool HoldsResources() const
   {
-    return this->Current || this->Previous || this->Histories[0] || this->Histories[1] || this->Framebuffer;
+    return this->Current || this->Previous || this->Histories[0] || this->Histories[1] ||
+      this->Counts[0] || this->Counts[1] || this->Framebuffer;
   }
 };
 
@@ -845,7 +849,8 @@ vtkIdType vtkOpenGLAntialiasingPass::GetTargetMemorySize()
     (this->History ? TextureBytes(this->History->Current, colorBytes) +
           TextureBytes(this->History->Previous, colorBytes) +
           TextureBytes(this->History->Histories[0], 16) +
-          TextureBytes(this->History->Histories[1], 16)
+          TextureBytes(this->History->Histories[1], 16) +
+          TextureBytes(this->History->Counts[0], 4) + TextureBytes(this->History->Counts[1], 4)
                    : 0) +
     TextureBytes(this->SamplesColorTexture, colorBytes * samples) +
     TextureBytes(this->SamplesDepthTexture, 4 * samples) +
@@ -1054,6 +1059,8 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
     h.Previous = NewTexture(renWin);
     h.Histories[0] = NewTexture(renWin);
     h.Histories[1] = NewTexture(renWin);
+    h.Counts[0] = NewTexture(renWin);
+    h.Counts[1] = NewTexture(renWin);
     h.Framebuffer = vtkOpenGLFramebufferObject::New();
     h.Framebuffer->SetContext(renWin);
   }
@@ -1074,10 +1081,13 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
       }
     }
   }
-  for (vtkTextureObject* history : h.Histories)
+  for (int i = 0; i < 2; ++i)
   {
     // 32-bit floating point: a running average of many frames moves by less than 1/255 a frame.
-    if (AllocateColorTarget(history, width, height, 4, VTK_FLOAT, true, GL_RGBA32F))
+    const bool history =
+      AllocateColorTarget(h.Histories[i], width, height, 4, VTK_FLOAT, true, GL_RGBA32F);
+    const bool count = AllocateColorTarget(h.Counts[i], width, height, 1, VTK_FLOAT, false, GL_R32F);
+    if (history || count)
     {
       h.FrameMode = TemporalHistory::RESET;
       h.Accumulated = 1;
@@ -1087,6 +1097,7 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
   auto bindTarget = [&](vtkTextureObject* texture) {
     h.Framebuffer->Bind();
     h.Framebuffer->AddColorAttachment(0, texture);
+    h.Framebuffer->RemoveColorAttachment(1);
     h.Framebuffer->ActivateDrawBuffer(0);
     h.Framebuffer->StartNonOrtho(width, height);
     ostate->vtkglViewport(0, 0, width, height);
@@ -1110,6 +1121,8 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
   if (done)
   {
     bindTarget(h.Histories[next]);
+    h.Framebuffer->AddColorAttachment(1, h.Counts[next]); // each pixel's count of frames
+    h.Framebuffer->ActivateDrawBuffers(2);
     ostate->vtkglDisable(GL_BLEND);
     ostate->vtkglDisable(GL_DEPTH_TEST);
     ostate->vtkglDepthMask(GL_FALSE);
@@ -1125,18 +1138,22 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
       }
       else if (h.FrameMode == TemporalHistory::STILL)
       {
-        weight = 1.0f / h.Accumulated;
+        weight = 1.0f / h.Accumulated; // (the shader weighs by each pixel's own count)
       }
       // While the scene is still, the frames averaged are the jittered renders themselves: their
       // mean is the supersampled picture, which the method's own blending would blur; the
       // history starts from the method's frame (its error then weighs 1 / AccumulatedFrames).
+      // Each pixel's count of frames is kept with the history: pixels that moving actors did not
+      // reach go on from their own count when the actors stop, instead of starting again.
       vtkTextureObject* current =
         h.FrameMode == TemporalHistory::STILL ? this->ColorTexture : h.Current;
       vtkShaderProgram* program = h.BlendQuad.Quad->Program;
       current->Activate();
       h.Histories[h.Latest]->Activate();
+      h.Counts[h.Latest]->Activate();
       this->DepthTexture->Activate();
       program->SetUniformi("currentTexture", current->GetTextureUnit());
+      program->SetUniformi("countTexture", h.Counts[h.Latest]->GetTextureUnit());
       program->SetUniformi("historyTexture", h.Histories[h.Latest]->GetTextureUnit());
       program->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
       program->SetUniformf("currentWeight", weight);
@@ -1161,6 +1178,7 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
         h.Previous->Deactivate();
       }
       this->DepthTexture->Deactivate();
+      h.Counts[h.Latest]->Deactivate();
       h.Histories[h.Latest]->Deactivate();
       current->Deactivate();
     }

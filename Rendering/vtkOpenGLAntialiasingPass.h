@@ -127,7 +127,9 @@ public:
    * - when actors (vtkActor) only move, turn, scale or are shown or hidden, under a still camera,
    *   the frame is not jittered and the history is kept where the method's frame (the pixel's
    *   3 x 3 neighbourhood) is the same as at the last unjittered render (pixels the motion did not reach keep what they accumulated
-   *   and do not change), and replaced by the method's frame everywhere else (no ghost);
+   *   and do not change), and replaced by the method's frame everywhere else (no ghost); each
+   *   pixel keeps its own count of accumulated frames, so when the actors stop, the still
+   *   accumulation goes on from it where the history was kept;
    * - the history is reset (the result is the method's frame alone) when the pass is switched on,
    *   on a resize, when the scene changes otherwise (a prop added or removed, another prop than
    *   an actor modified, an actor's mapper, its input, its properties or texture modified, a

@@ -26,16 +26,22 @@
 //                       unjittered render's (previousTexture) keeps its history as it is, any
 //                       other takes the current frame.
 //   neither             (a still camera; currentTexture is the delegate's jittered render): the
-//                       history is read at this pixel, exactly, and not clamped: with
-//                       currentWeight 1 / N the blend is the running average of N renders.
+//                       history is read at this pixel, exactly, and not clamped: weighing the
+//                       current frame 1 / N, N the pixel's count, the blend is the running average
+//                       of the N renders it holds.
 // currentWeight: the weight of the current frame (1: the current frame alone, the history is not
-// read).
+// read). Besides the history (gl_FragData[0]) the blend writes each pixel's count of frames in it
+// (gl_FragData[1], from countTexture): 1 where the current frame replaces or mostly replaces the
+// history (a reset, a moving camera, a pixel moving actors reached), the count plus one in a still
+// accumulation, whose running average weighs the current frame 1 / count: a pixel that kept its
+// history while actors moved goes on from its own count when they stop.
 
 in vec2 texCoord; // over the viewport, which is the size of the textures
 uniform sampler2D historyTexture; // RGBA, floating point
 uniform sampler2D depthTexture;   // the delegate's depth
 #ifndef TEMPORAL_OUTPUT
 uniform sampler2D currentTexture; // this frame
+uniform sampler2D countTexture;   // the frames the history holds, per pixel
 uniform float currentWeight;
 uniform mat4 reprojection;
 #endif
@@ -110,6 +116,7 @@ void main()
   gl_FragDepth = depth;
 #else
   vec4 current = texelFetch(currentTexture, p, 0);
+  gl_FragData[1] = vec4(1.0);
   if (currentWeight >= 1.0)
   {
     gl_FragData[0] = current;
@@ -135,6 +142,7 @@ void main()
       }
     }
     gl_FragData[0] = unchanged ? texelFetch(historyTexture, p, 0) : current;
+    gl_FragData[1] = unchanged ? texelFetch(countTexture, p, 0) : vec4(1.0);
     return;
   }
   vec4 lo, hi;
@@ -172,7 +180,9 @@ void main()
   gl_FragData[0] = mix(history, current, weight);
 #else
   vec4 history = texelFetch(historyTexture, p, 0);
-  gl_FragData[0] = mix(history, current, currentWeight);
+  float count = texelFetch(countTexture, p, 0).r + 1.0;
+  gl_FragData[0] = mix(history, current, 1.0 / count);
+  gl_FragData[1] = vec4(count);
 #endif
 #endif
 }
