@@ -86,10 +86,9 @@ vec4 CatmullRom(sampler2D image, vec2 uv, ivec2 size)
 }
 
 // The range, per channel, of this frame as rendered (before the method) over the 3 x 3
-// neighbourhood of `p`. The history is clamped to it rather than to the method's frame: the
-// method's blending (DLAA's above all) moves values between neighbours differently from frame to
-// frame, and the rendered samples are what the history must agree with. Measured better for both
-// methods on every scene of mlaa-temporal at 0.2 and 0.5 degree a frame (docs/measurements.md).
+// neighbourhood of `p`, rather than of the method's frame: the rendered samples are what the
+// history has to agree with. Measured a little better (or equal) for both methods on every scene
+// of mlaa-temporal at 0.2 and 0.5 degree a frame (docs/measurements.md).
 void CurrentRange(ivec2 p, ivec2 size, out vec4 lo, out vec4 hi)
 {
   lo = texelFetch(frameTexture, p, 0);
