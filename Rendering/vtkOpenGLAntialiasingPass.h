@@ -108,8 +108,9 @@ public:
    * Temporal antialiasing (default off). The pass keeps a history of its results and blends each
    * frame into it:
    * - while neither the camera nor the scene changes, each render is jittered by a sub-pixel
-   *   offset (the Halton (2, 3) sequence, through the active camera's WindowCenter, put back
-   *   before the overlays are drawn and before Render returns) and the history is the exact
+   *   offset (the Sobol sequence, whose first ConvergedFrames points sample the pixel's box
+   *   evenly, through the active camera's WindowCenter, put back before the overlays are drawn
+   *   and before Render returns) and the history is the exact
    *   running average of these renders since the last change: N renders of a still scene give
    *   the mean of N jittered renders, which converges to the supersampled picture (line widths
    *   and point sizes kept); the first frame of an accumulation is the method's antialiased frame,
@@ -117,15 +118,18 @@ public:
    *   (RenderConverged asks for a converged still);
    * - when the camera moves, the frame (not jittered) is antialiased by the method, and the
    *   history is reprojected with the delegate's depth and the previous and current
-   *   view-projection matrices, clamped to the range of the current frame's 3 x 3 neighbourhood
-   *   (rejecting what the current frame does not support: disocclusions, changed shading) and
+   *   view-projection matrices, clamped to the range of the 3 x 3 neighbourhood of the current
+   *   frame as rendered, before the method (rejecting what the current frame does not support:
+   *   disocclusions, changed shading), and
    *   blended with weight TemporalWeight for the current frame where a pixel's history did not
    *   move, rising to 0.7 where it moved a pixel or more (each read between pixels blurs the
    *   history a little);
    * - when actors (vtkActor) only move, turn, scale or are shown or hidden, under a still camera,
    *   the frame is not jittered and the history is kept where the method's frame (the pixel's
    *   3 x 3 neighbourhood) is the same as at the last unjittered render (pixels the motion did not reach keep what they accumulated
-   *   and do not change), and replaced by the method's frame everywhere else (no ghost);
+   *   and do not change), and replaced by the method's frame everywhere else (no ghost); each
+   *   pixel keeps its own count of accumulated frames, so when the actors stop, the still
+   *   accumulation goes on from it where the history was kept;
    * - the history is reset (the result is the method's frame alone) when the pass is switched on,
    *   on a resize, when the scene changes otherwise (a prop added or removed, another prop than
    *   an actor modified, an actor's mapper, its input, its properties or texture modified, a
@@ -158,7 +162,8 @@ public:
   // /@{
   /**
    * Number of frames of an unchanged scene that RenderConverged accumulates. Default 16, clamped
-   * to [1, 4096].
+   * to [1, 4096]. The still jitter's offsets are placed for this many renders (rounded up to a
+   * power of two): they then lie on the centres of as many equal strata of the pixel.
    */
   vtkSetClampMacro(ConvergedFrames, int, 1, 4096);
   vtkGetMacro(ConvergedFrames, int);

@@ -28,6 +28,12 @@
 // MSAA4, MSAA8), and the passes with SetMultiSamples(2, 4, 8) (MLAA-S2 ... MLAA-S8, DLAA-S4),
 // reported as frame time / frame time of MSAA4 (medians of the same rounds), with the sample
 // counts the driver gave.
+// Temporal antialiasing (--temporal): both passes with SetTemporal(true) (MLAA-temporal,
+// DLAA-temporal), each kept from frame to frame as an application renders: with the camera turning
+// at every frame (--azimuth, default 0.2 degree) every frame reprojects and blends the history,
+// with --azimuth 0 every frame is a jittered render of a still accumulation. Reported as
+// overhead(X-temporal) / overhead(X-pass) (the single-frame pass of the same method, same rounds),
+// with the temporal pass's render-target memory.
 #include "BenchmarkUtilities.h"
 #include "vtkMLAAScenes.h"
 
@@ -144,6 +150,9 @@ void Usage(const char* program)
             << "                   loop and with recursive doubling\n"
             << "  --multisamples   also time 2x, 4x and 8x MSAA and the passes with 2, 4 and 8\n"
             << "                   samples, as frame time / frame time of 4x MSAA\n"
+            << "  --temporal       also time both passes with temporal antialiasing (moving\n"
+            << "                   camera: reprojection; --azimuth 0: still accumulation), as\n"
+            << "                   overhead / overhead of the same method's single-frame pass\n"
             << "For the MLAA pass, " << mlaaBenchmark::MLAAOptionsUsage();
 }
 
@@ -165,6 +174,7 @@ int main(int argc, char* argv[])
   bool variants = true;
   bool cpuClock = false;
   bool multisamples = false;
+  bool temporal = false;
   std::string scene = "mixed";
   vtkNew<vtkMLAAOptions> options;
   for (int i = 1; i < argc; ++i)
@@ -203,6 +213,10 @@ int main(int argc, char* argv[])
     else if (arg == "--multisamples")
     {
       multisamples = true;
+    }
+    else if (arg == "--temporal")
+    {
+      temporal = true;
     }
     else if (arg == "--no-long-lines")
     {
@@ -350,6 +364,24 @@ int main(int argc, char* argv[])
     pass->SetMultiSamples(4);
     samplePasses.push_back(pass);
     configurations.push_back({ "DLAA-S4", pass, false, {} });
+  }
+
+  // Temporal antialiasing: one pass per method, kept from frame to frame.
+  vtkNew<vtkOpenGLMLAAPass> mlaaTemporal;
+  vtkNew<vtkOpenGLDLAAPass> dlaaTemporal;
+  if (temporal)
+  {
+    for (vtkOpenGLAntialiasingPass* pass :
+      { static_cast<vtkOpenGLAntialiasingPass*>(mlaaTemporal.Get()),
+        static_cast<vtkOpenGLAntialiasingPass*>(dlaaTemporal.Get()) })
+    {
+      vtkNew<vtkRenderStepsPass> delegate;
+      pass->SetDelegatePass(delegate);
+      pass->TemporalOn();
+    }
+    mlaaTemporal->SetOptions(options);
+    configurations.push_back({ "MLAA-temporal", mlaaTemporal, false, {} });
+    configurations.push_back({ "DLAA-temporal", dlaaTemporal, false, {} });
   }
 
   vtkCamera* camera = renderer->GetActiveCamera();
@@ -531,6 +563,41 @@ int main(int argc, char* argv[])
       }
     }
   }
+  if (temporal)
+  {
+    std::cout << "temporal antialiasing ("
+              << (azimuth != 0.0 ? "camera turning every frame: reprojected history"
+                                 : "still camera: jittered accumulation")
+              << "): overhead / overhead of the same method's single-frame pass\n";
+    for (const char* method : { "MLAA", "DLAA" })
+    {
+      double single = 0.0, withHistory = 0.0;
+      for (const auto& c : configurations)
+      {
+        if (c.Name == std::string(method) + "-pass")
+        {
+          single = mlaaBenchmark::Median(c.Times) - stepsMedian;
+        }
+        if (c.Name == std::string(method) + "-temporal")
+        {
+          withHistory = mlaaBenchmark::Median(c.Times) - stepsMedian;
+        }
+      }
+      std::cout << "  " << method << "-temporal " << withHistory << " ms, " << method << "-pass "
+                << single << " ms: ";
+      if (single > 0.0)
+      {
+        std::cout << withHistory / single << "\n";
+      }
+      else
+      {
+        std::cout << "n/a (single-frame overhead not positive: within noise)\n";
+      }
+    }
+    std::cout << "MLAA-temporal render targets: "
+              << mlaaTemporal->GetTargetMemorySize() / (1024.0 * 1024.0) << " MiB = "
+              << mlaaTemporal->GetTargetMemorySize() / backBuffer << " x the back buffer\n";
+  }
   std::cout << "MLAA pass render targets: " << targets / (1024.0 * 1024.0) << " MiB = "
             << targets / backBuffer << " x the RGBA8 back buffer (" << backBuffer / (1024.0 * 1024.0)
             << " MiB); MLAA-specific targets (edges + blending weights): "
@@ -554,6 +621,8 @@ int main(int argc, char* argv[])
   }
   fxaa->ReleaseGraphicsResources(window);
   dlaa->ReleaseGraphicsResources(window);
+  mlaaTemporal->ReleaseGraphicsResources(window);
+  dlaaTemporal->ReleaseGraphicsResources(window);
   steps->ReleaseGraphicsResources(window);
   return EXIT_SUCCESS;
 }
