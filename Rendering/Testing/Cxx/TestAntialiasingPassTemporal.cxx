@@ -118,6 +118,17 @@ vtkOpenGLAntialiasingPass* UseTemporal(const PassMethod& method, vtkRenderer* re
   return pass;
 }
 
+// Renders the unchanged scene `renders` times; the last capture.
+vtkSmartPointer<vtkImageData> CaptureAfter(vtkRenderWindow* window, int renders)
+{
+  vtkSmartPointer<vtkImageData> result;
+  for (int k = 0; k < renders; ++k)
+  {
+    result = vtkMLAAScenes::Capture(window);
+  }
+  return result;
+}
+
 struct CameraState
 {
   double Values[14];
@@ -244,11 +255,7 @@ void BoxFilter(const PassMethod& method, MessageObserver* messages)
   }
   vtkOpenGLAntialiasingPass* pass = UseTemporal(method, renderer);
   pass->AddObserver(vtkCommand::ErrorEvent, messages);
-  vtkSmartPointer<vtkImageData> result;
-  for (int r = 0; r < 16; ++r)
-  {
-    result = vtkMLAAScenes::Capture(window);
-  }
+  const vtkSmartPointer<vtkImageData> result = CaptureAfter(window, 16);
   double largest = 0.0, sum = 0.0;
   for (const Edge& e : edges)
   {
@@ -735,11 +742,7 @@ void Layers(const PassMethod& method, MessageObserver* messages)
 
   vtkOpenGLAntialiasingPass* pass = UseTemporal(method, upper);
   pass->AddObserver(vtkCommand::ErrorEvent, messages);
-  vtkSmartPointer<vtkImageData> result;
-  for (int k = 0; k < 16; ++k)
-  {
-    result = vtkMLAAScenes::Capture(window);
-  }
+  const vtkSmartPointer<vtkImageData> result = CaptureAfter(window, 16);
   // Layer 0's pixels where layer 1 draws nothing within 2 pixels.
   vtkIdType kept = 0, changed = 0;
   for (int y = 2; y < Height - 2; ++y)
