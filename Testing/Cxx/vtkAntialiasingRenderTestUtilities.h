@@ -204,6 +204,24 @@ inline void SetVisibility(vtkRenderer* renderer, bool actors3D, bool actors2D)
   }
 }
 
+// What `capture()` returns with the layer `lower` hidden and its background transparent black,
+// so that the layers above it are captured alone (premultiplied RGBA); `lower` is put back.
+template <typename Capture>
+auto CaptureWithoutLayer(vtkRenderer* lower, Capture capture) -> decltype(capture())
+{
+  double background[3];
+  lower->GetBackground(background);
+  const double backgroundAlpha = lower->GetBackgroundAlpha();
+  lower->SetBackground(0.0, 0.0, 0.0);
+  lower->SetBackgroundAlpha(0.0);
+  SetVisibility(lower, false, false);
+  auto captured = capture();
+  SetVisibility(lower, true, true);
+  lower->SetBackground(background);
+  lower->SetBackgroundAlpha(backgroundAlpha);
+  return captured;
+}
+
 // Pixels changed, and pixels with a flat (2 radius + 1)^2 neighbourhood in `plain` that changed.
 struct Changes
 {

@@ -105,16 +105,8 @@ void CheckComposite(const PassMethod& method, vtkRenderWindow* window, vtkRender
   auto plain = vtkMLAAScenes::Capture(window);
 
   // The upper renderer's image alone, over transparent black: premultiplied RGBA.
-  double background[3];
-  lower->GetBackground(background);
-  const double backgroundAlpha = lower->GetBackgroundAlpha();
-  lower->SetBackground(0.0, 0.0, 0.0);
-  lower->SetBackgroundAlpha(0.0);
-  SetVisibility(lower, false, false);
-  auto upperOnly = vtkMLAAScenes::Capture(window, true);
-  SetVisibility(lower, true, true);
-  lower->SetBackground(background);
-  lower->SetBackgroundAlpha(backgroundAlpha);
+  auto upperOnly =
+    CaptureWithoutLayer(lower, [&] { return vtkMLAAScenes::Capture(window, true); });
 
   vtkOpenGLAntialiasingPass* pass = method.Use(upper);
   method.UsePremultipliedAlpha(pass);

@@ -310,16 +310,7 @@ void Layers(const PassMethod& method, MessageObserver* messages)
   pass->SetMultiSamples(Samples);
   auto result = vtkMLAAScenes::Capture(window);
   // The upper layer's sample images alone, over transparent black: premultiplied RGBA.
-  double background[3];
-  lower->GetBackground(background);
-  const double backgroundAlpha = lower->GetBackgroundAlpha();
-  lower->SetBackground(0.0, 0.0, 0.0);
-  lower->SetBackgroundAlpha(0.0);
-  SetVisibility(lower, false, false);
-  auto samples = SampleImages(window, pass, true);
-  SetVisibility(lower, true, true);
-  lower->SetBackground(background);
-  lower->SetBackgroundAlpha(backgroundAlpha);
+  auto samples = CaptureWithoutLayer(lower, [&] { return SampleImages(window, pass, true); });
   auto expected = Over(ExpectedResolve(method, pass, samples), lowerOnly);
   const double parity = ShareWithin(expected, result, 2.0);
 
