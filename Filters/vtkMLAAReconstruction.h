@@ -137,6 +137,15 @@ inline int Popcount8(unsigned int m)
   return static_cast<int>((m & 0x0Fu) + (m >> 4));
 }
 
+// `value` moved by the share `t` (in [0, 1]) of the way to `target`. For floating-point images
+// whose values are so large that their difference is not finite (the filters take any finite
+// value), the same as a weighted mean, which stays within the two values.
+inline double MoveTowards(double value, double target, double t)
+{
+  const double difference = target - value;
+  return std::isfinite(difference) ? value + t * difference : (1.0 - t) * value + t * target;
+}
+
 /** What reconstruction needs of a slice (vtkMLAAStages.h: SliceSetup::GetReconstruction). */
 struct ReconstructionSettings
 {
@@ -401,9 +410,22 @@ void Reconstruct(const ReconstructionSettings& setup, const T* input, vtkIdType 
           }
           for (int k = 0; k < c; ++k)
           {
-            const double value = static_cast<double>(self[k]);
+            double mean = sum[k] / n;
+            if (!std::isfinite(mean)) // huge floating-point values: their sum overflowed
+            {
+              mean = 0.0;
+              for (int bit = 0; bit < 8; ++bit)
+              {
+                if ((unlike >> bit) & 1)
+                {
+                  const int nx = std::min(std::max(x + offsets[bit][0], 0), w - 1);
+                  const int ny = std::min(std::max(y + offsets[bit][1], 0), h - 1);
+                  mean += static_cast<double>(pixel(nx, ny)[k]) / n;
+                }
+              }
+            }
             out[static_cast<size_t>(x) * c + k] =
-              ConvertBlended<T>(value + coverage * (sum[k] / n - value));
+              ConvertBlended<T>(MoveTowards(static_cast<double>(self[k]), mean, coverage));
           }
           continue;
         }
@@ -438,9 +460,8 @@ void Reconstruct(const ReconstructionSettings& setup, const T* input, vtkIdType 
         const T* gap = pixel(bestX, bestY);
         for (int k = 0; k < c; ++k)
         {
-          const double value = static_cast<double>(self[k]);
-          out[static_cast<size_t>(x) * c + k] =
-            ConvertBlended<T>(value + (1.0 - share) * (static_cast<double>(gap[k]) - value));
+          out[static_cast<size_t>(x) * c + k] = ConvertBlended<T>(MoveTowards(
+            static_cast<double>(self[k]), static_cast<double>(gap[k]), 1.0 - share));
         }
       }
     }

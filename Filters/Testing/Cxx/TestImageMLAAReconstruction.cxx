@@ -462,8 +462,45 @@ void AgainstSupersampledLines()
 }
 }
 
+// Floating-point values so large that the sum of two overflows (found by the filter's fuzz
+// target: a finite image gave -inf): the same gap as above, in a line of the most negative
+// values over a mid-grey background, is filled with the same share of the line's value, and
+// every output value stays finite and within the input's values.
+void HugeValues()
+{
+  const double big = 0.9 * std::numeric_limits<double>::max();
+  auto image = MakeImage(W, H, 3, VTK_DOUBLE);
+  FillImage(image, [&](int x, int y, int, int) {
+    double v;
+    Shapes(x, y, true, v);
+    return v == Background ? 0.5 : (v == Ink ? -big : 0.0);
+  });
+  auto out = ReconstructOnly<double>(image, 0.1, 0.0, 1.0);
+  bool finite = true;
+  for (int y = 0; y < H; ++y)
+  {
+    for (int x = 0; x < W; ++x)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const double v = GetValue(out, x, y, k);
+        finite = finite && std::isfinite(v) && v >= -big && v <= 0.5;
+      }
+    }
+  }
+  MLAA_CHECK(finite);
+  // 6/14 of the way from the background to the line.
+  const double filled = GetValue(out, 11, 11, 0);
+  const double expected = 0.5 + 3.0 / 7.0 * (-big - 0.5);
+  if (!MLAA_CHECK(std::abs(filled - expected) <= 1e-12 * big))
+  {
+    std::cerr << "huge values: the gap became " << filled << ", not " << expected << std::endl;
+  }
+}
+
 int TestImageMLAAReconstruction(int, char*[])
 {
+  HugeValues();
   ClosesTheGapOnly();
   StraightGapAndThinCorner();
   MeanAndAlpha();
