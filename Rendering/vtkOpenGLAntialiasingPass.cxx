@@ -1105,16 +1105,39 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
     ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   };
 
-  // The method antialiases this frame into Current (transparent black first: a composited image
-  // is written with premultiplied "over", which onto transparent black leaves it as it is).
+  // The method antialiases this frame into Current. A still accumulation averages the jittered
+  // renders themselves (see below), so the method does not run there: its frame would not be read.
+  const bool still = h.FrameMode == TemporalHistory::STILL;
   ostate->PushFramebufferBindings();
-  bindTarget(h.Current);
-  ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
-  ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
-  Frame local = frame;
-  local.X = 0;
-  local.Y = 0;
-  bool done = this->Antialias(local);
+  bool done = true;
+  if (!still)
+  {
+    Frame local = frame;
+    local.X = 0;
+    local.Y = 0;
+    bindTarget(h.Current);
+    if (frame.Composite)
+    {
+      // Transparent black first: a composited image is written with premultiplied "over", which
+      // onto transparent black leaves it as it is.
+      ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+      ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+    }
+    else
+    {
+      // Current takes the delegate's image as it is (a copy), and the method writes only the
+      // pixels it changes, as in place in the target: the same image, without a shader writing
+      // every pixel.
+      vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
+      ostate->vtkglDisable(GL_SCISSOR_TEST);
+      this->DelegateFramebuffer->Bind(GL_READ_FRAMEBUFFER);
+      this->DelegateFramebuffer->ActivateReadBuffer(0);
+      const int box[4] = { 0, width, 0, height };
+      vtkOpenGLFramebufferObject::Blit(box, box, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+      local.InPlace = true;
+    }
+    done = this->Antialias(local);
+  }
 
   // The blend into the other history.
   const int next = 1 - h.Latest;
@@ -1145,8 +1168,7 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
       // history starts from the method's frame (its error then weighs 1 / AccumulatedFrames).
       // Each pixel's count of frames is kept with the history: pixels that moving actors did not
       // reach go on from their own count when the actors stop, instead of starting again.
-      vtkTextureObject* current =
-        h.FrameMode == TemporalHistory::STILL ? this->ColorTexture : h.Current;
+      vtkTextureObject* current = still ? this->ColorTexture : h.Current;
       vtkShaderProgram* program = h.BlendQuad.Quad->Program;
       current->Activate();
       h.Histories[h.Latest]->Activate();
@@ -1191,7 +1213,7 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
   }
   h.Latest = next;
   h.Valid = true;
-  if (h.FrameMode != TemporalHistory::STILL)
+  if (!still)
   {
     std::swap(h.Current, h.Previous);
     h.PreviousValid = true;

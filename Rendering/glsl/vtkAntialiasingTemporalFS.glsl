@@ -97,11 +97,37 @@ void CurrentRange(ivec2 p, ivec2 size, out vec4 lo, out vec4 hi)
   {
     for (int i = -1; i <= 1; ++i)
     {
-      vec4 c = texelFetch(frameTexture, clamp(p + ivec2(i, j), ivec2(0), size - 1), 0);
-      lo = min(lo, c);
-      hi = max(hi, c);
+      if (i != 0 || j != 0)
+      {
+        vec4 c = texelFetch(frameTexture, clamp(p + ivec2(i, j), ivec2(0), size - 1), 0);
+        lo = min(lo, c);
+        hi = max(hi, c);
+      }
     }
   }
+}
+
+// The nearest point of the 3 x 3 neighbourhood of `p` (its depth `depth` on entry): its motion
+// moves this pixel. An antialiased silhouette pixel, which holds some of the object, moves with
+// the object, not with what is behind it (the background, whose depth is the far plane, moves
+// otherwise under a rotation).
+ivec2 Nearest(ivec2 p, ivec2 size, inout float depth)
+{
+  ivec2 nearest = p;
+  for (int j = -1; j <= 1; ++j)
+  {
+    for (int i = -1; i <= 1; ++i)
+    {
+      ivec2 q = clamp(p + ivec2(i, j), ivec2(0), size - 1);
+      float d = texelFetch(depthTexture, q, 0).r;
+      if (d < depth)
+      {
+        depth = d;
+        nearest = q;
+      }
+    }
+  }
+  return nearest;
 }
 #endif
 
@@ -146,23 +172,16 @@ void main()
   }
   vec4 lo, hi;
   CurrentRange(p, size, lo, hi);
-  // The motion of the nearest point of the 3 x 3 neighbourhood moves this pixel: an antialiased
-  // silhouette pixel, which holds some of the object, moves with the object, not with what is
-  // behind it (the background, whose depth is the far plane, moves otherwise under a rotation).
-  ivec2 nearest = p;
-  for (int j = -1; j <= 1; ++j)
+  // Where the rendered 3 x 3 neighbourhood is one colour and the method left the pixel at that
+  // colour, the clamp takes any history to the current value: the blend is the current frame,
+  // wherever the history comes from, so it is neither located nor read (flat regions, most of
+  // the background).
+  if (lo == hi && current == lo)
   {
-    for (int i = -1; i <= 1; ++i)
-    {
-      ivec2 q = clamp(p + ivec2(i, j), ivec2(0), size - 1);
-      float d = texelFetch(depthTexture, q, 0).r;
-      if (d < depth)
-      {
-        depth = d;
-        nearest = q;
-      }
-    }
+    gl_FragData[0] = current;
+    return;
   }
+  ivec2 nearest = Nearest(p, size, depth);
   vec2 here = (vec2(nearest) + 0.5) / vec2(size);
   vec4 previous = reprojection * vec4(here * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
   vec2 uv = (vec2(p) + 0.5) / vec2(size) + (previous.xy / previous.w * 0.5 + 0.5 - here);
