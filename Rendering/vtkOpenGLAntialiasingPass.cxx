@@ -1149,9 +1149,27 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
     ostate->vtkglDisable(GL_BLEND);
     ostate->vtkglDisable(GL_DEPTH_TEST);
     ostate->vtkglDepthMask(GL_FALSE);
-    const bool reproject = h.FrameMode == TemporalHistory::MOVING;
+    const bool moving = h.FrameMode == TemporalHistory::MOVING;
+    const bool keep = moving && h.KeepUnchanged;
+    const bool reproject = moving && !keep;
+    if (reproject)
+    {
+      // The reprojecting blend leaves out the pixels whose result is the current frame whatever
+      // the history (see vtkAntialiasingTemporalFS.glsl): the new history starts as a copy of the
+      // current frame, with a count of 1.
+      h.Framebuffer->AddColorAttachment(2, h.Current);
+      h.Framebuffer->ActivateReadBuffer(2);
+      h.Framebuffer->ActivateDrawBuffer(0);
+      const int box[4] = { 0, width, 0, height };
+      vtkOpenGLFramebufferObject::Blit(box, box, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+      h.Framebuffer->ActivateReadBuffer(0);
+      h.Framebuffer->RemoveColorAttachment(2);
+      h.Framebuffer->ActivateDrawBuffers(2);
+      const float one[4] = { 1.0f, 1.0f, 1.0f, 1.0f };
+      glClearBufferfv(GL_COLOR, 1, one);
+    }
     done = this->ReadyQuad(renWin, h.BlendQuad, vtkAntialiasingTemporalFS,
-      Define("TEMPORAL_REPROJECT", reproject));
+      Define("TEMPORAL_REPROJECT", reproject) + Define("TEMPORAL_KEEP_UNCHANGED", keep));
     if (done)
     {
       float weight = 1.0f;
@@ -1170,39 +1188,41 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
       // reach go on from their own count when the actors stop, instead of starting again.
       vtkTextureObject* current = still ? this->ColorTexture : h.Current;
       vtkShaderProgram* program = h.BlendQuad.Quad->Program;
-      current->Activate();
-      h.Histories[h.Latest]->Activate();
-      h.Counts[h.Latest]->Activate();
-      this->DepthTexture->Activate();
-      program->SetUniformi("currentTexture", current->GetTextureUnit());
-      program->SetUniformi("countTexture", h.Counts[h.Latest]->GetTextureUnit());
-      program->SetUniformi("historyTexture", h.Histories[h.Latest]->GetTextureUnit());
-      program->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
-      program->SetUniformf("currentWeight", weight);
+      // The textures of this variant (the camera moving reads no counts; a still camera reads
+      // neither this frame before the method nor the last one).
+      std::vector<std::pair<const char*, vtkTextureObject*>> textures = {
+        { "currentTexture", current }, { "historyTexture", h.Histories[h.Latest] },
+        { "depthTexture", this->DepthTexture }
+      };
+      if (!reproject)
+      {
+        textures.emplace_back("countTexture", h.Counts[h.Latest]);
+      }
       if (reproject)
       {
+        textures.emplace_back("frameTexture", this->ColorTexture); // not jittered: the clamp's range
         float matrix[16];
         for (int i = 0; i < 16; ++i)
         {
           matrix[i] = static_cast<float>(h.Reprojection[i]);
         }
         program->SetUniformMatrix4x4("reprojection", matrix);
-        h.Previous->Activate();
-        program->SetUniformi("previousTexture", h.Previous->GetTextureUnit());
-        program->SetUniformi("keepUnchanged", h.KeepUnchanged ? 1 : 0);
-        this->ColorTexture->Activate(); // this frame, not jittered: the clamp's range
-        program->SetUniformi("frameTexture", this->ColorTexture->GetTextureUnit());
       }
-      h.BlendQuad.Quad->Render();
-      if (reproject)
+      if (keep)
       {
-        this->ColorTexture->Deactivate();
-        h.Previous->Deactivate();
+        textures.emplace_back("previousTexture", h.Previous);
       }
-      this->DepthTexture->Deactivate();
-      h.Counts[h.Latest]->Deactivate();
-      h.Histories[h.Latest]->Deactivate();
-      current->Deactivate();
+      for (const auto& texture : textures)
+      {
+        texture.second->Activate();
+        program->SetUniformi(texture.first, texture.second->GetTextureUnit());
+      }
+      program->SetUniformf("currentWeight", weight);
+      h.BlendQuad.Quad->Render();
+      for (auto texture = textures.rbegin(); texture != textures.rend(); ++texture)
+      {
+        texture->second->Deactivate();
+      }
     }
   }
   ostate->PopFramebufferBindings();

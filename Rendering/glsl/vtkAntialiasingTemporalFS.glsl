@@ -7,28 +7,32 @@
 // Temporal antialiasing of vtkOpenGLAntialiasingPass (SetTemporal): blends the current frame
 // with the history of the previous frames.
 //
-// Compile-time variants (#defines prepended by vtkOpenGLAntialiasingPass):
-//   TEMPORAL_OUTPUT     defined: writes the blended history (historyTexture) and the delegate's
-//                       depth into the target viewport (nothing is blended here).
-//   TEMPORAL_REPROJECT  defined (the camera moved, or actors under a still camera;
-//                       currentTexture is the frame antialiased by the method): the history is read where this pixel's point was in the previous
-//                       frame, `reprojection` taking the current normalised device coordinates to
-//                       the previous ones, with the depth and motion of the nearest point of the
-//                       3 x 3 neighbourhood, by Catmull-Rom interpolation, and clamped per channel
-//                       to the range of the 3 x 3 neighbourhood of this frame as the delegate
-//                       rendered it, before the method (frameTexture; what the current frame does
-//                       not support: disocclusions, changed shading); a point that was
-//                       outside the previous view takes the current frame alone. The current
-//                       frame's weight rises with the distance the history moved, from
-//                       currentWeight at rest to MovingWeight at MovingPixels and more. With
-//                       keepUnchanged (actors moved, the camera did not), nothing is reprojected:
-//                       a pixel whose 3 x 3 neighbourhood in the method's frame equals the last
-//                       unjittered render's (previousTexture) keeps its history as it is, any
-//                       other takes the current frame.
-//   neither             (a still camera; currentTexture is the delegate's jittered render): the
+// Compile-time variants (#defines prepended by vtkOpenGLAntialiasingPass; at most one defined):
+//   TEMPORAL_OUTPUT     writes the blended history (historyTexture) and the delegate's depth into
+//                       the target viewport (nothing is blended here).
+//   TEMPORAL_REPROJECT  the camera moved (currentTexture is the frame antialiased by the
+//                       method): the history is read where this pixel's point was in the
+//                       previous frame, `reprojection` taking the current normalised device
+//                       coordinates to the previous ones, with the depth and motion of the
+//                       nearest point of the 3 x 3 neighbourhood, by Catmull-Rom interpolation,
+//                       and clamped per channel to the range of the 3 x 3 neighbourhood of this
+//                       frame as the delegate rendered it, before the method (frameTexture; what
+//                       the current frame does not support: disocclusions, changed shading); a
+//                       point that was outside the previous view takes the current frame alone.
+//                       The current frame's weight rises with the distance the history moved,
+//                       from currentWeight at rest to MovingWeight at MovingPixels and more.
+//   TEMPORAL_KEEP_UNCHANGED  actors moved under a still camera (currentTexture is the frame
+//                       antialiased by the method): nothing is reprojected; a pixel whose 3 x 3
+//                       neighbourhood in the method's frame equals the last unjittered render's
+//                       (previousTexture) keeps its history as it is, any other takes the
+//                       current frame.
+//   none                (a still camera; currentTexture is the delegate's jittered render): the
 //                       history is read at this pixel, exactly, and not clamped: weighing the
 //                       current frame 1 / N, N the pixel's count, the blend is the running average
 //                       of the N renders it holds.
+// The variants are separate programs rather than branches on a uniform: rasterisers that shade
+// pixels in lock-step (llvmpipe among them) run both sides of a branch, so every pixel would pay
+// for the reads of the other modes.
 // currentWeight: the weight of the current frame (1: the current frame alone, the history is not
 // read). Besides the history (gl_FragData[0]) the blend writes each pixel's count of frames in it
 // (gl_FragData[1], from countTexture): 1 where the current frame replaces or mostly replaces the
@@ -43,12 +47,13 @@ uniform sampler2D depthTexture;   // the delegate's depth
 uniform sampler2D currentTexture; // this frame
 uniform sampler2D countTexture;   // the frames the history holds, per pixel
 uniform float currentWeight;
-uniform mat4 reprojection;
 #endif
 #ifdef TEMPORAL_REPROJECT
-uniform sampler2D previousTexture; // the last render's frame, antialiased by the method
-uniform sampler2D frameTexture;    // this frame as the delegate rendered it (not antialiased)
-uniform int keepUnchanged;
+uniform mat4 reprojection;
+uniform sampler2D frameTexture; // this frame as the delegate rendered it (not antialiased)
+#endif
+#ifdef TEMPORAL_KEEP_UNCHANGED
+uniform sampler2D previousTexture; // the last unjittered render's frame, antialiased by the method
 #endif
 
 #ifdef TEMPORAL_REPROJECT
@@ -147,39 +152,35 @@ void main()
     gl_FragData[0] = current;
     return;
   }
-#ifdef TEMPORAL_REPROJECT
-  // Actors moved under a still camera: where this pixel's antialiased value did not change, the
-  // motion did not reach it, and its history is kept as it is.
-  if (keepUnchanged != 0)
+#if defined(TEMPORAL_KEEP_UNCHANGED)
+  // A pixel whose 3 x 3 neighbourhood in the method's frame is the one of the last unjittered
+  // render was not reached by the motion and keeps its history; any other takes the current frame
+  // alone. (The neighbourhood, not the pixel alone: a pixel that an edge crossed holds part of the
+  // actor in its history while its own sample may be the background before and after; a
+  // neighbour across the edge changed.)
+  bool unchanged = true;
+  for (int j = -1; j <= 1; ++j)
   {
-    // Actors moved under a still camera: a pixel whose 3 x 3 neighbourhood in the method's frame
-    // is the one of the last unjittered render was not reached by the motion and keeps its
-    // history; any other takes the current frame alone. (The neighbourhood, not the pixel alone:
-    // a pixel that an edge crossed holds part of the actor in its history while its own sample
-    // may be the background before and after; a neighbour across the edge changed.)
-    bool unchanged = true;
-    for (int j = -1; j <= 1; ++j)
+    for (int i = -1; i <= 1; ++i)
     {
-      for (int i = -1; i <= 1; ++i)
-      {
-        ivec2 q = clamp(p + ivec2(i, j), ivec2(0), size - 1);
-        unchanged = unchanged && texelFetch(currentTexture, q, 0) == texelFetch(previousTexture, q, 0);
-      }
+      ivec2 q = clamp(p + ivec2(i, j), ivec2(0), size - 1);
+      unchanged = unchanged && texelFetch(currentTexture, q, 0) == texelFetch(previousTexture, q, 0);
     }
-    gl_FragData[0] = unchanged ? texelFetch(historyTexture, p, 0) : current;
-    gl_FragData[1] = unchanged ? texelFetch(countTexture, p, 0) : vec4(1.0);
-    return;
   }
+  gl_FragData[0] = unchanged ? texelFetch(historyTexture, p, 0) : current;
+  gl_FragData[1] = unchanged ? texelFetch(countTexture, p, 0) : vec4(1.0);
+#elif defined(TEMPORAL_REPROJECT)
   vec4 lo, hi;
   CurrentRange(p, size, lo, hi);
   // Where the rendered 3 x 3 neighbourhood is one colour and the method left the pixel at that
-  // colour, the clamp takes any history to the current value: the blend is the current frame,
-  // wherever the history comes from, so it is neither located nor read (flat regions, most of
-  // the background).
+  // colour, the clamp takes any history to that colour: the result is the current frame, which
+  // the pass has already copied into the target (with a count of 1), so the history is neither
+  // located nor read there (flat regions, most of a background). Discarded, not branched over:
+  // rasterisers that shade pixels in lock-step (llvmpipe) run both sides of a branch, but stop
+  // shading a group of pixels that are all discarded.
   if (lo == hi && current == lo)
   {
-    gl_FragData[0] = current;
-    return;
+    discard;
   }
   ivec2 nearest = Nearest(p, size, depth);
   vec2 here = (vec2(nearest) + 0.5) / vec2(size);
@@ -187,14 +188,13 @@ void main()
   vec2 uv = (vec2(p) + 0.5) / vec2(size) + (previous.xy / previous.w * 0.5 + 0.5 - here);
   if (previous.w <= 0.0 || any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))))
   {
-    gl_FragData[0] = current;
+    gl_FragData[0] = current; // a point outside the previous view: the current frame alone
     return;
   }
-  vec4 history = CatmullRom(historyTexture, uv, size);
-  history = clamp(history, lo, hi);
+  vec4 history = clamp(CatmullRom(historyTexture, uv, size), lo, hi);
   float moved = length((uv - (vec2(p) + 0.5) / vec2(size)) * vec2(size));
-  float weight = mix(currentWeight, max(currentWeight, MovingWeight),
-    clamp(moved / MovingPixels, 0.0, 1.0));
+  float weight =
+    mix(currentWeight, max(currentWeight, MovingWeight), clamp(moved / MovingPixels, 0.0, 1.0));
   gl_FragData[0] = mix(history, current, weight);
 #else
   vec4 history = texelFetch(historyTexture, p, 0);
