@@ -9,8 +9,10 @@
  * (vtkMLAAReconstruction.h). Internal to MLAA::FiltersMLAA; not installed.
  */
 
-#ifndef vtkMLAALab_h
-#define vtkMLAALab_h
+// (The guard differs from the file name: the shader Rendering/glsl/vtkMLAALab.glsl becomes a
+// generated vtkMLAALab.h guarded by vtkMLAALab_h, and vtkOpenGLMLAAPass.cxx includes both.)
+#ifndef vtkMLAALabCPU_h
+#define vtkMLAALabCPU_h
 
 #include "vtkFiltersMLAAModule.h" // For export macro
 

@@ -274,6 +274,9 @@ private:
     bool straightAlpha, bool inPlace);
   // The uniforms of both edge detection programs.
   void SetEdgeUniforms(vtkShaderProgram* program);
+  // Whether the edge detection reads the sRGB linearisation from a table (CIELAB edges on an
+  // 8-bit source, MLAA_SRGB_TABLE).
+  bool UsesSrgbTable();
   // The image the edge detection and the blending read: ReconstructedTexture with
   // vtkMLAAOptions::Reconstruction, else ColorTexture.
   vtkTextureObject* GetSourceTexture();

@@ -12,11 +12,21 @@
 // Must match namespace Lab in Filters/vtkMLAALab.h (vtkImageMLAA).
 
 // The sRGB transfer function inverted: a channel (clamped at 0) to linear light.
+#ifdef MLAA_SRGB_TABLE
+// An 8-bit source (each channel k / 255): its 256 values, from the CPU filter's conversion
+// (vtkMLAALab.h, whose tables for 8-bit images hold the same), instead of a pow per channel.
+uniform float srgbToLinear[256];
+float labLinear(float c)
+{
+  return srgbToLinear[int(clamp(c, 0.0, 1.0) * 255.0 + 0.5)];
+}
+#else
 float labLinear(float c)
 {
   c = max(c, 0.0);
   return c <= 0.04045 ? c / 12.92 : pow((c + 0.055) / 1.055, 2.4);
 }
+#endif
 
 // The f of the L*a*b* definition, (6/29)^3 = 0.008856452, 3 (6/29)^2 = 0.12841855.
 float labF(float t)
