@@ -1125,11 +1125,9 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
     }
     else
     {
-      // Current takes the delegate's image as it is (a copy), and the method writes only the
-      // pixels it changes, as in place in the target: the same image, without a shader writing
-      // every pixel.
-      vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
-      ostate->vtkglDisable(GL_SCISSOR_TEST);
+      // Current takes the delegate's image as it is (a copy; bindTarget set the whole texture as
+      // the scissor box), and the method writes only the pixels it changes, as in place in the
+      // target: the same image, without a shader writing every pixel.
       this->DelegateFramebuffer->Bind(GL_READ_FRAMEBUFFER);
       this->DelegateFramebuffer->ActivateReadBuffer(0);
       const int box[4] = { 0, width, 0, height };
@@ -1198,7 +1196,7 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
       {
         textures.emplace_back("countTexture", h.Counts[h.Latest]);
       }
-      if (reproject)
+      else
       {
         textures.emplace_back("frameTexture", this->ColorTexture); // not jittered: the clamp's range
         float matrix[16];

@@ -166,8 +166,8 @@ bool vtkOpenGLMLAAPass::PrepareMethodTargets(const Frame& frame)
 //------------------------------------------------------------------------------
 namespace
 {
-// The inverted sRGB transfer function at the 256 values of an 8-bit channel, as the CPU filter's
-// tables for 8-bit images hold it (vtkAntialiasingKit::Lab::Linearise).
+// The inverted sRGB transfer function at the 256 values of an 8-bit channel, by the CPU filter's
+// conversion (vtkAntialiasingKit::Lab::Linearise), which its tables for 8-bit images use too.
 const float* SrgbToLinearTable()
 {
   static const std::array<float, 256> table = [] {
