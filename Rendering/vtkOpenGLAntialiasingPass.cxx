@@ -32,6 +32,7 @@
 #include "vtkTextureObject.h"
 #include "vtkTranslucentPass.h"
 #include "vtkVersionMacros.h"
+#include "vtkVolume.h"
 
 #include "vtkAntialiasingAlphaFS.h"
 #include "vtkAntialiasingTemporalFS.h"
@@ -40,7 +41,7 @@
 #include <algorithm>
 #include <cstdlib>
 
-#include "vtk_glew.h" // For GL enums only: every call goes through VTK's classes
+#include "vtk_glew.h" // For GL enums, and the calls VTK has no wrapper for
 
 #include <algorithm>
 #include <cmath>
@@ -274,6 +275,80 @@ std::vector<std::uint64_t> SceneSignature(const vtkRenderState* s, bool placemen
   signature.push_back(renderer->GetGradientBackground() ? 1 : 0);
   return signature;
 }
+
+// Whether a render blends something per pixel, not per sample, into a multisampled target:
+// translucent geometry (order-independent translucency composites one colour per pixel) or
+// volumes (drawn by their own mappers' passes).
+bool BlendsPerPixel(const vtkRenderState* s)
+{
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    if (prop->HasTranslucentPolygonalGeometry() || vtkVolume::SafeDownCast(prop))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+// OpenGL sample shading (4.0) on for the scope (every sample shaded at its own position), the
+// previous setting restored after it. Nothing is changed with `on` false.
+struct SampleShadingScope
+{
+  explicit SampleShadingScope(bool on)
+    : On(on)
+  {
+    if (on)
+    {
+      // Not among the states vtkOpenGLState tracks: set and restored here.
+      this->WasEnabled = glIsEnabled(GL_SAMPLE_SHADING) == GL_TRUE;
+      glGetFloatv(GL_MIN_SAMPLE_SHADING_VALUE, &this->MinimumShading);
+      glEnable(GL_SAMPLE_SHADING);
+      glMinSampleShading(1.0f);
+    }
+  }
+  ~SampleShadingScope()
+  {
+    if (this->On)
+    {
+      glMinSampleShading(this->MinimumShading);
+      if (!this->WasEnabled)
+      {
+        glDisable(GL_SAMPLE_SHADING);
+      }
+    }
+  }
+  SampleShadingScope(const SampleShadingScope&) = delete;
+  SampleShadingScope& operator=(const SampleShadingScope&) = delete;
+  const bool On;
+  bool WasEnabled = false;
+  GLfloat MinimumShading = 0.0f;
+};
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLAntialiasingPass::UsesSampleShading(vtkOpenGLRenderWindow* renWin)
+{
+  if (!this->SampleShading)
+  {
+    return false;
+  }
+  int major = 0, minor = 0;
+  renWin->GetOpenGLVersion(major, minor);
+  if (major >= 4)
+  {
+    return true;
+  }
+  if (!this->WarnedSampleShading)
+  {
+    this->WarnedSampleShading = true;
+    vtkWarningMacro("SampleShading: the OpenGL context (" << major << "." << minor
+                                                          << ") has no sample shading (OpenGL "
+                                                             "4.0); the samples are shaded per "
+                                                             "pixel");
+  }
+  return false;
 }
 
 //------------------------------------------------------------------------------
@@ -715,6 +790,8 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
   }
   const int samples = temporal ? 0 : this->ChooseMultiSamples(renWin, frame.FloatColor);
   this->RenderedMultiSamples = samples;
+  this->RenderedSampleShading = false;
+  this->SamplesShaded = false;
   frame.InPlace = !frame.Composite && !this->NeedsDelegateDepth() && !temporal && !samples;
   unsigned int targetBinding = 0, targetBuffer = 0;
   ostate->GetCurrentDrawFramebufferState(targetBinding, targetBuffer);
@@ -773,8 +850,11 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
         // samples may have it off.
         vtkOpenGLState::ScopedglEnableDisable multisampleSaver(ostate, GL_MULTISAMPLE);
         ostate->vtkglEnable(GL_MULTISAMPLE);
+        const SampleShadingScope shading(this->UsesSampleShading(renWin));
         this->RenderDelegateToTextures(s, this->SamplesFramebuffer, this->SamplesColorTexture,
           this->SamplesDepthTexture, frame.Width, frame.Height, frame.Composite);
+        this->RenderedSampleShading = shading.On;
+        this->SamplesShaded = shading.On && !BlendsPerPixel(s);
       }
       else
       {
@@ -869,6 +949,8 @@ void vtkOpenGLAntialiasingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AccumulatedFrames: " << this->GetAccumulatedFrames() << "\n";
   os << indent << "MultiSamples: " << this->MultiSamples << "\n";
   os << indent << "RenderedMultiSamples: " << this->RenderedMultiSamples << "\n";
+  os << indent << "SampleShading: " << this->SampleShading << "\n";
+  os << indent << "RenderedSampleShading: " << this->RenderedSampleShading << "\n";
   os << indent << "DebugSample: " << this->DebugSample << "\n";
 }
 
@@ -1472,6 +1554,7 @@ bool vtkOpenGLAntialiasingPass::AntialiasSamples(const Frame& frame, int samples
   SampleSet set;
   set.Offsets.assign(2 * samples, 0.0);
   set.Colors = this->SamplesColorTexture;
+  set.Shaded = this->SamplesShaded;
   this->SamplesFramebuffer->Bind();
   for (int sample = 0; sample < samples; ++sample)
   {

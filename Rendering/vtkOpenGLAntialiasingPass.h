@@ -225,6 +225,34 @@ public:
 
   // /@{
   /**
+   * With MultiSamples: whether every sample is shaded on its own (OpenGL sample shading,
+   * glMinSampleShading(1)) while the delegate renders into the multisampled target. Default on.
+   * Multisampling alone shades a pixel once, at its centre, for all the samples a primitive
+   * covers: a sample image then holds, near a primitive's border, colours shaded outside the
+   * primitive (textures read past their edge), and texture, colour-map and shading edges inside
+   * a primitive are the same in every sample image, as aliased as in the single-sample pass. With
+   * sample shading, each sample image is the scene point-sampled at that sample's position, as a
+   * render shifted by the sample's offset would be, so the method and the resolve antialias
+   * every edge, not only the edges of the geometry; and where a pixel's samples all agree, an
+   * edge beside it lies within 1/2 less the largest sample offset of the pixel's border, which
+   * MLAA's SampleAreas then also applies to lines whose ends show no sample difference. Cost: the
+   * fragment shaders run once per sample (as many times as MultiSamples) instead of once per
+   * pixel. Needs OpenGL 4.0 (elsewhere the samples are shaded per pixel; a warning says so once).
+   * Translucent geometry (order-independent translucency) is still blended per pixel.
+   */
+  vtkSetMacro(SampleShading, bool);
+  vtkGetMacro(SampleShading, bool);
+  vtkBooleanMacro(SampleShading, bool);
+  // /@}
+
+  /**
+   * Whether the last render shaded every sample (MultiSamples and SampleShading, where OpenGL
+   * offers sample shading).
+   */
+  vtkGetMacro(RenderedSampleShading, bool);
+
+  // /@{
+  /**
    * For inspection and tests, with MultiSamples: a sample index s >= 0 makes the pass write the
    * plain, not antialiased image of sample s of every pixel (what the method's passes read for
    * that sample) instead of the antialiased resolve. Default -1: the antialiased result.
@@ -282,11 +310,15 @@ protected:
   // offsets of all the samples from the pixel centre in pixels (x, y of sample s at 2 s, 2 s + 1;
   // x right, y up, where the driver places them) and the multisampled colour texture (to tell
   // which pixels' samples differ).
+  // Shaded: every sample of every pixel was shaded at its own position and nothing was blended
+  // per pixel (SampleShading, and no translucent geometry or volumes in the render), so that
+  // where a pixel's samples all agree no edge passes between them.
   struct SampleSet
   {
     int Index = -1;
     std::vector<double> Offsets;
     vtkTextureObject* Colors = nullptr;
+    bool Shaded = false;
   };
   const SampleSet& GetCurrentSampleSet() const { return this->CurrentSampleSet; }
   // /@}
@@ -394,6 +426,11 @@ private:
   // Multisampled rendering (SetMultiSamples; the shaders are vtkAntialiasingSamplesFS.glsl).
   int MultiSamples = 0;
   int RenderedMultiSamples = 0;
+  bool SampleShading = true;
+  bool RenderedSampleShading = false;
+  bool WarnedSampleShading = false; // sample shading unavailable, said once
+  // Whether the last multisampled render's samples were all shaded on their own (SampleSet).
+  bool SamplesShaded = false;
   int DebugSample = -1;
   int WarnedMultiSamples = 0; // the count asked for that the last warning was about
   bool WarnedTemporalMultiSamples = false; // MultiSamples unused while Temporal is on, said once
@@ -402,6 +439,9 @@ private:
   std::vector<int> SupportedSampleCounts[2];
   // The supported count nearest to MultiSamples (warning once when it differs), 0 for none.
   int ChooseMultiSamples(vtkOpenGLRenderWindow* renWin, bool floatColor);
+  // Whether the multisampled render shades every sample: SampleShading, where the context has
+  // it (warning once where it has not).
+  bool UsesSampleShading(vtkOpenGLRenderWindow* renWin);
   // Creates or resizes the multisampled targets and the sample and accumulation textures.
   void PrepareSampleTargets(const Frame& frame, int samples);
   // Copies each sample set into ColorTexture and DepthTexture, antialiases it with Antialias

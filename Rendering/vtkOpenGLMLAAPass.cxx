@@ -295,7 +295,10 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
     Define("MLAA_MINIMUM_DIAGONAL_LENGTH", vtkMLAAOptions::MinimumDiagonalLength) +
     Define("MLAA_RECURSIVE_DOUBLING", lengths != nullptr) +
     Define("MLAA_DIAGONAL_LENGTHS", diagonalLengths != nullptr) +
-    Define("MLAA_SAMPLE_AREAS", sampleAreas);
+    Define("MLAA_SAMPLE_AREAS", sampleAreas) +
+    (sampleAreas && set.Shaded
+        ? Define("MLAA_SAMPLES_SHADED", static_cast<int>(set.Offsets.size() / 2))
+        : std::string());
   if (!this->ReadyQuad(renWin, this->WeightsQuad, vtkMLAABlendingWeightsFS, weightsDefines))
   {
     return false;
@@ -323,6 +326,12 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
       gap = std::min(gap, 0.5 - std::abs(offset));
     }
     program->SetUniformf("sampleGap", static_cast<float>(gap));
+    if (set.Shaded)
+    {
+      const std::vector<float> offsets(set.Offsets.begin(), set.Offsets.end());
+      program->SetUniform2fv(
+        "sampleOffsets", static_cast<int>(offsets.size() / 2), offsets.data());
+    }
   }
   if (lengths)
   {

@@ -209,7 +209,12 @@ public:
    * of the line has differing samples, the edge runs between the two pixels' sample patterns
    * and their areas are limited to the gap between those patterns and the pixel border (1/8
    * with 4 samples). U shapes (both ends of the line step to the same side: bumps, dots, ends of
-   * thin lines) keep the usual areas. The average of the sample sets then approaches the
+   * thin lines) keep the usual areas. When every sample was shaded on its own
+   * (vtkOpenGLAntialiasingPass::SampleShading, with no translucent geometry or volumes in the
+   * render), samples that agree bound every edge, not only geometric ones: a line whose edgel
+   * pixels' samples agree is limited to that gap where a pixel at one of its ends has the edge
+   * across its samples (a step), and takes no ramp where none has (the edge lies within the gap
+   * of the pixel border all along). The average of the sample sets then approaches the
    * pixel's coverage along edges instead of blurring it by the spread of the sample positions
    * (docs/measurements.md, "Multisampled renders"). Off: each sample set is antialiased exactly
    * as the single-sample pass, and so as vtkImageMLAA, would (the CPU filter has no samples).

@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """MLAA and DLAA in ParaView's ordinary render view ("RenderView"), as the plugin extends it:
 - the view is the plugin's class, its "Antialiasing Options" group holds AntialiasingMethod,
-  AntialiasingKeepAlpha, AntialiasingMultiSamples, MLAALineLengths and the MLAA and DLAA
+  AntialiasingKeepAlpha, AntialiasingMultiSamples, AntialiasingSampleShading, MLAALineLengths
+  and the MLAA and DLAA
   settings, and the method's GUI
   label names DLAA as "DLAA (Andreev 2011, directionally localized antialiasing)";
 - AntialiasingMethod "None or FXAA" (the default) gives the plain image; MLAA gives, within
@@ -11,6 +12,8 @@
   does not stack; MLAALineLengths reaches the pass and gives the same image with each method;
 - AntialiasingMultiSamples 4: on one rank another image than single-sample MLAA's (flat regions
   unchanged); under IceT single-sample MLAA's image (the composited image has one sample);
+  AntialiasingSampleShading (on by default) reaches the view, and off changes the image on one
+  rank and nothing under IceT;
 - AntialiasingKeepAlpha reaches both passes; off, transparent screenshots (which ParaView
   derives from renders over white and over black) have antialiased silhouette alpha; on, one
   process's result changes, and under IceT nothing does;
@@ -55,7 +58,7 @@ for i in range(view.SMProxy.GetNumberOfPropertyGroups()):
         for j in range(group.GetNumberOfProperties()))
 antialiasing = groups.get("Antialiasing Options", [])
 expected = ["AntialiasingMethod", "AntialiasingKeepAlpha", "AntialiasingMultiSamples",
-            "MLAALineLengths", "MLAAQualityPreset",
+            "AntialiasingSampleShading", "MLAALineLengths", "MLAAQualityPreset",
             "MLAAThreshold", "MLAAEdgeDetection", "DLAALambda", "DLAALongEdges"]
 t.check(all(name in antialiasing for name in expected),
         "the view's Antialiasing Options group holds %s (it has %d properties)"
@@ -184,6 +187,20 @@ if args.ranks == 1:
 else:
     t.check(np.array_equal(mlaa_samples, mlaa),
             "under IceT, AntialiasingMultiSamples gives single-sample MLAA's image")
+# AntialiasingSampleShading off: each pixel shaded once for all its samples (on by default).
+t.check(server_value("AntialiasingSampleShadingInfo") == 1, "AntialiasingSampleShading is on")
+view.AntialiasingSampleShading = 0
+_, mlaa_pixel_shaded = screenshot("mlaa-4-samples-pixel-shaded.png")
+t.check(server_value("AntialiasingSampleShadingInfo") == 0,
+        "AntialiasingSampleShading 0 reaches the view")
+if args.ranks == 1:
+    differs = np.any(mlaa_pixel_shaded != mlaa_samples, axis=2).sum()
+    t.check(differs > 0, "4 samples shaded per pixel: %d pixels differ from shaded per sample"
+            % differs)
+else:
+    t.check(np.array_equal(mlaa_pixel_shaded, mlaa),
+            "under IceT, AntialiasingSampleShading changes nothing (single-sample MLAA)")
+view.AntialiasingSampleShading = 1
 view.AntialiasingMultiSamples = "Off"
 _, mlaa_again = screenshot("mlaa-again.png")
 t.check(np.array_equal(mlaa_again, mlaa), "AntialiasingMultiSamples Off: single-sample MLAA again")

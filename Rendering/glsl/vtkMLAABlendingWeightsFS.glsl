@@ -36,6 +36,11 @@
 //                                 their areas from that sample's tables of sampleAreaTexture (the
 //                                 line moved by the sample's offset from the pixel centre,
 //                                 vtkMLAAAreaTexture::ComputeAreas); no CPU twin
+//   MLAA_SAMPLES_SHADED           the number of samples (with MLAA_SAMPLE_AREAS), where every
+//                                 sample was shaded at its own position
+//                                 (vtkOpenGLAntialiasingPass::SampleShading, nothing blended
+//                                 per pixel), so samples that agree bound every edge, not only
+//                                 geometric ones (see lineArea)
 //   MLAA_DIAGONAL_LENGTHS         defined (with MLAA_DIAGONAL_DETECTION): the numbers of units of
 //                                 staircases are read from the diagonal lengths that
 //                                 vtkMLAALineLengthsFS.glsl counted by recursive doubling
@@ -66,6 +71,10 @@ uniform sampler2DMS samplesColor; // the multisampled render
 uniform int numberOfSamples;
 uniform int sampleIndex;
 uniform float sampleGap; // 1/2 less the largest |offset| of a sample from the pixel centre
+#ifdef MLAA_SAMPLES_SHADED
+// MLAA_SAMPLES_SHADED is the number of samples (a constant bound: the loops below unroll).
+uniform vec2 sampleOffsets[MLAA_SAMPLES_SHADED]; // from the pixel centre, x right, y up, pixels
+#endif
 #endif
 #ifdef MLAA_RECURSIVE_DOUBLING
 // Line lengths (left, right, down, up), RGBA16F integers, exact up to 4^passes >= maxDistance.
@@ -179,6 +188,41 @@ bool samplesDiffer(ivec2 q)
 }
 #endif
 
+#ifdef MLAA_SAMPLES_SHADED
+// Whether the edge between p's colour and q's crosses the sample pattern of pixel e (a step of
+// that edge): e has samples of both colours, and every sample of q's colour lies farther towards
+// q than every sample of p's colour (q is above p for a horizontal edge, left of it for a
+// vertical one). At a corner, where another edge crosses e, the two colours split along that
+// edge instead, and samples of a third colour are left out.
+bool stepsAcross(ivec2 e, vec4 colorP, vec4 colorQ, bool vertical)
+{
+  if (any(lessThan(e, ivec2(0))) || any(greaterThanEqual(e, textureSize(samplesColor))))
+  {
+    return false;
+  }
+  float farthestP = -1.0;
+  float nearestQ = 1.0;
+  bool hasP = false;
+  bool hasQ = false;
+  for (int s = 0; s < MLAA_SAMPLES_SHADED; ++s)
+  {
+    vec4 c = texelFetch(samplesColor, e, s);
+    float towardsQ = vertical ? -sampleOffsets[s].x : sampleOffsets[s].y;
+    if (all(equal(c, colorP)))
+    {
+      farthestP = max(farthestP, towardsQ);
+      hasP = true;
+    }
+    else if (all(equal(c, colorQ)))
+    {
+      nearestQ = min(nearestQ, towardsQ);
+      hasQ = true;
+    }
+  }
+  return hasP && hasQ && nearestQ > farthestP;
+}
+#endif
+
 // The areas of the line through the edgel between pixels p and q (vertical: a vertical line),
 // from the area texture; with MLAA_SAMPLE_AREAS:
 // - where either pixel's samples differ (a geometric edge crosses it), from this sample's
@@ -188,7 +232,17 @@ bool samplesDiffer(ivec2 q)
 // - where neither does but a pixel at an end of the line does (the line is a staircase of a
 //   geometric edge), the edge passes between the two pixels' sample patterns: within
 //   `sampleGap` (1/2 less the largest offset of a sample from the pixel centre) of the pixel
-//   boundary, so neither pixel takes more than that of the other's colour.
+//   boundary, so neither pixel takes more than that of the other's colour;
+// - with MLAA_SAMPLES_SHADED, where neither pixel's samples differ, whatever drew the edge:
+//   each sample image is then the scene point-sampled at its sample's position, so the edge
+//   lies within `sampleGap` of the pixel boundary here. The same bound applies where a pixel
+//   at an end of the line has the edge across its samples (stepsAcross: a step of this edge);
+//   where none has, no step is seen and the edge stays within the gap all along (a side on a
+//   pixel border ending at corners, or a line whose steps lie beyond the search): no ramp, the
+//   estimate of an offset known only to lie in [-sampleGap, sampleGap]. Without sample shading,
+//   lines whose ends' samples agree are mostly edges inside a primitive (texture, colour
+//   bands), shaded once per pixel, whose samples agree wherever the edge lies: they keep the
+//   usual table.
 vec2 lineArea(ivec2 p, ivec2 q, bool vertical, int e1, int e2, int d1, int d2)
 {
 #ifdef MLAA_SAMPLE_AREAS
@@ -200,11 +254,24 @@ vec2 lineArea(ivec2 p, ivec2 q, bool vertical, int e1, int e2, int d1, int d2)
     return texelFetch(sampleAreaTexture, ivec2(cellSize * e1 + d1, row + cellSize * e2 + d2), 0).rg;
   }
   ivec2 along = vertical ? ivec2(0, 1) : ivec2(-1, 0); // towards the first end
+#ifdef MLAA_SAMPLES_SHADED
+  vec4 colorP = texelFetch(samplesColor, p, 0);
+  vec4 colorQ = texelFetch(samplesColor, q, 0);
+  if (!(stepsAcross(p + d1 * along, colorP, colorQ, vertical) ||
+        stepsAcross(q + d1 * along, colorP, colorQ, vertical) ||
+        stepsAcross(p - d2 * along, colorP, colorQ, vertical) ||
+        stepsAcross(q - d2 * along, colorP, colorQ, vertical)))
+  {
+    return vec2(0.0);
+  }
+  return min(area(e1, e2, d1, d2), vec2(sampleGap));
+#else
   if (samplesDiffer(p + d1 * along) || samplesDiffer(q + d1 * along) ||
     samplesDiffer(p - d2 * along) || samplesDiffer(q - d2 * along))
   {
     return min(area(e1, e2, d1, d2), vec2(sampleGap));
   }
+#endif
 #endif
   return area(e1, e2, d1, d2);
 }

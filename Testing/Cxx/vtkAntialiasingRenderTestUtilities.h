@@ -32,7 +32,9 @@
 #include "vtkSelectionNode.h"
 #include "vtkWindowToImageFilter.h"
 
+#include <cmath>
 #include <set>
+#include <vector>
 
 namespace vtkMLAATest
 {
@@ -355,6 +357,62 @@ inline vtkSmartPointer<vtkImageData> ZBuffer(vtkRenderWindow* window)
   auto depth = vtkSmartPointer<vtkImageData>::New();
   depth->DeepCopy(grab->GetOutput());
   return depth;
+}
+
+// The supersampled reference of MEASURING.md of what `window` shows without a pass: the mean of
+// samples x samples renders shifted by stratified sub-pixel offsets (RGB, row by row, 0..255).
+inline std::vector<double> SupersampledReference(
+  vtkRenderWindow* window, vtkRenderer* renderer, int samples = 8)
+{
+  int* size = window->GetSize();
+  const int w = size[0], h = size[1];
+  vtkCamera* camera = renderer->GetActiveCamera();
+  double center[2];
+  camera->GetWindowCenter(center);
+  std::vector<double> sum(static_cast<size_t>(w) * h * 3, 0.0);
+  for (int j = 0; j < samples; ++j)
+  {
+    for (int i = 0; i < samples; ++i)
+    {
+      camera->SetWindowCenter(center[0] + 2.0 * ((i + 0.5) / samples - 0.5) / w,
+        center[1] + 2.0 * ((j + 0.5) / samples - 0.5) / h);
+      auto image = vtkMLAAScenes::Capture(window);
+      const auto* p = static_cast<const unsigned char*>(image->GetScalarPointer());
+      for (size_t v = 0; v < sum.size(); ++v)
+      {
+        sum[v] += p[v];
+      }
+    }
+  }
+  camera->SetWindowCenter(center[0], center[1]);
+  for (double& v : sum)
+  {
+    v /= samples * samples;
+  }
+  return sum;
+}
+
+// AAR of MEASURING.md: 1 - MSE(result, reference) / MSE(plain, reference) over the pixels where
+// plain and reference differ by more than 4/255.
+inline double AAR(vtkImageData* plain, vtkImageData* result, const std::vector<double>& reference)
+{
+  const auto* n = static_cast<const unsigned char*>(plain->GetScalarPointer());
+  const auto* m = static_cast<const unsigned char*>(result->GetScalarPointer());
+  double none = 0.0, method = 0.0;
+  for (size_t p = 0; p < reference.size(); p += 3)
+  {
+    bool inE = false;
+    for (int c = 0; c < 3; ++c)
+    {
+      inE = inE || std::abs(n[p + c] - reference[p + c]) > 4.0;
+    }
+    for (int c = 0; inE && c < 3; ++c)
+    {
+      none += (n[p + c] - reference[p + c]) * (n[p + c] - reference[p + c]);
+      method += (m[p + c] - reference[p + c]) * (m[p + c] - reference[p + c]);
+    }
+  }
+  return none > 0.0 ? 1.0 - method / none : 0.0;
 }
 
 // A parallel camera over a `width` x `height` window that maps one world unit to one pixel:

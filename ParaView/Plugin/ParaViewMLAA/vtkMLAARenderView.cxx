@@ -204,6 +204,7 @@ public:
     if (auto* pass = vtkOpenGLAntialiasingPass::SafeDownCast(this->Antialiasing))
     {
       pass->SetMultiSamples(this->View->GetRenderMultiSamples(backgroundUnder));
+      pass->SetSampleShading(this->View->GetAntialiasingSampleShading());
     }
     if (backgroundUnder)
     {
@@ -534,6 +535,7 @@ void vtkMLAARenderView::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UseMLAA: " << (this->UseMLAA ? "On" : "Off") << "\n";
   os << indent << "UseDLAA: " << (this->UseDLAA ? "On" : "Off") << "\n";
   os << indent << "AntialiasingMultiSamples: " << this->AntialiasingMultiSamples << "\n";
+  os << indent << "AntialiasingSampleShading: " << this->AntialiasingSampleShading << "\n";
   os << indent << "RequestedFXAA: " << (this->RequestedFXAA ? "On" : "Off") << "\n";
   os << indent << "RequestedToneMapping: " << (this->RequestedToneMapping ? "On" : "Off") << "\n";
   os << indent << "MLAAPass:\n";

@@ -119,6 +119,16 @@ public:
 
   ///@{
   /**
+   * With AntialiasingMultiSamples: whether every sample is shaded at its own position (both
+   * passes' vtkOpenGLAntialiasingPass::SampleShading), so that texture and colour edges are
+   * sampled too, at the cost of shading each pixel once per sample. Default on.
+   */
+  vtkSetMacro(AntialiasingSampleShading, bool);
+  vtkGetMacro(AntialiasingSampleShading, bool);
+  ///@}
+
+  ///@{
+  /**
    * Renders per still render while AntialiasingTemporal is on and MLAA or DLAA is in effect
    * (the passes' ConvergedFrames): a still render (a screenshot, the render after interaction)
    * renders this many times, so that it shows the converged still. The same number on every
@@ -229,6 +239,7 @@ private:
   int AntialiasingMethod = FXAA_OR_NONE;
   bool UseMLAA = false;
   int AntialiasingMultiSamples = 0;
+  bool AntialiasingSampleShading = true;
   bool WarnedSingleSampleComposite = false;
   // The passes' MultiSamples for this render: 0 where the image is composited (see
   // SetAntialiasingMultiSamples), warning once.

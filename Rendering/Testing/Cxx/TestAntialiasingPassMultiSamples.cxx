@@ -4,8 +4,9 @@
 // multisampled render, then resolved), for every method of PassMethods():
 // - the supported counts: a count the driver does not offer gives the nearest it offers and one
 //   warning per count asked for (the counts offered are printed: llvmpipe offers 4 only);
-// - the plain sample images (DebugSample) average to the window's own multisampled render of the
-//   same count within 1/255, and differ from one another (the samples are distinct);
+// - with SampleShading off, the plain sample images (DebugSample) average to the window's own
+//   multisampled render of the same count within 1/255; with it on (the default) they differ
+//   from one another (the samples are distinct);
 // - parity: on every shared scene (overlays antialiased too, as the filter sees them; MLAA with
 //   SampleAreas off, which the filter cannot reproduce), the pass
 //   equals the average of the method's CPU filter run on each plain sample image (mixed half and
@@ -25,6 +26,10 @@
 // - MLAA's debug images (edges) are averaged as they are, not mixed with the scene's colours;
 // - MLAA's SampleAreas: on straight edges (shallow and steep, rising and falling), the result
 //   is nearer the exact coverage of each pixel than without (a quarter less RMS error in all);
+// - SampleShading: on a textured floor, the resolve and the plain samples' average are nearer
+//   the supersampled reference (AAR higher by 0.2 at least) than with samples shaded per pixel;
+// - MLAA with sample shading leaves squares whose sides lie on pixel borders exactly as rendered
+//   (no ramp from their corners, where the single-sample pass draws the chapter's L shapes);
 // - with Temporal on, MultiSamples is not used (one sample per pixel, one warning);
 // - MultiSamples back to 0 gives the single-sample pass's image exactly and frees the
 //   multisampled targets (GetTargetMemorySize).
@@ -199,17 +204,24 @@ void ParityOnScenes(const PassMethod& method, MessageObserver* messages)
     messages->Watch(pass);
     pass->SetMultiSamples(Samples);
     pass->AntialiasOverlaysOn(); // the filter sees the overlays too
+    // Shaded per pixel, the sample images are those of the window's own multisampling.
+    pass->SampleShadingOff();
+    vtkMLAAScenes::Capture(scene.Window);
+    MLAA_CHECK(!pass->GetRenderedSampleShading());
+    const Difference fromMSAA = Compare(Average(SampleImages(scene.Window, pass)), msaa, 1.0);
+    pass->SampleShadingOn();
     auto result = vtkMLAAScenes::Capture(scene.Window);
     MLAA_CHECK(pass->GetRenderedMultiSamples() == Samples);
+    MLAA_CHECK(pass->GetRenderedSampleShading());
     const auto samples = SampleImages(scene.Window, pass);
     auto expected = ExpectedResolve(method, pass, samples);
     const double parity = ShareWithin(expected, result, 2.0);
-    const Difference fromMSAA = Compare(Average(samples), msaa, 1.0);
     const Difference changed = Compare(msaa, result, 0.0);
     const Difference distinct = Compare(samples[0], samples[1], 0.0);
     std::cout << method.Name << ", " << name << ": " << 100.0 * parity
               << " % of pixels within 2/255 of the filter per sample, resolved; the samples' "
-              << "average is off the window's " << Samples << "x render by more than 1/255 on "
+              << "average (shaded per pixel) is off the window's " << Samples
+              << "x render by more than 1/255 on "
               << fromMSAA.Pixels << " pixels; " << changed.Pixels
               << " pixels differ from it; samples 0 and 1 differ on " << distinct.Pixels
               << std::endl;
@@ -596,6 +608,106 @@ void SampleAreas(const PassMethod& method, MessageObserver* messages)
   MLAA_CHECK(sumWith < 0.75 * sumWithout);
 }
 
+// SampleShading: on the textured floor (edges inside the texture, which multisampling shades
+// once per pixel), every sample shaded at its own position brings the resolve nearer the
+// supersampled reference (AAR) than samples shaded per pixel, and its plain samples' average
+// too; the sample images then differ inside the texture, and GetRenderedSampleShading says
+// which was used (not without MultiSamples).
+void SampleShading(const PassMethod& method, MessageObserver* messages)
+{
+  SceneWindow scene("texture", 200, 150);
+  auto none = vtkMLAAScenes::Capture(scene.Window);
+  const std::vector<double> reference = SupersampledReference(scene.Window, scene.Renderer);
+  auto pass = method.Use(scene.Renderer);
+  messages->Watch(pass);
+  vtkMLAAScenes::Capture(scene.Window);
+  MLAA_CHECK(pass->GetSampleShading() && !pass->GetRenderedSampleShading());
+  pass->SetMultiSamples(Samples);
+  double aar[2], plainAAR[2];
+  vtkIdType distinct[2];
+  for (bool shading : { false, true })
+  {
+    pass->SetSampleShading(shading);
+    auto result = vtkMLAAScenes::Capture(scene.Window);
+    MLAA_CHECK(pass->GetRenderedSampleShading() == shading);
+    const auto samples = SampleImages(scene.Window, pass);
+    aar[shading] = AAR(none, result, reference);
+    plainAAR[shading] = AAR(none, Average(samples), reference);
+    distinct[shading] = Compare(samples[0], samples[1], 0.0).Pixels;
+  }
+  std::cout << method.Name << ", textured floor, " << Samples << " samples: AAR " << aar[1]
+            << " with sample shading, " << aar[0] << " without; plain samples' average "
+            << plainAAR[1] << " / " << plainAAR[0] << "; samples 0 and 1 differ on "
+            << distinct[1] << " / " << distinct[0] << " pixels" << std::endl;
+  MLAA_CHECK(aar[1] > aar[0] + 0.2);
+  MLAA_CHECK(plainAAR[1] > plainAAR[0] + 0.2);
+  MLAA_CHECK(distinct[1] > 2 * distinct[0]);
+}
+
+// MLAA with sample shading: where no pixel's samples straddle an edge, the edge lies within
+// 1/2 less the largest sample offset of the pixel border, and where no end of its line shows a
+// step either, no ramp is drawn. Rectangles whose sides lie on pixel borders (two colours
+// meeting at corners, as a checkerboard's squares do) come out exactly as rendered, while the
+// single-sample pass ramps from their corners (the chapter's L shapes).
+void PixelAlignedSides(const PassMethod& method, MessageObserver* messages)
+{
+  if (std::string(method.Name) != "vtkOpenGLMLAAPass")
+  {
+    return;
+  }
+  const int width = 160, height = 120;
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> quads;
+  // A 4 x 3 board of 30-pixel squares from (20, 15), every other square drawn white over a
+  // black background.
+  for (int j = 0; j < 3; ++j)
+  {
+    for (int i = 0; i < 4; ++i)
+    {
+      if ((i + j) % 2)
+      {
+        continue;
+      }
+      const double x0 = 20 + 30 * i, y0 = 15 + 30 * j;
+      const vtkIdType first = points->GetNumberOfPoints();
+      points->InsertNextPoint(x0, y0, 0.0);
+      points->InsertNextPoint(x0 + 30, y0, 0.0);
+      points->InsertNextPoint(x0 + 30, y0 + 30, 0.0);
+      points->InsertNextPoint(x0, y0 + 30, 0.0);
+      const vtkIdType ids[4] = { first, first + 1, first + 2, first + 3 };
+      quads->InsertNextCell(4, ids);
+    }
+  }
+  vtkNew<vtkPolyData> board;
+  board->SetPoints(points);
+  board->SetPolys(quads);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(board);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(1.0, 1.0, 1.0);
+  actor->GetProperty()->LightingOff();
+  auto window = vtkMLAAScenes::NewOffscreenWindow(width, height);
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(0.0, 0.0, 0.0);
+  renderer->AddActor(actor);
+  window->AddRenderer(renderer);
+  UsePixelCamera(renderer, width, height);
+  auto plain = vtkMLAAScenes::Capture(window);
+  auto pass = UseMLAA(renderer);
+  messages->Watch(pass);
+  const Difference single = Compare(plain, vtkMLAAScenes::Capture(window), 4.0);
+  pass->SetMultiSamples(Samples);
+  const Difference shaded = Compare(plain, vtkMLAAScenes::Capture(window), 0.0);
+  MLAA_CHECK(pass->GetRenderedSampleShading());
+  std::cout << "pixel-aligned squares: the single-sample pass changes " << single.Pixels
+            << " pixels by more than 4/255, " << Samples << " samples with sample shading "
+            << shaded.Pixels << std::endl;
+  MLAA_CHECK(single.Pixels > 20);
+  MLAA_CHECK(shaded.Pixels == 0);
+  StopPass(renderer, window);
+}
+
 void BackToSingleSample(const PassMethod& method, MessageObserver* messages)
 {
   SceneWindow scene("silhouettes", 300, 200);
@@ -632,6 +744,8 @@ int TestAntialiasingPassMultiSamples(int, char*[])
     Translucency(method, messages);
     DebugImages(method, messages);
     SampleAreas(method, messages);
+    SampleShading(method, messages);
+    PixelAlignedSides(method, messages);
     BackToSingleSample(method, messages);
   });
   return Result();

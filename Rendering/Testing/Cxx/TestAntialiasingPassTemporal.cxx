@@ -57,60 +57,6 @@ namespace
 {
 constexpr int Width = 160, Height = 120;
 
-// The supersampled reference of MEASURING.md of what `window` shows without a pass.
-std::vector<double> Reference(vtkRenderWindow* window, vtkRenderer* renderer, int samples = 8)
-{
-  int* size = window->GetSize();
-  const int w = size[0], h = size[1];
-  vtkCamera* camera = renderer->GetActiveCamera();
-  double center[2];
-  camera->GetWindowCenter(center);
-  std::vector<double> sum(static_cast<size_t>(w) * h * 3, 0.0);
-  for (int j = 0; j < samples; ++j)
-  {
-    for (int i = 0; i < samples; ++i)
-    {
-      camera->SetWindowCenter(center[0] + 2.0 * ((i + 0.5) / samples - 0.5) / w,
-        center[1] + 2.0 * ((j + 0.5) / samples - 0.5) / h);
-      auto image = vtkMLAAScenes::Capture(window);
-      const auto* p = static_cast<const unsigned char*>(image->GetScalarPointer());
-      for (size_t v = 0; v < sum.size(); ++v)
-      {
-        sum[v] += p[v];
-      }
-    }
-  }
-  camera->SetWindowCenter(center[0], center[1]);
-  for (double& v : sum)
-  {
-    v /= samples * samples;
-  }
-  return sum;
-}
-
-// AAR of MEASURING.md: 1 - MSE(result, reference) / MSE(plain, reference) over the pixels where
-// plain and reference differ by more than 4/255.
-double AAR(vtkImageData* plain, vtkImageData* result, const std::vector<double>& reference)
-{
-  const auto* n = static_cast<const unsigned char*>(plain->GetScalarPointer());
-  const auto* m = static_cast<const unsigned char*>(result->GetScalarPointer());
-  double none = 0.0, method = 0.0;
-  for (size_t p = 0; p < reference.size(); p += 3)
-  {
-    bool inE = false;
-    for (int c = 0; c < 3; ++c)
-    {
-      inE = inE || std::abs(n[p + c] - reference[p + c]) > 4.0;
-    }
-    for (int c = 0; inE && c < 3; ++c)
-    {
-      none += (n[p + c] - reference[p + c]) * (n[p + c] - reference[p + c]);
-      method += (m[p + c] - reference[p + c]) * (m[p + c] - reference[p + c]);
-    }
-  }
-  return none > 0.0 ? 1.0 - method / none : 0.0;
-}
-
 vtkOpenGLAntialiasingPass* UseTemporal(const PassMethod& method, vtkRenderer* renderer)
 {
   vtkOpenGLAntialiasingPass* pass = method.Use(renderer);
@@ -163,7 +109,7 @@ void StillConvergence(const PassMethod& method, MessageObserver* messages)
     window->AddRenderer(renderer);
     vtkMLAAScenes::Build(scene, renderer);
     auto plain = vtkMLAAScenes::Capture(window);
-    const std::vector<double> reference = Reference(window, renderer);
+    const std::vector<double> reference = SupersampledReference(window, renderer);
 
     method.Use(renderer)->AddObserver(vtkCommand::ErrorEvent, messages);
     const double single = AAR(plain, vtkMLAAScenes::Capture(window), reference);
@@ -422,7 +368,7 @@ void AnimatedActor(const PassMethod& method, MessageObserver* messages)
   auto bare = vtkMLAAScenes::Capture(window);
   moving->VisibilityOn();
   place(0);
-  const std::vector<double> reference = Reference(window, renderer);
+  const std::vector<double> reference = SupersampledReference(window, renderer);
 
   // Whether the moving sphere covers (x, y) in frame k, or comes within `radius` pixels of it.
   auto covers = [&](int k, int x, int y, int radius) {

@@ -8,7 +8,8 @@ with translucent geometry, depth peeling off and on (issue 21); with temporal=Tr
 gives a converged still closer to a supersampled reference than the single-frame pass (issue 23);
 with multisamples=4 (MLAA's SampleAreas off), the pass equals the filter run on each plain sample image
 (pass.SetDebugSample), averaged, and half and half with the plain samples' average where they
-differ (issue 22), and bad multisamples values raise ValueError.
+differ (issue 22), every sample is shaded unless sample_shading=False, and bad multisamples
+values raise ValueError.
 Needs a display (ctest runs under scripts/with-xvfb.sh). Usage: TestPythonRenderPass.py OUT_DIR"""
 import os
 import sys
@@ -233,6 +234,14 @@ for method in ("mlaa", "dlaa"):
           % (method, 100 * share))
     check(share >= 0.995, "%s: multisampled pass and filter agree on %.4f" % (method, share))
     check((shot != single).any(axis=2).sum() > 100, method + ": differs from the single-sample pass")
+    check(aa_pass.GetSampleShading() and aa_pass.GetRenderedSampleShading(),
+          method + ": every sample shaded by default")
+    vtkmlaa.disable(renderer)
+    # sample_shading=False: multisampling's own shading, once per pixel (the option of the pass).
+    aa_pass = vtkmlaa.enable(renderer, method=method, multisamples=4, sample_shading=False)
+    screenshot(window)
+    check(not aa_pass.GetSampleShading() and not aa_pass.GetRenderedSampleShading(),
+          method + ": sample_shading=False shades once per pixel")
     vtkmlaa.disable(renderer)
     for bad in (-1, 17, 2.5, True, "4"):
         try:
