@@ -504,6 +504,28 @@ void DebugImages(const PassMethod& method, MessageObserver* messages)
   MLAA_CHECK(edgePixels > 500 && offQuarter == 0 && blue == 0);
 }
 
+// A window of `width` x `height` showing `shape` in unlit white on black, under a camera that
+// maps one world unit to one pixel (UsePixelCamera).
+struct PixelScene
+{
+  PixelScene(vtkPolyData* shape, int width, int height)
+    : Window(vtkMLAAScenes::NewOffscreenWindow(width, height))
+  {
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(shape);
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetColor(1.0, 1.0, 1.0);
+    actor->GetProperty()->LightingOff();
+    this->Renderer->SetBackground(0.0, 0.0, 0.0);
+    this->Renderer->AddActor(actor);
+    this->Window->AddRenderer(this->Renderer);
+    UsePixelCamera(this->Renderer, width, height);
+  }
+  vtkSmartPointer<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+};
+
 // vtkOpenGLMLAAPass::SampleAreas: a white region under a straight edge on black, each sample
 // set's line moved by its sample's offset, against the exact coverage of each pixel. `steep`:
 // the edge runs mostly up (vertical lines of edgels), else mostly across; slope: pixels across
@@ -532,18 +554,9 @@ double SampleAreasError(bool steep, double slope, bool sampleAreas, MessageObser
   vtkNew<vtkPolyData> region;
   region->SetPoints(points);
   region->SetPolys(quad);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(region);
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(1.0, 1.0, 1.0);
-  actor->GetProperty()->LightingOff();
-  auto window = vtkMLAAScenes::NewOffscreenWindow(width, height);
-  vtkNew<vtkRenderer> renderer;
-  renderer->SetBackground(0.0, 0.0, 0.0);
-  renderer->AddActor(actor);
-  window->AddRenderer(renderer);
-  UsePixelCamera(renderer, width, height);
+  const PixelScene scene(region, width, height);
+  vtkRenderWindow* window = scene.Window;
+  vtkRenderer* renderer = scene.Renderer;
   auto pass = UseMLAA(renderer);
   messages->Watch(pass);
   pass->SetMultiSamples(Samples);
@@ -681,18 +694,9 @@ void PixelAlignedSides(const PassMethod& method, MessageObserver* messages)
   vtkNew<vtkPolyData> board;
   board->SetPoints(points);
   board->SetPolys(quads);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(board);
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(1.0, 1.0, 1.0);
-  actor->GetProperty()->LightingOff();
-  auto window = vtkMLAAScenes::NewOffscreenWindow(width, height);
-  vtkNew<vtkRenderer> renderer;
-  renderer->SetBackground(0.0, 0.0, 0.0);
-  renderer->AddActor(actor);
-  window->AddRenderer(renderer);
-  UsePixelCamera(renderer, width, height);
+  const PixelScene scene(board, width, height);
+  vtkRenderWindow* window = scene.Window;
+  vtkRenderer* renderer = scene.Renderer;
   auto plain = vtkMLAAScenes::Capture(window);
   auto pass = UseMLAA(renderer);
   messages->Watch(pass);
