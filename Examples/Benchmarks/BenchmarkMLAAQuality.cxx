@@ -21,6 +21,8 @@
 //              multisampled render, resolved (the count the driver gave is printed per scene);
 //   MLAA-S4plain  MLAA-S4 without vtkOpenGLMLAAPass::SampleAreas (each sample set antialiased
 //              as a single-sample image);
+//   MLAA-S4pixel  MLAA-S4 without vtkOpenGLAntialiasingPass::SampleShading (each pixel shaded
+//              once for all its samples, as plain multisampling does);
 //   variants   (unless --no-variants) MLAA-pass with each feature of "Morphological
 //              antialiasing and topological reconstruction" over the medium preset (+lab, +steps32,
 //              +steps128, +recon), the three together (+all3) and each preset (P-low ...
@@ -82,7 +84,7 @@ using mlaaBenchmark::Stopwatch;
 // The methods in table order ("none" first: its AAR is 0 by definition); the variants are
 // added unless --no-variants is given.
 std::vector<std::string> Methods = { "none", "FXAA", "MSAA2", "MSAA4", "MSAA8", "MLAA-CPU",
-  "MLAA-pass", "DLAA-pass", "MLAA-S2", "MLAA-S4", "MLAA-S8", "MLAA-S4plain", "DLAA-S4",
+  "MLAA-pass", "DLAA-pass", "MLAA-S2", "MLAA-S4", "MLAA-S8", "MLAA-S4plain", "MLAA-S4pixel", "DLAA-S4",
   "MLAA-temporal",
   "DLAA-temporal" };
 // The methods of the crop mosaic, in order.
@@ -612,6 +614,9 @@ int main(int argc, char* argv[])
       pass->SampleAreasOff();
       Capture(window, images["MLAA-S4plain"]);
       pass->SampleAreasOn();
+      pass->SampleShadingOff();
+      Capture(window, images["MLAA-S4pixel"]);
+      pass->SampleShadingOn();
       pass->SetMultiSamples(0);
       // Parity with MLAA-CPU: the overlays antialiased too, as the filter sees them.
       pass->AntialiasOverlaysOn();
