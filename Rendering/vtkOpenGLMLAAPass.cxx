@@ -208,22 +208,10 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   this->BeginWorkPass(renWin, this->EdgesTexture, width, height);
   fbo->AddDepthAttachment(this->MaskTexture);
 
-  // Pass 1: edges. Cleared edges and a far mask; edge pixels write the quad's depth.
-  ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
-  ostate->vtkglClearDepth(1.0);
-  ostate->vtkglDepthMask(GL_TRUE);
-  ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  ostate->vtkglEnable(GL_DEPTH_TEST);
-  ostate->vtkglDepthFunc(GL_ALWAYS);
   // The edge shader's variant: what is compared, and whether alpha counts (section 4.2).
   const std::string edgeDefines =
     Define("MLAA_EDGE_DETECTION", this->Options->GetEdgeDetection()) +
     Define("MLAA_USE_ALPHA", useAlpha) + Define("MLAA_SRGB_TABLE", this->UsesSrgbTable());
-  if (!this->ReadyQuad(renWin, this->EdgesQuad, vtkMLAAEdgeDetectionFS, edgeDefines))
-  {
-    return false;
-  }
-  vtkShaderProgram* program = this->EdgesQuad.Quad->Program;
   vtkTextureObject* source = this->GetSourceTexture();
   source->Activate();
   // The depth copy exists only when the delegate renders into the pass's textures; the shaders
@@ -234,6 +222,34 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   {
     this->DepthTexture->Activate();
   }
+  // Pass 0: the change mask. Cleared edges and a mask at 0; pixels that differ from their left
+  // or upper neighbour write depth 1, the others keep 0.
+  ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+  ostate->vtkglClearDepth(0.0);
+  ostate->vtkglDepthMask(GL_TRUE);
+  ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_ALWAYS);
+  if (!this->ReadyQuad(renWin, this->ChangeMaskQuad, vtkMLAAEdgeDetectionFS,
+        edgeDefines + Define("MLAA_CHANGE_MASK", true)))
+  {
+    return false;
+  }
+  vtkShaderProgram* program = this->ChangeMaskQuad.Quad->Program;
+  this->SetEdgeUniforms(program);
+  ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  this->ChangeMaskQuad.Quad->Render();
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+
+  // Pass 1: edges, on the marked pixels only (the quad's depth, 1/2, is less than 1 there and not
+  // less than 0 elsewhere, so the depth test rejects unchanged pixels before the shader runs);
+  // edge pixels write the quad's depth.
+  ostate->vtkglDepthFunc(GL_LESS);
+  if (!this->ReadyQuad(renWin, this->EdgesQuad, vtkMLAAEdgeDetectionFS, edgeDefines))
+  {
+    return false;
+  }
+  program = this->EdgesQuad.Quad->Program;
   this->SetEdgeUniforms(program);
   this->EdgesQuad.Quad->Render();
 
@@ -671,7 +687,8 @@ bool vtkOpenGLMLAAPass::Antialias(const Frame& frame)
 void vtkOpenGLMLAAPass::ReleaseMethodResources(vtkWindow* w)
 {
   for (ShaderVariant* variant : { &this->ReconstructionQuad, &this->WriteBackQuad,
-         &this->EdgesQuad, &this->LocalContrastQuad, &this->WeightsQuad, &this->BlendQuad,
+         &this->ChangeMaskQuad, &this->EdgesQuad, &this->LocalContrastQuad, &this->WeightsQuad,
+         &this->BlendQuad,
          &this->LengthsInitQuad, &this->LengthsQuad })
   {
     variant->Release(w);

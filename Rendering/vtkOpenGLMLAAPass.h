@@ -313,6 +313,7 @@ private:
   void PrepareSampleAreas(vtkOpenGLRenderWindow* renWin, const SampleSet& set);
   ShaderVariant ReconstructionQuad;
   ShaderVariant WriteBackQuad;
+  ShaderVariant ChangeMaskQuad;
   ShaderVariant EdgesQuad;
   ShaderVariant LocalContrastQuad;
   ShaderVariant WeightsQuad;

@@ -14,13 +14,25 @@
 //   MLAA_USE_ALPHA        defined: a change in alpha alone is an edge too (the result keeps
 //                         alpha: vtkOpenGLMLAAPass::KeepAlpha, or a composited layer)
 //   MLAA_LOCAL_CONTRAST   defined: the local contrast adaptation pass (below)
+//   MLAA_CHANGE_MASK      defined: the change mask pass (below)
 //
 // Detection (the default build): writes, for the pixel under this fragment, whether its left
 // boundary (red) and its top boundary (green) are edges. "Top" is the next row up (GL's y + 1,
 // the top of the displayed image). Pixels with no edge are discarded: the edges texture was
-// cleared to 0, and the depth buffer, cleared to 1, keeps the quad's depth only where an edge
-// was written. The later passes test depth for equality, so they run on edge pixels only: the
-// chapter's stencil trick, done with a depth buffer.
+// cleared to 0, and the depth buffer (0 where the change mask left a pixel unmarked, 1 where it
+// marked it) takes the quad's depth only where an edge was written. The later passes test depth
+// for equality, so they run on edge pixels only: the chapter's stencil trick, done with a depth
+// buffer.
+//
+// The change mask (built with MLAA_CHANGE_MASK defined, run first on every pixel): marks, with
+// depth 1 over a mask cleared to 0, the pixels that differ from their left neighbour or from the
+// pixel above (colour and alpha, and depth in depth mode); the detection then runs with the
+// quad's depth (1/2) tested LESS, on the marked pixels only. A pixel equal to both neighbours
+// has no edge whatever the threshold, and the depth test drops it before its shader runs: most
+// of a picture is such pixels (backgrounds, flat colour), and the detection's conversions (Lab:
+// three per pixel) are its cost. Rasterisers that shade pixels in lock-step skip a group only
+// when none of its pixels passes the test, which an early depth test decides before shading
+// and a discard in the shader does not (measured: docs/measurements.md, issue 20).
 //
 // Local contrast adaptation (built with MLAA_LOCAL_CONTRAST defined, run when
 // vtkMLAAOptions::LocalContrastFactor > 0 on the edge pixels only): rewrites the edges of each
@@ -109,10 +121,42 @@ float contrastBetween(ivec2 p, ivec2 q, ivec2 size)
   return contrast(a, featuresAt(p, a), q);
 }
 
+#ifdef MLAA_CHANGE_MASK
+// Whether pixel q (inside the image) holds what pixel p holds: colour and alpha, and depth in
+// depth mode. Outside the image, yes (the border is never an edge).
+bool sameAs(ivec2 p, vec4 color, ivec2 q, ivec2 size)
+{
+  if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size)))
+  {
+    return true;
+  }
+#if MLAA_EDGE_DETECTION == 2
+  if (texelFetch(depthTexture, q, 0).r != texelFetch(depthTexture, p, 0).r)
+  {
+    return false;
+  }
+#endif
+  return all(equal(texelFetch(colorTexture, q, 0), color));
+}
+#endif
+
 void main()
 {
   ivec2 size = textureSize(colorTexture, 0);
   ivec2 p = ivec2(texCoord * vec2(size)); // this fragment's pixel (texCoord is at its centre)
+#ifdef MLAA_CHANGE_MASK
+  // The change mask: pixels equal to their left neighbour and to the pixel above have no edge
+  // whatever the threshold; the others are marked (depth 1) for the edge detection, which the
+  // depth test then runs on them only.
+  vec4 here = texelFetch(colorTexture, p, 0);
+  if (sameAs(p, here, p - ivec2(1, 0), size) && sameAs(p, here, p + ivec2(0, 1), size))
+  {
+    discard;
+  }
+  gl_FragDepth = 1.0;
+  gl_FragData[0] = vec4(0.0); // not written (colour writes are off)
+  return;
+#endif
 
   // The two boundaries this pixel owns: with its left neighbour and with the pixel above.
   ivec2 dx = ivec2(1, 0);
