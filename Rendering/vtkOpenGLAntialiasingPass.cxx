@@ -276,20 +276,28 @@ std::vector<std::uint64_t> SceneSignature(const vtkRenderState* s, bool placemen
   return signature;
 }
 
-// Whether a render blends something per pixel, not per sample, into a multisampled target:
-// translucent geometry (order-independent translucency composites one colour per pixel) or
-// volumes (drawn by their own mappers' passes).
-bool BlendsPerPixel(const vtkRenderState* s)
+// Whether `predicate` holds for one of the props a render draws.
+template <typename Predicate>
+bool AnyProp(const vtkRenderState* s, Predicate predicate)
 {
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
-    vtkProp* prop = s->GetPropArray()[i];
-    if (prop->HasTranslucentPolygonalGeometry() || vtkVolume::SafeDownCast(prop))
+    if (predicate(s->GetPropArray()[i]))
     {
       return true;
     }
   }
   return false;
+}
+
+// Whether a render blends something per pixel, not per sample, into a multisampled target:
+// translucent geometry (order-independent translucency composites one colour per pixel) or
+// volumes (drawn by their own mappers' passes).
+bool BlendsPerPixel(const vtkRenderState* s)
+{
+  return AnyProp(s, [](vtkProp* prop) {
+    return prop->HasTranslucentPolygonalGeometry() || vtkVolume::SafeDownCast(prop);
+  });
 }
 
 // OpenGL sample shading (4.0) on for the scope (every sample shaded at its own position), the
@@ -467,12 +475,7 @@ vtkOpenGLAntialiasingPass::StepsChange vtkOpenGLAntialiasingPass::UseRendererTra
   {
     return change; // no translucent step, or the user's own: theirs to decide
   }
-  bool hasTranslucent = false;
-  for (int i = 0; !hasTranslucent && i < s->GetPropArrayCount(); ++i)
-  {
-    hasTranslucent = s->GetPropArray()[i]->HasTranslucentPolygonalGeometry() != 0;
-  }
-  if (!hasTranslucent)
+  if (!AnyProp(s, [](vtkProp* prop) { return prop->HasTranslucentPolygonalGeometry() != 0; }))
   {
     return change; // the renderer skips the translucent step (volumes stay in their own)
   }

@@ -183,13 +183,19 @@ const float* SrgbToLinearTable()
 }
 
 //------------------------------------------------------------------------------
-void vtkOpenGLMLAAPass::SetEdgeUniforms(vtkShaderProgram* program)
+void vtkOpenGLMLAAPass::SetEdgeTextures(vtkShaderProgram* program)
 {
   program->SetUniformi("colorTexture", this->GetSourceTexture()->GetTextureUnit());
   if (this->DepthTexture->GetHandle())
   {
     program->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLMLAAPass::SetEdgeUniforms(vtkShaderProgram* program)
+{
+  this->SetEdgeTextures(program);
   program->SetUniformf("threshold", static_cast<float>(this->Options->GetThreshold()));
   program->SetUniformf(
     "localContrastFactor", static_cast<float>(this->Options->GetLocalContrastFactor()));
@@ -230,13 +236,16 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   ostate->vtkglEnable(GL_DEPTH_TEST);
   ostate->vtkglDepthFunc(GL_ALWAYS);
+  // The mask compares whole pixels (and depths in depth mode): neither alpha's part nor the
+  // threshold and Lab's table matter to it.
   if (!this->ReadyQuad(renWin, this->ChangeMaskQuad, vtkMLAAEdgeDetectionFS,
-        edgeDefines + Define("MLAA_CHANGE_MASK", true)))
+        Define("MLAA_EDGE_DETECTION", this->Options->GetEdgeDetection()) +
+          Define("MLAA_CHANGE_MASK", true)))
   {
     return false;
   }
   vtkShaderProgram* program = this->ChangeMaskQuad.Quad->Program;
-  this->SetEdgeUniforms(program);
+  this->SetEdgeTextures(program);
   ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   this->ChangeMaskQuad.Quad->Render();
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);

@@ -277,7 +277,9 @@ private:
   // `inPlace`: the target holds the delegate's image; only blended pixels are written.
   bool Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int width, int height, bool composite,
     bool straightAlpha, bool inPlace);
-  // The uniforms of both edge detection programs.
+  // The images the edge detection programs read (all the change mask reads).
+  void SetEdgeTextures(vtkShaderProgram* program);
+  // The uniforms of the detection and local contrast programs: the images and the options.
   void SetEdgeUniforms(vtkShaderProgram* program);
   // Whether the edge detection reads the sRGB linearisation from a table (CIELAB edges on an
   // 8-bit source, MLAA_SRGB_TABLE).
