@@ -303,15 +303,13 @@ bool leftAt(ivec2 p) { return edgelsAt(p).r > 0.5; }
 
 // A unit of a rising staircase (up and to the right) is a pixel with both edgels; a unit of a
 // falling one, named by its pixel q, is q's top edgel and its right neighbour's left edgel.
-bool isUnit(ivec2 p, bool rising)
-{
-  return rising ? all(greaterThan(edgelsAt(p), vec2(0.5)))
-                : topAt(p) && leftAt(p + ivec2(1, 0));
-}
+bool isRisingUnit(ivec2 p) { return all(greaterThan(edgelsAt(p), vec2(0.5))); }
+bool isFallingUnit(ivec2 q) { return topAt(q) && leftAt(q + ivec2(1, 0)); }
 
 // Number of further units of the staircase through p in `direction`, at most the maximum
-// distance; reachedEnd tells whether the staircase ended within it.
-int searchDiagonal(ivec2 p, ivec2 direction, bool rising, out bool reachedEnd)
+// distance; reachedEnd tells whether the staircase ended within it. `next` is whether the first
+// of them, p + direction, is a unit (the caller has read it).
+int searchDiagonal(ivec2 p, ivec2 direction, bool rising, bool next, out bool reachedEnd)
 {
   int maxDistance = cellSize - 1;
 #ifdef MLAA_DIAGONAL_LENGTHS
@@ -322,13 +320,33 @@ int searchDiagonal(ivec2 p, ivec2 direction, bool rising, out bool reachedEnd)
   reachedEnd = count < maxDistance;
   return min(count, maxDistance);
 #else
-  for (int k = 1; k <= maxDistance; ++k)
+  if (!next)
   {
-    if (!isUnit(p + k * direction, rising))
+    reachedEnd = true;
+    return 0;
+  }
+  // A loop per kind, each reading what its kind needs: where pixels shaded in lock-step run
+  // both sides of a branch, the loop of the other kind ends at once, where a read that depends on
+  // the kind would read for both on every step.
+  int k = 2;
+  if (rising)
+  {
+    while (k <= maxDistance && isRisingUnit(p + k * direction))
     {
-      reachedEnd = true;
-      return k - 1;
+      ++k;
     }
+  }
+  else
+  {
+    while (k <= maxDistance && isFallingUnit(p + k * direction))
+    {
+      ++k;
+    }
+  }
+  if (k <= maxDistance)
+  {
+    reachedEnd = true;
+    return k - 1;
   }
   reachedEnd = false;
   return maxDistance;
@@ -502,6 +520,35 @@ ivec3 verticalEnd(int code, int x, int beyond, int crossing, int direction)
 const int OUT = 1;
 const int IN = 2;
 
+#ifdef MLAA_DIAGONAL_DETECTION
+// The diagonal areas (vtkMLAAAreaTexture::ComputeDiagonalAreas) of the staircase through unit q,
+// rising or falling, if it has at least MLAA_MINIMUM_DIAGONAL_LENGTH units. `next` tells whether
+// q's neighbours along the staircase, towards its first and its second end, are units. The ends'
+// codes come from what the staircase does past them: a run along x (flatter) or along y
+// (steeper).
+bool staircaseAreas(ivec2 q, bool rising, bvec2 next, out vec3 a)
+{
+  ivec2 direction = rising ? ivec2(1) : ivec2(1, -1); // towards the second end
+  bool end1, end2;
+  int d1 = searchDiagonal(q, -direction, rising, next.x, end1);
+  int d2 = searchDiagonal(q, direction, rising, next.y, end2);
+  if (d1 + d2 + 1 < MLAA_MINIMUM_DIAGONAL_LENGTH)
+  {
+    return false;
+  }
+  ivec2 q1 = q - d1 * direction;
+  ivec2 q2 = q + d2 * direction;
+  int e1 = rising
+    ? diagonalEndCode(end1, topAt(q1 - ivec2(1)), leftAt(q1 - ivec2(0, 1)), OUT)
+    : diagonalEndCode(end1, topAt(q1 - ivec2(1, 0)), leftAt(q1 + ivec2(0, 1)), IN);
+  int e2 = rising
+    ? diagonalEndCode(end2, topAt(q2 + ivec2(1, 0)), leftAt(q2 + ivec2(1)), IN)
+    : diagonalEndCode(end2, topAt(q2 + ivec2(1, -1)), leftAt(q2 + ivec2(1, -1)), OUT);
+  a = diagonalArea(e1, e2, d1, d2);
+  return true;
+}
+#endif
+
 void main()
 {
   ivec2 size = textureSize(edgesTexture, 0);
@@ -515,49 +562,44 @@ void main()
 
 #ifdef MLAA_DIAGONAL_DETECTION
   {
-    if (top && left) // a unit of a rising staircase: the first end is the lower-left one
+    // The staircase units this pixel's edgels may belong to, as candidates: 1, a rising unit
+    // (this pixel, both edgels; its first end is the lower-left one); 2, a falling unit q =
+    // this pixel (its top edgel and the right neighbour's left edgel); 4, a falling unit q = the
+    // left neighbour (its top edgel and this pixel's left edgel). Falling staircases' first end
+    // is the upper-left one. A unit with a unit next to it along its diagonal may lie on a
+    // staircase of MLAA_MINIMUM_DIAGONAL_LENGTH (2) units; the others are left out here, so that
+    // the loop below runs only for pixels on staircases: a loop runs as many times as its
+    // pixels need, where both sides of a branch may be executed (rasterisers that shade pixels in
+    // lock-step, llvmpipe among them), and most edge pixels are on none.
+    ivec2 dx = ivec2(1, 0);
+    const bool single = MLAA_MINIMUM_DIAGONAL_LENGTH <= 1;
+    bvec2 risingNext = bvec2(isRisingUnit(p - ivec2(1)), isRisingUnit(p + ivec2(1)));
+    bvec2 qNext = bvec2(isFallingUnit(p + ivec2(-1, 1)), isFallingUnit(p + ivec2(1, -1)));
+    bvec2 rNext = bvec2(isFallingUnit(p + ivec2(-2, 1)), isFallingUnit(p + ivec2(0, -1)));
+    int candidates = (top && left && (any(risingNext) || single)) ? 1 : 0;
+    candidates |= (top && leftAt(p + dx) && (any(qNext) || single)) ? 2 : 0;
+    candidates |= (left && topAt(p - dx) && (any(rNext) || single)) ? 4 : 0;
+    while (candidates != 0)
     {
-      bool end1, end2;
-      int d1 = searchDiagonal(p, ivec2(-1, -1), true, end1);
-      int d2 = searchDiagonal(p, ivec2(1, 1), true, end2);
-      if (d1 + d2 + 1 >= MLAA_MINIMUM_DIAGONAL_LENGTH)
+      int c = (candidates & 1) != 0 ? 1 : ((candidates & 2) != 0 ? 2 : 4);
+      candidates -= c;
+      vec3 a;
+      if (!staircaseAreas(c == 4 ? p - dx : p, c == 1,
+            c == 1 ? risingNext : (c == 2 ? qNext : rNext), a))
       {
-        ivec2 p1 = p - ivec2(d1);
-        ivec2 p2 = p + ivec2(d2);
-        int e1 = diagonalEndCode(end1, topAt(p1 - ivec2(1)), leftAt(p1 - ivec2(0, 1)), OUT);
-        int e2 = diagonalEndCode(end2, topAt(p2 + ivec2(1, 0)), leftAt(p2 + ivec2(1)), IN);
-        vec3 a = diagonalArea(e1, e2, d1, d2);
+        continue;
+      }
+      if (c == 1)
+      {
         // This pixel takes the colours above and left of it; the pixel above lies after it
-        // along the line, the one to the left before it.
+        // along the line, the one to the left before it. Its edgels belong to this staircase:
+        // no falling one is looked at.
         weights = vec4(a.x, a.z, a.x, a.y);
         top = false;
         left = false;
+        candidates = 0;
       }
-    }
-    // Falling staircases (the first end is the upper-left one): this pixel as q (its top edgel)
-    // or as r (its left edgel, q being its left neighbour).
-    for (int role = 0; role < 2; ++role)
-    {
-      bool asQ = role == 0;
-      ivec2 q = asQ ? p : p - ivec2(1, 0);
-      if (!(asQ ? top : left) || !isUnit(q, false))
-      {
-        continue;
-      }
-      bool end1, end2;
-      int d1 = searchDiagonal(q, ivec2(-1, 1), false, end1);
-      int d2 = searchDiagonal(q, ivec2(1, -1), false, end2);
-      if (d1 + d2 + 1 < MLAA_MINIMUM_DIAGONAL_LENGTH)
-      {
-        continue;
-      }
-      ivec2 q1 = q + ivec2(-d1, d1);
-      ivec2 q2 = q + ivec2(d2, -d2);
-      int e1 = diagonalEndCode(end1, topAt(q1 - ivec2(1, 0)), leftAt(q1 + ivec2(0, 1)), IN);
-      int e2 = diagonalEndCode(
-        end2, topAt(q2 + ivec2(1, -1)), leftAt(q2 + ivec2(1, -1)), OUT);
-      vec3 a = diagonalArea(e1, e2, d1, d2);
-      if (asQ)
+      else if (c == 2)
       {
         weights.rg = a.xy; // q takes the colour above it, the r of the unit before
         top = false;

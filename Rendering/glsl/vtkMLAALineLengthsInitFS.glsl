@@ -39,8 +39,8 @@
 // Must match the line lengths of vtkImageMLAA (ComputeRowLineLengths and
 // ComputeColumnLineLengths in Filters/vtkMLAALineLengths.cxx) and searchTopEdges/searchLeftEdges in
 // vtkMLAABlendingWeightsFS.glsl; the staircase flags its diagonal lengths
-// (WeightsComputer::ComputeDiagonalLengths in Filters/vtkMLAABlendingWeights.cxx) and isUnit in
-// vtkMLAABlendingWeightsFS.glsl.
+// (WeightsComputer::ComputeDiagonalLengths in Filters/vtkMLAABlendingWeights.cxx) and
+// isRisingUnit and isFallingUnit in vtkMLAABlendingWeightsFS.glsl.
 
 in vec2 texCoord;
 
