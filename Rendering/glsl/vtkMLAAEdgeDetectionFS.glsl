@@ -67,14 +67,12 @@ float kept(float d)
   return (d >= threshold && d > 0.0) ? d : 0.0;
 }
 
-// The contrast across the boundary between a pixel (colour a, features fa: featuresAt) and pixel
-// q: the
-// largest difference of what edge detection compares (luma, colour channels or depth, and
-// alpha when it counts) that is at least the threshold, else 0. Pixels with a non-finite
-// colour (float buffers) take part in no edge, so they never spread.
-float contrast(vec4 a, vec4 fa, ivec2 q)
+// The contrast across the boundary between two pixels, given their colours a, b and features
+// fa, fb (featuresAt): the largest difference of what edge detection compares (luma, colour
+// channels or depth, and alpha when it counts) that is at least the threshold, else 0. Pixels
+// with a non-finite colour (float buffers) take part in no edge, so they never spread.
+float contrastOf(vec4 a, vec4 fa, vec4 b, vec4 fb)
 {
-  vec4 b = texelFetch(colorTexture, q, 0);
   if (!isFiniteColor(a) || !isFiniteColor(b))
   {
     return 0.0;
@@ -88,9 +86,9 @@ float contrast(vec4 a, vec4 fa, ivec2 q)
   vec3 d = abs(a.rgb - b.rgb);
   return max(c, max(kept(d.r), max(kept(d.g), kept(d.b))));
 #elif MLAA_EDGE_DETECTION == 2
-  return max(c, kept(abs(fa.r - texelFetch(depthTexture, q, 0).r)));
+  return max(c, kept(abs(fa.r - fb.r)));
 #elif MLAA_EDGE_DETECTION == 3
-  return max(c, kept(distance(fa.rgb, labFeatures(b.rgb))));
+  return max(c, kept(distance(fa.rgb, fb.rgb)));
 #else
   return max(c, kept(abs(dot(a.rgb, lumaWeights) - dot(b.rgb, lumaWeights))));
 #endif
@@ -109,17 +107,28 @@ vec4 featuresAt(ivec2 p, vec4 a)
 #endif
 }
 
-// The contrast across the boundary between pixels p and q (q = p + (1, 0) or p + (0, 1)); 0
-// where either is outside the image, whose border is never an edge.
-float contrastBetween(ivec2 p, ivec2 q, ivec2 size)
+// The colour of pixel q and its features, read clamped to the image (the callers count no
+// contrast across the image border). Each pixel's features are computed once per fragment (Lab:
+// a conversion each).
+void pixelAt(ivec2 q, ivec2 size, out vec4 color, out vec4 features)
+{
+  ivec2 inside = clamp(q, ivec2(0), size - 1);
+  color = texelFetch(colorTexture, inside, 0);
+  features = featuresAt(inside, color);
+}
+
+#ifdef MLAA_LOCAL_CONTRAST
+// The contrast between pixels p and q (q = p + (1, 0) or p + (0, 1)), given their colours and
+// features; 0 where either is outside the image, whose border is never an edge.
+float between(ivec2 p, ivec2 q, ivec2 size, vec4 a, vec4 fa, vec4 b, vec4 fb)
 {
   if (any(lessThan(p, ivec2(0))) || any(greaterThanEqual(q, size)))
   {
     return 0.0;
   }
-  vec4 a = texelFetch(colorTexture, p, 0);
-  return contrast(a, featuresAt(p, a), q);
+  return contrastOf(a, fa, b, fb);
 }
+#endif
 
 #ifdef MLAA_CHANGE_MASK
 // Whether pixel q (inside the image) holds what pixel p holds: colour and alpha, and depth in
@@ -158,35 +167,50 @@ void main()
   return;
 #endif
 
-  // The two boundaries this pixel owns: with its left neighbour and with the pixel above.
+  // The two boundaries this pixel owns: with its left neighbour l and with the pixel above, t.
   ivec2 dx = ivec2(1, 0);
   ivec2 dy = ivec2(0, 1);
+  ivec2 l = p - dx;
+  ivec2 t = p + dy;
   vec4 color = texelFetch(colorTexture, p, 0);
   vec4 features = featuresAt(p, color);
-  float left = p.x > 0 ? contrast(color, features, p - dx) : 0.0;
-  float top = p.y < size.y - 1 ? contrast(color, features, p + dy) : 0.0;
+  vec4 colorL, featuresL, colorT, featuresT;
+  pixelAt(l, size, colorL, featuresL);
+  pixelAt(t, size, colorT, featuresT);
+  float left = p.x > 0 ? contrastOf(color, features, colorL, featuresL) : 0.0;
+  float top = p.y < size.y - 1 ? contrastOf(color, features, colorT, featuresT) : 0.0;
   bool keepLeft = left > 0.0;
   bool keepTop = top > 0.0;
 
 #ifdef MLAA_LOCAL_CONTRAST
   // This pixel's other two boundaries, shared by both edges (contrast is symmetric).
-  float right = p.x < size.x - 1 ? contrast(color, features, p + dx) : 0.0;
-  float bottom = p.y > 0 ? contrast(color, features, p - dy) : 0.0;
+  vec4 colorQ, featuresQ, colorR, featuresR;
+  pixelAt(p + dx, size, colorQ, featuresQ);
+  pixelAt(p - dy, size, colorR, featuresR);
+  float right = p.x < size.x - 1 ? contrastOf(color, features, colorQ, featuresQ) : 0.0;
+  float bottom = p.y > 0 ? contrastOf(color, features, colorR, featuresR) : 0.0;
   float around = max(right, bottom);
+  // The pixel above l (left of t) is a neighbour of both l and t.
+  vec4 colorLT, featuresLT;
+  pixelAt(l + dy, size, colorLT, featuresLT);
   if (keepLeft)
   {
-    ivec2 l = p - dx;
+    pixelAt(l - dx, size, colorQ, featuresQ);
+    pixelAt(l - dy, size, colorR, featuresR);
     float strongest = max(max(around, top),
-      max(contrastBetween(l - dx, l, size),
-        max(contrastBetween(l, l + dy, size), contrastBetween(l - dy, l, size))));
+      max(between(l - dx, l, size, colorQ, featuresQ, colorL, featuresL),
+        max(between(l, l + dy, size, colorL, featuresL, colorLT, featuresLT),
+          between(l - dy, l, size, colorR, featuresR, colorL, featuresL))));
     keepLeft = localContrastFactor * left >= strongest;
   }
   if (keepTop)
   {
-    ivec2 t = p + dy;
+    pixelAt(t + dy, size, colorQ, featuresQ);
+    pixelAt(t + dx, size, colorR, featuresR);
     float strongest = max(max(around, left),
-      max(contrastBetween(t, t + dy, size),
-        max(contrastBetween(t - dx, t, size), contrastBetween(t, t + dx, size))));
+      max(between(t, t + dy, size, colorT, featuresT, colorQ, featuresQ),
+        max(between(t - dx, t, size, colorLT, featuresLT, colorT, featuresT),
+          between(t, t + dx, size, colorT, featuresT, colorR, featuresR))));
     keepTop = localContrastFactor * top >= strongest;
   }
 #else
