@@ -306,6 +306,21 @@ bool leftAt(ivec2 p) { return edgelsAt(p).r > 0.5; }
 bool isRisingUnit(ivec2 p) { return all(greaterThan(edgelsAt(p), vec2(0.5))); }
 bool isFallingUnit(ivec2 q) { return topAt(q) && leftAt(q + ivec2(1, 0)); }
 
+// Whether the neighbours of unit q along its staircase, towards its first end (-x) and its
+// second, are units: read from the diagonal lengths (a count of at least 1) where they were
+// counted, from the edgels otherwise.
+bvec2 nextUnits(ivec2 q, bool rising)
+{
+#ifdef MLAA_DIAGONAL_LENGTHS
+  vec4 counts = texelFetch(diagonalLengthsTexture, clamp(q, ivec2(0), ivec2(edgesSize) - 1), 0);
+  return greaterThan(rising ? counts.rg : counts.ba, vec2(0.5));
+#else
+  ivec2 direction = rising ? ivec2(1) : ivec2(1, -1); // towards the second end
+  return rising ? bvec2(isRisingUnit(q - direction), isRisingUnit(q + direction))
+                : bvec2(isFallingUnit(q - direction), isFallingUnit(q + direction));
+#endif
+}
+
 // Number of further units of the staircase through p in `direction`, at most the maximum
 // distance; reachedEnd tells whether the staircase ended within it. `next` is whether the first
 // of them, p + direction, is a unit (the caller has read it).
@@ -573,9 +588,9 @@ void main()
     // lock-step, llvmpipe among them), and most edge pixels are on none.
     ivec2 dx = ivec2(1, 0);
     const bool single = MLAA_MINIMUM_DIAGONAL_LENGTH <= 1;
-    bvec2 risingNext = bvec2(isRisingUnit(p - ivec2(1)), isRisingUnit(p + ivec2(1)));
-    bvec2 qNext = bvec2(isFallingUnit(p + ivec2(-1, 1)), isFallingUnit(p + ivec2(1, -1)));
-    bvec2 rNext = bvec2(isFallingUnit(p + ivec2(-2, 1)), isFallingUnit(p + ivec2(0, -1)));
+    bvec2 risingNext = nextUnits(p, true);
+    bvec2 qNext = nextUnits(p, false);
+    bvec2 rNext = nextUnits(p - dx, false);
     int candidates = (top && left && (any(risingNext) || single)) ? 1 : 0;
     candidates |= (top && leftAt(p + dx) && (any(qNext) || single)) ? 2 : 0;
     candidates |= (left && topAt(p - dx) && (any(rNext) || single)) ? 4 : 0;
