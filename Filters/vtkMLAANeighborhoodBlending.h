@@ -20,6 +20,10 @@
 #include "vtkMLAABlendingWeights.h"
 #include "vtkMLAAEdgeDetection.h"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 namespace vtkMLAAStages
 {
 // The kit's names (Rect, Progress, FeatureReader, ...) are this namespace's too.
@@ -51,6 +55,29 @@ struct BlendSettings
  * transparent pixels never leaks into their neighbours; where the alphas that take part are all
  * equal, that changes nothing and the plain formula is used.
  */
+/**
+ * A blend `r` of channel k that came out infinite or NaN, recomputed where every value taking
+ * part (the pixel's `own` and its neighbours with a weight `a`) is finite: `blend(scale)` is the
+ * same blend of the values times `scale`; with 1/4 its sums cannot overflow, and the result is
+ * scaled back and kept within the type's range (a weighted mean of finite values is finite).
+ * Non-finite values taking part leave `r` as it is.
+ */
+template <typename T, typename Acc, typename Blend>
+Acc RescaledBlend(Acc r, Blend blend, T own, const T* const neighbours[4], const Acc a[4], int k)
+{
+  bool finite = std::isfinite(static_cast<double>(own));
+  for (int n = 0; n < 4; ++n)
+  {
+    finite = finite && (!(a[n] > Acc(0)) || std::isfinite(static_cast<double>(neighbours[n][k])));
+  }
+  if (!finite)
+  {
+    return r;
+  }
+  const Acc limit = static_cast<Acc>(std::numeric_limits<T>::max());
+  return std::max(-limit, std::min(limit, Acc(4) * blend(Acc(0.25))));
+}
+
 template <typename T, typename Acc, typename PixelAt>
 void BlendRow(int y, const Rect& out, int components, const EdgesBuffer& edges,
   const WeightsBuffer& weights, const BlendSettings& settings, PixelAt pixel, T* output)
@@ -199,7 +226,27 @@ void BlendRow(int y, const Rect& out, int components, const EdgesBuffer& edges,
         {
           for (int k = 0; k < c - 1; ++k)
           {
-            q[k] = ConvertBlended<T>(mixed[k] / mixedAlpha);
+            Acc r = mixed[k] / mixedAlpha;
+            if (std::is_floating_point<T>::value && !std::isfinite(r))
+            {
+              // Finite values near the type's limit overflow the sums: the same blend of the
+              // values scaled by 1/4 (the shares add up to at most 4), scaled back.
+              r = RescaledBlend<T, Acc>(r, [&](Acc scale) {
+                Acc m = 0;
+                for (int n = 0; n < 4; ++n)
+                {
+                  if (a[n] > Acc(0))
+                  {
+                    const Acc selfShare = a[n] * (Acc(1) - a[n]) * ownCoverage;
+                    const Acc otherShare = a[n] * a[n] * coverage(neighbours[n]);
+                    m += selfShare * (scale * static_cast<Acc>(p[k])) +
+                      otherShare * (scale * static_cast<Acc>(neighbours[n][k]));
+                  }
+                }
+                return m / mixedAlpha;
+              }, p[k], neighbours, a, k);
+            }
+            q[k] = ConvertBlended<T>(r);
           }
         }
         // else: everything that takes part is fully transparent; the colour stays.
@@ -216,7 +263,26 @@ void BlendRow(int y, const Rect& out, int components, const EdgesBuffer& edges,
           blended += a[n] * ((Acc(1) - a[n]) * v + a[n] * static_cast<Acc>(neighbours[n][k]));
         }
       }
-      q[k] = ConvertBlended<T>(blended / sum);
+      Acc r = blended / sum;
+      if (std::is_floating_point<T>::value && !std::isfinite(r))
+      {
+        // Finite values near the type's limit overflow the sum: the same blend of the values
+        // scaled by 1/4 (the weights add up to at most 4), scaled back.
+        r = RescaledBlend<T, Acc>(r, [&](Acc scale) {
+          Acc b = 0;
+          for (int n = 0; n < 4; ++n)
+          {
+            if (a[n] > Acc(0))
+            {
+              b += a[n] *
+                ((Acc(1) - a[n]) * (scale * v) +
+                  a[n] * (scale * static_cast<Acc>(neighbours[n][k])));
+            }
+          }
+          return b / sum;
+        }, p[k], neighbours, a, k);
+      }
+      q[k] = ConvertBlended<T>(r);
     }
   }
 }

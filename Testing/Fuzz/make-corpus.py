@@ -9,7 +9,8 @@ Each seed is a case the targets should reach at once rather than search for: ima
 edges (staircases, a checker) of every scalar type, 1 to 4 components, odd, one-pixel, wide
 and 3D extents, NaN and infinities, and the options of both filters; image files of the
 formats the tool reads (written by oiiotool from a staircase made here), with command lines.
-The byte layouts are those the targets' file comments describe. BUILD_FUZZ_DIR (scripts/fuzz.sh
+The byte layouts are those the targets' file comments describe. Inputs that fuzzing found
+failing are kept in findings/<target>/ and copied in as "finding-NAME". BUILD_FUZZ_DIR (scripts/fuzz.sh
 builds it) gives mlaa_tool_fuzzer, which lists the options and extensions it picks from, so
 that seeds name options and extensions, not their places in the target. Old seeds are
 replaced, with the same bytes but for the GIF and SGI files: OpenImageIO 2.4's writers of
@@ -210,6 +211,13 @@ def write(target, seeds):
     directory = os.path.join(HERE, "corpus", target)
     shutil.rmtree(directory, ignore_errors=True)
     os.makedirs(directory)
+    # Inputs that fuzzing found failing, kept as they were found (findings/<target>/): each
+    # stays a regression test once fixed.
+    findings = os.path.join(HERE, "findings", target)
+    if os.path.isdir(findings):
+        for name in sorted(os.listdir(findings)):
+            with open(os.path.join(findings, name), "rb") as f:
+                seeds["finding-" + name] = f.read()
     total = 0
     for name, data in sorted(seeds.items()):
         with open(os.path.join(directory, name), "wb") as f:
