@@ -9,10 +9,11 @@
 //
 // Runs on pixels with an edge only (see the edge-detection pass). For the top edgel of the pixel
 // (a horizontal line) and for its left edgel (a vertical line):
-// 1. the distances to both ends of the line, reading two edgels per bilinear fetch
-//    (section 4.3.1, Listing 4.3) and stopping at crossing edges;
-// 2. the crossing edges at both ends, read a quarter pixel off the line so that one bilinear
-//    fetch tells which of the two possible edgels are set (section 4.3.2, Figure 4.4);
+// 1. the distances to both ends of the line, stopping at crossing edges (section 4.3.1,
+//    Listing 4.3), and
+// 2. the crossing edges at both ends (section 4.3.2, Figure 4.4), both from one bilinear fetch
+//    per two pixels of the line, placed so that it tells each of the eight edgels it weighs
+//    (searchLine; the chapter reads two edgels per fetch and the crossing edges with more);
 // 3. the two areas of the precomputed area texture (section 4.3.3, Listing 4.4).
 // Output: red = weight with which this pixel takes the colour of the pixel above it, green =
 // weight with which the pixel above takes this pixel's colour, blue and alpha = the same for
@@ -55,7 +56,7 @@
 // diagonals, WeightsComputer::ComputeDiagonalLengths).
 //
 // Must match vtkImageMLAA's blending weights (ComputeBlendingWeights in Filters/vtkMLAABlendingWeights.cxx);
-// the distances of searchTopEdges/searchLeftEdges must equal the line lengths of
+// the distances of searchLine must equal the line lengths of
 // ComputeRowLineLengths/ComputeColumnLineLengths there and of vtkMLAALineLengthsFS.glsl.
 
 in vec2 texCoord;
@@ -97,70 +98,89 @@ vec2 edgesAt(vec2 position)
   return texture(edgesTexture, position / edgesSize).rg;
 }
 
-// Distance from the pixel centred at `center` to the end of its line of top edgels (green) in
-// `direction` (-1 left, +1 right). Each step covers the next two pixels with two bilinear fetches
-// (section 4.3.1 reads two edgels per fetch; the quarter-texel offsets of section 4.3.2 make
-// every edgel of a fetch readable):
-// - along the line, a quarter texel from the first pixel's centre towards the second: 3/4 of the
-//   first edgel plus 1/4 of the second, so round(4 v) = 3 e1 + e2;
-// - the crossing edgels (left edgels, red) at the boundary before the first pixel ("near") and
-//   between the two ("mid"), on this row and the one above: a fetch on the row boundary, a
-//   quarter texel from the mid boundary's owner towards the near one's, so round(8 v) =
-//   3 n_mid + n_near with n the number of crossing edgels (0 to 2) at each boundary.
-// The line ends before the first pixel without an edgel or at the first boundary with a crossing
-// edgel. (The chapter's search does not stop at crossing edges; stopping keeps the two outlines
-// of one-pixel-wide lines apart.)
-float searchTopEdges(vec2 center, float direction)
+// The edgels of a square of 2 x 2 pixels, from one bilinear fetch at `position`, which lies
+// 1/3 of a texel from the centre of the square's pixel a towards its pixel b on one axis and
+// 1/5 of a texel from a's centre towards its pixel c on the other: the fetch weighs a, b, c and
+// the fourth pixel d 8/15, 4/15, 2/15 and 1/15, so that round(15 v) holds each pixel's edgel as
+// one bit (a 8, b 4, c 2, d 1) in each channel. That needs the filtering's weights to within
+// 1/30, which the 8 bits of sub-texel precision of GPUs (and llvmpipe) give.
+ivec2 edgelBits(vec2 position)
 {
-  for (int i = 0; i < maxSearchSteps; ++i)
-  {
-    float first = center.x - 0.5 + direction * float(2 * i + 1); // the first pixel's index
-    int along = int(round(4.0 * edgesAt(vec2(first + 0.5 + 0.25 * direction, center.y)).g));
-    // The mid boundary belongs to the right pixel of the pair, the near one to the right pixel
-    // of (previous, first).
-    float crossingX = direction < 0.0 ? first + 0.75 : first + 1.25;
-    int crossing = int(round(8.0 * edgesAt(vec2(crossingX, center.y + 0.5)).r));
-    if (crossing % 3 != 0 || along < 3)
-    {
-      return float(2 * i);
-    }
-    if (crossing >= 3 || (along != 1 && along != 4))
-    {
-      return float(2 * i + 1);
-    }
-  }
-  return float(2 * maxSearchSteps);
+  return ivec2(round(15.0 * edgesAt(position)));
 }
 
-// The same along a column of left edgels (red), -1 down, +1 up; the crossing edgels are top
-// edgels (green) of this column and the one to the left.
-float searchLeftEdges(vec2 center, float direction)
+// The crossing-edge code (section 4.3.2) of a boundary of a line whose two crossing edgels are
+// the bits `lineSide` (on the side of the pixels that own the line's edgels) and `opposite` of
+// edgelBits: 3 for the first, plus 1 for the second (0, 1, 3 or 4).
+int crossingCode(int bits, int lineSide, int opposite)
 {
-  for (int i = 0; i < maxSearchSteps; ++i)
-  {
-    float first = center.y - 0.5 + direction * float(2 * i + 1);
-    int along = int(round(4.0 * edgesAt(vec2(center.x, first + 0.5 + 0.25 * direction)).r));
-    // The mid boundary belongs to the lower pixel of the pair, the near one to the lower pixel of
-    // (previous, first).
-    float crossingY = direction > 0.0 ? first + 0.25 : first - 0.25;
-    int crossing = int(round(8.0 * edgesAt(vec2(center.x - 0.5, crossingY)).g));
-    if (crossing % 3 != 0 || along < 3)
-    {
-      return float(2 * i);
-    }
-    if (crossing >= 3 || (along != 1 && along != 4))
-    {
-      return float(2 * i + 1);
-    }
-  }
-  return float(2 * maxSearchSteps);
+  return ((bits & lineSide) != 0 ? 3 : 0) + ((bits & opposite) != 0 ? 1 : 0);
 }
 
-// The crossing-edge code 0, 1, 3 or 4 of a fetch weighted 3:1 between the owning pixel's row
-// (or column) and the opposite one. An end outside the image has no crossing edge.
-int crossingCode(float fetched, int endPixel, int size)
+// Distance from the pixel centred at `center` to the end of its line in `direction` (section
+// 4.3.1): a line of top edgels (green) along its row, -1 left, +1 right, or (vertical) one of
+// left edgels (red) along its column, -1 down, +1 up. The crossing edgels are the other kind:
+// left edgels of this row and the one above, or top edgels of this column and the one to the
+// left. The line ends before the first pixel without an edgel or at the first boundary with a
+// crossing edgel. (The chapter's search does not stop at crossing edges; stopping keeps the two
+// outlines of one-pixel-wide lines apart.)
+//
+// Each step covers a pair of pixels, first (2 i + 1 pixels away) and second (one further), with
+// one fetch (edgelBits: a = first, b = second, c and d their neighbours across the line), where
+// the chapter reads two edgels per fetch and the crossing edges with more (section 4.3.2).
+// Going right or down, the pair's first pixel owns the crossing edgels of the boundary before
+// it ("near") and the second those between the two ("mid"); going left or up, the first pixel
+// owns the mid ones and the second those of the boundary after the pair, which is the next
+// pair's near one (for the first pair, the pixel's own edgels, read before).
+//
+// `code` is the crossing-edge code of the boundary where the line ends: the codes of the pair's
+// boundaries are at hand, so that the ends need no reads of their own.
+// A line that goes on past the last step ends at the next pair's near boundary: one more step
+// reads it.
+int searchLine(vec2 center, bool vertical, float direction, out int code)
 {
-  return (endPixel < 0 || endPixel >= size) ? 0 : int(round(4.0 * fetched));
+  bool shifted = vertical ? direction > 0.0 : direction < 0.0;
+  int near = 0;
+  if (shifted)
+  {
+    // This pixel (8) and the pixel above it (2) for its left edgels, this pixel (8) and the one
+    // to its left (4) for its top edgels.
+    ivec2 own = edgelBits(center + vec2(-1.0 / 3.0, 0.2));
+    near = vertical ? crossingCode(own.g, 8, 4) : crossingCode(own.r, 8, 2);
+  }
+  for (int i = 0; i <= maxSearchSteps; ++i)
+  {
+    float along = (vertical ? center.y : center.x) + direction * (float(2 * i + 1) + 1.0 / 3.0);
+    ivec2 bits = edgelBits(vertical ? vec2(center.x - 0.2, along) : vec2(along, center.y + 0.2));
+    int edgels = vertical ? bits.r : bits.g;
+    int crossings = vertical ? bits.g : bits.r;
+    int firstCode = crossingCode(crossings, 8, 2);
+    int secondCode = crossingCode(crossings, 4, 1);
+    if (!shifted)
+    {
+      near = firstCode;
+    }
+    if (near != 0 || (edgels & 8) == 0 || i == maxSearchSteps)
+    {
+      code = near;
+      return 2 * i;
+    }
+    int mid = shifted ? firstCode : secondCode;
+    if (mid != 0 || (edgels & 4) == 0)
+    {
+      code = mid;
+      return 2 * i + 1;
+    }
+    near = secondCode;
+  }
+  return 2 * maxSearchSteps; // not reached
+}
+
+// The crossing-edge code of an end whose crossing edgels belong to pixel `endPixel` (its column
+// or row): none outside the image (where the clamped reads repeat the border's edgels).
+int insideCode(int code, int endPixel, int size)
+{
+  return (endPixel < 0 || endPixel >= size) ? 0 : code;
 }
 
 vec2 area(int e1, int e2, int d1, int d2)
@@ -394,7 +414,8 @@ int runDistance(ivec2 q, int direction)
 #else
   vec2 c = vec2(q) + 0.5;
   float sense = (direction == 0 || direction == 2) ? -1.0 : 1.0;
-  return int(round(direction < 2 ? searchTopEdges(c, sense) : searchLeftEdges(c, sense)));
+  int code;
+  return searchLine(c, direction >= 2, sense, code);
 #endif
 }
 
@@ -637,18 +658,21 @@ void main()
 
   if (top) // edge at the top: a horizontal line, ends to the left and to the right
   {
+    int e1, e2; // the crossing-edge codes of the ends
 #ifdef MLAA_RECURSIVE_DOUBLING
     int left = lengths.x;
     int right = lengths.y;
+    // Read 3:1 between this row and the row above: round(4 v) is the code.
+    float fetchY = center.y + 0.25;
+    e1 = int(round(4.0 * edgesAt(vec2(center.x - float(left), fetchY)).r));
+    e2 = int(round(4.0 * edgesAt(vec2(center.x + float(right + 1), fetchY)).r));
 #else
-    int left = int(round(searchTopEdges(center, -1.0)));
-    int right = int(round(searchTopEdges(center, 1.0)));
+    int left = searchLine(center, false, -1.0, e1);
+    int right = searchLine(center, false, 1.0, e2);
 #endif
+    e1 = insideCode(e1, p.x - left, size.x);
+    e2 = insideCode(e2, p.x + right + 1, size.x);
     bvec2 halved = bvec2(false); // ends of half height (CornerExtrapolation)
-    float fetchY = center.y + 0.25; // 3:1 between this row and the row above
-    int e1 = crossingCode(edgesAt(vec2(center.x - float(left), fetchY)).r, p.x - left, size.x);
-    int e2 = crossingCode(
-      edgesAt(vec2(center.x + float(right + 1), fetchY)).r, p.x + right + 1, size.x);
 #ifdef MLAA_CORNER_EXTRAPOLATION
     if (left + right > 0)
     {
@@ -687,18 +711,20 @@ void main()
 
   if (left) // edge at the left: a vertical line, its first end is the upper one
   {
+    int e1, e2;
 #ifdef MLAA_RECURSIVE_DOUBLING
     int up = lengths.w;
     int down = lengths.z;
-#else
-    int up = int(round(searchLeftEdges(center, 1.0)));
-    int down = int(round(searchLeftEdges(center, -1.0)));
-#endif
-    bvec2 halved = bvec2(false); // ends of half height (CornerExtrapolation)
     float fetchX = center.x - 0.25; // 3:1 between this column and the column to the left
-    int e1 = crossingCode(edgesAt(vec2(fetchX, center.y + float(up))).g, p.y + up, size.y);
-    int e2 = crossingCode(
-      edgesAt(vec2(fetchX, center.y - float(down + 1))).g, p.y - down - 1, size.y);
+    e1 = int(round(4.0 * edgesAt(vec2(fetchX, center.y + float(up))).g));
+    e2 = int(round(4.0 * edgesAt(vec2(fetchX, center.y - float(down + 1))).g));
+#else
+    int up = searchLine(center, true, 1.0, e1);
+    int down = searchLine(center, true, -1.0, e2);
+#endif
+    e1 = insideCode(e1, p.y + up, size.y);
+    e2 = insideCode(e2, p.y - down - 1, size.y);
+    bvec2 halved = bvec2(false); // ends of half height (CornerExtrapolation)
 #ifdef MLAA_CORNER_EXTRAPOLATION
     if (up + down > 0)
     {

@@ -37,7 +37,7 @@
 // the search ends there.
 //
 // Must match the line lengths of vtkImageMLAA (ComputeRowLineLengths and
-// ComputeColumnLineLengths in Filters/vtkMLAALineLengths.cxx) and searchTopEdges/searchLeftEdges in
+// ComputeColumnLineLengths in Filters/vtkMLAALineLengths.cxx) and searchLine in
 // vtkMLAABlendingWeightsFS.glsl; the staircase flags its diagonal lengths
 // (WeightsComputer::ComputeDiagonalLengths in Filters/vtkMLAABlendingWeights.cxx) and
 // isRisingUnit and isFallingUnit in vtkMLAABlendingWeightsFS.glsl.
