@@ -363,17 +363,24 @@ int searchDiagonal(ivec2 p, ivec2 direction, bool rising, bool next, out bool re
   // A loop per kind, each reading what its kind needs: where pixels shaded in lock-step run
   // both sides of a branch, the loop of the other kind ends at once, where a read that depends on
   // the kind would read for both on every step.
+  // The loops read the edgels without the image's bounds: they stop at the last unit inside it
+  // (a falling unit also reads the pixel right of it), where the reads would find none.
+  ivec2 last = ivec2(edgesSize) - ivec2(rising ? 1 : 2, 1);
+  ivec2 room = ivec2(direction.x > 0 ? last.x - p.x : p.x, direction.y > 0 ? last.y - p.y : p.y);
+  int reach = min(maxDistance, min(room.x, room.y));
   int k = 2;
   if (rising)
   {
-    while (k <= maxDistance && isRisingUnit(p + k * direction))
+    while (k <= reach && all(greaterThan(texelFetch(edgesTexture, p + k * direction, 0).rg,
+                           vec2(0.5))))
     {
       ++k;
     }
   }
   else
   {
-    while (k <= maxDistance && isFallingUnit(p + k * direction))
+    while (k <= reach && texelFetch(edgesTexture, p + k * direction, 0).g > 0.5 &&
+      texelFetch(edgesTexture, p + k * direction + ivec2(1, 0), 0).r > 0.5)
     {
       ++k;
     }
