@@ -98,9 +98,10 @@ public:
   vtkTextureObject* Previous = nullptr; // the last unjittered render's frame, antialiased
   vtkTextureObject* Histories[2] = { nullptr, nullptr }; // RGBA32F, read and written in turn
   vtkTextureObject* Counts[2] = { nullptr, nullptr }; // R32F: frames each pixel's history holds
+  vtkTextureObject* Mask = nullptr; // depth: the pixels a moving camera's blend writes (1)
   int Latest = 0;                                    // the one written last
   vtkOpenGLFramebufferObject* Framebuffer = nullptr;
-  ShaderVariant BlendQuad, OutputQuad;
+  ShaderVariant BlendQuad, OutputQuad, MaskQuad;
 
   bool Valid = false;  // the history holds a frame of the last render's size and scene
   int Accumulated = 0; // frames averaged since the last change
@@ -127,9 +128,11 @@ public:
     DeleteObject(this->Histories[1], w);
     DeleteObject(this->Counts[0], w);
     DeleteObject(this->Counts[1], w);
+    DeleteObject(this->Mask, w);
     DeleteObject(this->Framebuffer, w);
     this->BlendQuad.Release(w);
     this->OutputQuad.Release(w);
+    this->MaskQuad.Release(w);
     this->Valid = false;
     this->PreviousValid = false;
     this->Accumulated = 0;
@@ -137,7 +140,7 @@ public:
   bool HoldsResources() const
   {
     return this->Current || this->Previous || this->Histories[0] || this->Histories[1] ||
-      this->Counts[0] || this->Counts[1] || this->Framebuffer;
+      this->Counts[0] || this->Counts[1] || this->Mask || this->Framebuffer;
   }
 };
 
@@ -933,7 +936,8 @@ vtkIdType vtkOpenGLAntialiasingPass::GetTargetMemorySize()
           TextureBytes(this->History->Previous, colorBytes) +
           TextureBytes(this->History->Histories[0], 16) +
           TextureBytes(this->History->Histories[1], 16) +
-          TextureBytes(this->History->Counts[0], 4) + TextureBytes(this->History->Counts[1], 4)
+          TextureBytes(this->History->Counts[0], 4) + TextureBytes(this->History->Counts[1], 4) +
+          TextureBytes(this->History->Mask, 2)
                    : 0) +
     TextureBytes(this->SamplesColorTexture, colorBytes * samples) +
     TextureBytes(this->SamplesDepthTexture, 4 * samples) +
@@ -1146,6 +1150,7 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
     h.Histories[1] = NewTexture(renWin);
     h.Counts[0] = NewTexture(renWin);
     h.Counts[1] = NewTexture(renWin);
+    h.Mask = NewTexture(renWin);
     h.Framebuffer = vtkOpenGLFramebufferObject::New();
     h.Framebuffer->SetContext(renWin);
   }
@@ -1178,6 +1183,7 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
       h.Accumulated = 1;
     }
   }
+  AllocateDepthTarget(h.Mask, width, height, vtkTextureObject::Fixed16);
 
   auto bindTarget = [&](vtkTextureObject* texture) {
     h.Framebuffer->Bind();
@@ -1251,19 +1257,29 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
       const float one[4] = { 1.0f, 1.0f, 1.0f, 1.0f };
       glClearBufferfv(GL_COLOR, 1, one);
     }
-    done = this->ReadyQuad(renWin, h.BlendQuad, vtkAntialiasingTemporalFS,
-      Define("TEMPORAL_REPROJECT", reproject) + Define("TEMPORAL_KEEP_UNCHANGED", keep));
+    float weight = 1.0f;
+    if (h.FrameMode == TemporalHistory::MOVING)
+    {
+      weight = static_cast<float>(this->TemporalWeight);
+    }
+    else if (h.FrameMode == TemporalHistory::STILL)
+    {
+      weight = 1.0f / h.Accumulated; // (the shader weighs by each pixel's own count)
+    }
+    if (reproject)
+    {
+      // The pixels the blend writes, marked (depth 1 over a mask cleared to 0) by a pass of their
+      // own that writes no colour: the blend then runs with the quad's depth (1/2) tested LESS,
+      // so that the depth test drops the others before their shader runs. A blend that discards
+      // them still costs rasterisers that shade pixels in lock-step (llvmpipe) the write of every
+      // pixel of the floating-point history (docs/measurements.md, issue 23).
+      done = this->MarkBlendedPixels(renWin, h.Current);
+    }
+    done = done &&
+      this->ReadyQuad(renWin, h.BlendQuad, vtkAntialiasingTemporalFS,
+        Define("TEMPORAL_REPROJECT", reproject) + Define("TEMPORAL_KEEP_UNCHANGED", keep));
     if (done)
     {
-      float weight = 1.0f;
-      if (h.FrameMode == TemporalHistory::MOVING)
-      {
-        weight = static_cast<float>(this->TemporalWeight);
-      }
-      else if (h.FrameMode == TemporalHistory::STILL)
-      {
-        weight = 1.0f / h.Accumulated; // (the shader weighs by each pixel's own count)
-      }
       // While the scene is still, the frames averaged are the jittered renders themselves: their
       // mean is the supersampled picture, which the method's own blending would blur; the
       // history starts from the method's frame (its error then weighs 1 / AccumulatedFrames).
@@ -1307,6 +1323,11 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
         texture->second->Deactivate();
       }
     }
+    if (reproject)
+    {
+      ostate->vtkglDisable(GL_DEPTH_TEST);
+      h.Framebuffer->RemoveDepthAttachment();
+    }
   }
   ostate->PopFramebufferBindings();
   if (!done)
@@ -1338,6 +1359,41 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
   h.OutputQuad.Quad->Render();
   this->DepthTexture->Deactivate();
   h.Histories[h.Latest]->Deactivate();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLAntialiasingPass::MarkBlendedPixels(
+  vtkOpenGLRenderWindow* renWin, vtkTextureObject* current)
+{
+  TemporalHistory& h = *this->History;
+  vtkOpenGLState* ostate = renWin->GetState();
+  if (!this->ReadyQuad(renWin, h.MaskQuad, vtkAntialiasingTemporalFS,
+        Define("TEMPORAL_REPROJECT", true) + Define("TEMPORAL_MASK", true)))
+  {
+    return false;
+  }
+  h.Framebuffer->AddDepthAttachment(h.Mask);
+  ostate->vtkglClearDepth(0.0);
+  ostate->vtkglDepthMask(GL_TRUE);
+  ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_ALWAYS);
+  ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  vtkShaderProgram* program = h.MaskQuad.Quad->Program;
+  current->Activate();
+  this->ColorTexture->Activate();
+  this->DepthTexture->Activate();
+  program->SetUniformi("currentTexture", current->GetTextureUnit());
+  program->SetUniformi("frameTexture", this->ColorTexture->GetTextureUnit());
+  program->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
+  h.MaskQuad.Quad->Render();
+  this->DepthTexture->Deactivate();
+  this->ColorTexture->Deactivate();
+  current->Deactivate();
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  ostate->vtkglDepthMask(GL_FALSE);
+  ostate->vtkglDepthFunc(GL_LESS);
   return true;
 }
 

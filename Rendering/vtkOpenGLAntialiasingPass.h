@@ -418,6 +418,10 @@ private:
   // Antialiases the frame into the history's current target, blends it with the history and
   // writes the result (and the delegate's depth) into the target viewport.
   bool AntialiasTemporal(const Frame& frame);
+  // The mask of the moving camera's blend (TEMPORAL_MASK in vtkAntialiasingTemporalFS.glsl):
+  // marks the pixels whose blend is not the current frame `current` in the history's depth
+  // attachment, and leaves the depth test on for the blend.
+  bool MarkBlendedPixels(vtkOpenGLRenderWindow* renWin, vtkTextureObject* current);
   // Renders the delegate into `color` and `depth` through `fbo` (cleared to transparent black
   // first when compositing over the target).
   void RenderDelegateToTextures(const vtkRenderState* s, vtkOpenGLFramebufferObject* fbo,

@@ -21,6 +21,11 @@
 //                       point that was outside the previous view takes the current frame alone.
 //                       The current frame's weight rises with the distance the history moved,
 //                       from currentWeight at rest to MovingWeight at MovingPixels and more.
+//   TEMPORAL_MASK       (with TEMPORAL_REPROJECT) writes no colour: marks with depth 1, over a
+//                       mask cleared to 0, the pixels the reprojecting blend does not discard
+//                       (flatFrame), so that the blend then runs on them only, the depth test
+//                       dropping the others before their shader runs
+//                       (vtkOpenGLAntialiasingPass::MarkBlendedPixels).
 //   TEMPORAL_KEEP_UNCHANGED  actors moved under a still camera (currentTexture is the frame
 //                       antialiased by the method): nothing is reprojected; a pixel whose 3 x 3
 //                       neighbourhood in the method's frame equals the last unjittered render's
@@ -112,6 +117,16 @@ void CurrentRange(ivec2 p, ivec2 size, out vec4 lo, out vec4 hi)
   }
 }
 
+// Where the rendered 3 x 3 neighbourhood is one colour and the method left the pixel at that
+// colour, the clamp takes any history to that colour: the result is the current frame, which
+// the pass has already copied into the new history (with a count of 1), so the history is
+// neither located nor read there (flat regions, most of a background).
+bool flatFrame(ivec2 p, ivec2 size, vec4 current, out vec4 lo, out vec4 hi)
+{
+  CurrentRange(p, size, lo, hi);
+  return lo == hi && current == lo;
+}
+
 // The nearest point of the 3 x 3 neighbourhood of `p` (its depth `depth` on entry): its motion
 // moves this pixel. An antialiased silhouette pixel, which holds some of the object, moves with
 // the object, not with what is behind it (the background, whose depth is the far plane, moves
@@ -140,6 +155,16 @@ void main()
 {
   ivec2 size = textureSize(depthTexture, 0);
   ivec2 p = ivec2(texCoord * vec2(size));
+#ifdef TEMPORAL_MASK
+  vec4 range[2];
+  if (flatFrame(p, size, texelFetch(currentTexture, p, 0), range[0], range[1]))
+  {
+    discard;
+  }
+  gl_FragDepth = 1.0;
+  gl_FragData[0] = vec4(0.0); // not written (colour writes are off)
+  return;
+#endif
   float depth = texelFetch(depthTexture, p, 0).r;
 #ifdef TEMPORAL_OUTPUT
   gl_FragData[0] = texelFetch(historyTexture, p, 0);
@@ -170,15 +195,10 @@ void main()
   gl_FragData[0] = unchanged ? texelFetch(historyTexture, p, 0) : current;
   gl_FragData[1] = unchanged ? texelFetch(countTexture, p, 0) : vec4(1.0);
 #elif defined(TEMPORAL_REPROJECT)
+  // The mask pass (TEMPORAL_MASK) left out the pixels discarded here; the test stays, so that
+  // the blend is the same without the mask.
   vec4 lo, hi;
-  CurrentRange(p, size, lo, hi);
-  // Where the rendered 3 x 3 neighbourhood is one colour and the method left the pixel at that
-  // colour, the clamp takes any history to that colour: the result is the current frame, which
-  // the pass has already copied into the target (with a count of 1), so the history is neither
-  // located nor read there (flat regions, most of a background). Discarded, not branched over:
-  // rasterisers that shade pixels in lock-step (llvmpipe) run both sides of a branch, but stop
-  // shading a group of pixels that are all discarded.
-  if (lo == hi && current == lo)
+  if (flatFrame(p, size, current, lo, hi))
   {
     discard;
   }
