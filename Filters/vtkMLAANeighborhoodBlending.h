@@ -45,26 +45,22 @@ struct BlendSettings
 };
 
 /**
- * Row y of the output: each pixel of `out` (columns out.X0..X1) mixed with its four neighbours
- * by the weights, c' = sum_k a_k ((1 - a_k) c + a_k c_k) / sum_k a_k, which for a single edge is
- * equation 4.1; pixels without weights are copied. `pixel(x, y)` gives the input pixel (all
- * components); only neighbours with a weight are read, and those lie within the weights' extent.
- * With DominantDirectionBlending, a pixel on both a horizontal and a vertical line blends along
- * the one with the larger weight only. With straight alpha, the colour channels are averaged
- * weighted by alpha as well (premultiply, blend, divide by the blended alpha), so the colour of
- * transparent pixels never leaks into their neighbours; where the alphas that take part are all
- * equal, that changes nothing and the plain formula is used.
- */
-/**
- * A blend `r` of channel k that came out infinite or NaN, recomputed where every value taking
- * part (the pixel's `own` and its neighbours with a weight `a`) is finite: `blend(scale)` is the
- * same blend of the values times `scale`; with 1/4 its sums cannot overflow, and the result is
- * scaled back and kept within the type's range (a weighted mean of finite values is finite).
- * Non-finite values taking part leave `r` as it is.
+ * Channel k of a blend: `blend(scale)` computes it from the values taking part (the pixel's
+ * `own` and its neighbours with a weight `a`) times `scale`. It is called with 1; for a
+ * floating-point type, a result that came out infinite or NaN although every value taking part
+ * is finite (values near the type's limit overflow the weighted sums) is computed again with
+ * 1/4, where the sums cannot overflow (the weights add up to at most 4), scaled back and kept
+ * within the type's range (a weighted mean of finite values is finite). Non-finite values taking
+ * part give what the plain formula gives.
  */
 template <typename T, typename Acc, typename Blend>
-Acc RescaledBlend(Acc r, Blend blend, T own, const T* const neighbours[4], const Acc a[4], int k)
+Acc BlendChannel(Blend blend, T own, const T* const neighbours[4], const Acc a[4], int k)
 {
+  const Acc r = blend(Acc(1));
+  if (!std::is_floating_point<T>::value || std::isfinite(r))
+  {
+    return r;
+  }
   bool finite = std::isfinite(static_cast<double>(own));
   for (int n = 0; n < 4; ++n)
   {
@@ -78,6 +74,17 @@ Acc RescaledBlend(Acc r, Blend blend, T own, const T* const neighbours[4], const
   return std::max(-limit, std::min(limit, Acc(4) * blend(Acc(0.25))));
 }
 
+/**
+ * Row y of the output: each pixel of `out` (columns out.X0..X1) mixed with its four neighbours
+ * by the weights, c' = sum_k a_k ((1 - a_k) c + a_k c_k) / sum_k a_k, which for a single edge is
+ * equation 4.1; pixels without weights are copied. `pixel(x, y)` gives the input pixel (all
+ * components); only neighbours with a weight are read, and those lie within the weights' extent.
+ * With DominantDirectionBlending, a pixel on both a horizontal and a vertical line blends along
+ * the one with the larger weight only. With straight alpha, the colour channels are averaged
+ * weighted by alpha as well (premultiply, blend, divide by the blended alpha), so the colour of
+ * transparent pixels never leaks into their neighbours; where the alphas that take part are all
+ * equal, that changes nothing and the plain formula is used.
+ */
 template <typename T, typename Acc, typename PixelAt>
 void BlendRow(int y, const Rect& out, int components, const EdgesBuffer& edges,
   const WeightsBuffer& weights, const BlendSettings& settings, PixelAt pixel, T* output)
@@ -207,46 +214,34 @@ void BlendRow(int y, const Rect& out, int components, const EdgesBuffer& edges,
         };
         const Acc ownCoverage = coverage(p);
         Acc mixedAlpha = 0;
-        Acc mixed[3] = { 0, 0, 0 };
+        Acc selfShare[4] = { 0, 0, 0, 0 };
+        Acc otherShare[4] = { 0, 0, 0, 0 };
         for (int n = 0; n < 4; ++n)
         {
           if (a[n] > Acc(0))
           {
-            const Acc selfShare = a[n] * (Acc(1) - a[n]) * ownCoverage;
-            const Acc otherShare = a[n] * a[n] * coverage(neighbours[n]);
-            mixedAlpha += selfShare + otherShare;
-            for (int k = 0; k < c - 1; ++k)
-            {
-              mixed[k] += selfShare * static_cast<Acc>(p[k]) +
-                otherShare * static_cast<Acc>(neighbours[n][k]);
-            }
+            selfShare[n] = a[n] * (Acc(1) - a[n]) * ownCoverage;
+            otherShare[n] = a[n] * a[n] * coverage(neighbours[n]);
+            mixedAlpha += selfShare[n] + otherShare[n];
           }
         }
         if (mixedAlpha > Acc(0))
         {
           for (int k = 0; k < c - 1; ++k)
           {
-            Acc r = mixed[k] / mixedAlpha;
-            if (std::is_floating_point<T>::value && !std::isfinite(r))
-            {
-              // Finite values near the type's limit overflow the sums: the same blend of the
-              // values scaled by 1/4 (the shares add up to at most 4), scaled back.
-              r = RescaledBlend<T, Acc>(r, [&](Acc scale) {
-                Acc m = 0;
-                for (int n = 0; n < 4; ++n)
+            auto mix = [&](Acc scale) {
+              Acc m = 0;
+              for (int n = 0; n < 4; ++n)
+              {
+                if (a[n] > Acc(0))
                 {
-                  if (a[n] > Acc(0))
-                  {
-                    const Acc selfShare = a[n] * (Acc(1) - a[n]) * ownCoverage;
-                    const Acc otherShare = a[n] * a[n] * coverage(neighbours[n]);
-                    m += selfShare * (scale * static_cast<Acc>(p[k])) +
-                      otherShare * (scale * static_cast<Acc>(neighbours[n][k]));
-                  }
+                  m += selfShare[n] * (scale * static_cast<Acc>(p[k])) +
+                    otherShare[n] * (scale * static_cast<Acc>(neighbours[n][k]));
                 }
-                return m / mixedAlpha;
-              }, p[k], neighbours, a, k);
-            }
-            q[k] = ConvertBlended<T>(r);
+              }
+              return m / mixedAlpha;
+            };
+            q[k] = ConvertBlended<T>(BlendChannel<T, Acc>(mix, p[k], neighbours, a, k));
           }
         }
         // else: everything that takes part is fully transparent; the colour stays.
@@ -254,35 +249,19 @@ void BlendRow(int y, const Rect& out, int components, const EdgesBuffer& edges,
     }
     for (int k = first; k < c; ++k)
     {
-      const Acc v = static_cast<Acc>(p[k]);
-      Acc blended = 0;
-      for (int n = 0; n < 4; ++n)
-      {
-        if (a[n] > Acc(0))
+      auto blend = [&](Acc scale) {
+        const Acc v = scale * static_cast<Acc>(p[k]);
+        Acc b = 0;
+        for (int n = 0; n < 4; ++n)
         {
-          blended += a[n] * ((Acc(1) - a[n]) * v + a[n] * static_cast<Acc>(neighbours[n][k]));
-        }
-      }
-      Acc r = blended / sum;
-      if (std::is_floating_point<T>::value && !std::isfinite(r))
-      {
-        // Finite values near the type's limit overflow the sum: the same blend of the values
-        // scaled by 1/4 (the weights add up to at most 4), scaled back.
-        r = RescaledBlend<T, Acc>(r, [&](Acc scale) {
-          Acc b = 0;
-          for (int n = 0; n < 4; ++n)
+          if (a[n] > Acc(0))
           {
-            if (a[n] > Acc(0))
-            {
-              b += a[n] *
-                ((Acc(1) - a[n]) * (scale * v) +
-                  a[n] * (scale * static_cast<Acc>(neighbours[n][k])));
-            }
+            b += a[n] * ((Acc(1) - a[n]) * v + a[n] * (scale * static_cast<Acc>(neighbours[n][k])));
           }
-          return b / sum;
-        }, p[k], neighbours, a, k);
-      }
-      q[k] = ConvertBlended<T>(r);
+        }
+        return b / sum;
+      };
+      q[k] = ConvertBlended<T>(BlendChannel<T, Acc>(blend, p[k], neighbours, a, k));
     }
   }
 }
