@@ -323,8 +323,27 @@ bool leftAt(ivec2 p) { return edgelsAt(p).r > 0.5; }
 
 // A unit of a rising staircase (up and to the right) is a pixel with both edgels; a unit of a
 // falling one, named by its pixel q, is q's top edgel and its right neighbour's left edgel.
-bool isRisingUnit(ivec2 p) { return all(greaterThan(edgelsAt(p), vec2(0.5))); }
-bool isFallingUnit(ivec2 q) { return topAt(q) && leftAt(q + ivec2(1, 0)); }
+// The unchecked tests read without the image's bounds: their caller keeps every pixel they read
+// inside it; the checked ones find no unit outside it.
+bool risingUnitInside(ivec2 p)
+{
+  return all(greaterThan(texelFetch(edgesTexture, p, 0).rg, vec2(0.5)));
+}
+bool fallingUnitInside(ivec2 q)
+{
+  return texelFetch(edgesTexture, q, 0).g > 0.5 &&
+    texelFetch(edgesTexture, q + ivec2(1, 0), 0).r > 0.5;
+}
+bool isRisingUnit(ivec2 p)
+{
+  return all(greaterThanEqual(p, ivec2(0))) && all(lessThan(p, ivec2(edgesSize))) &&
+    risingUnitInside(p);
+}
+bool isFallingUnit(ivec2 q)
+{
+  return all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q + ivec2(1, 0), ivec2(edgesSize))) &&
+    fallingUnitInside(q);
+}
 
 // Whether the neighbours of unit q along its staircase, towards its first end (-x) and its
 // second, are units: read from the diagonal lengths (a count of at least 1) where they were
@@ -371,16 +390,14 @@ int searchDiagonal(ivec2 p, ivec2 direction, bool rising, bool next, out bool re
   int k = 2;
   if (rising)
   {
-    while (k <= reach && all(greaterThan(texelFetch(edgesTexture, p + k * direction, 0).rg,
-                           vec2(0.5))))
+    while (k <= reach && risingUnitInside(p + k * direction))
     {
       ++k;
     }
   }
   else
   {
-    while (k <= reach && texelFetch(edgesTexture, p + k * direction, 0).g > 0.5 &&
-      texelFetch(edgesTexture, p + k * direction + ivec2(1, 0), 0).r > 0.5)
+    while (k <= reach && fallingUnitInside(p + k * direction))
     {
       ++k;
     }
