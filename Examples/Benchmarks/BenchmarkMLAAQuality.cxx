@@ -404,8 +404,15 @@ void Usage(const char* program)
   {
     std::cout << " " << name;
   }
+  std::cout << ");\n"
+            << "                    \"all\" and \"held-out\" stand for those lists; held-out scenes,\n"
+            << "                    kept out of every default so that nothing is tuned on them:";
+  for (const auto& name : vtkMLAAScenes::HeldOutNames())
+  {
+    std::cout << " " << name;
+  }
   std::cout
-    << ")\n"
+    << "\n"
     << "  --samples N       reference is N x N shifted renders (default 8)\n"
     << "  --output-dir DIR  where the CSV and the crop mosaics go (default .)\n"
     << "  --crop WxH        crop size before magnification (default 100x75)\n"
@@ -443,7 +450,15 @@ int main(int argc, char* argv[])
     }
     else if (arg == "--scenes" && hasValue)
     {
-      scenes = mlaaBenchmark::SplitList(argv[++i]);
+      // "all" and "held-out" stand for those lists.
+      scenes.clear();
+      for (const std::string& name : mlaaBenchmark::SplitList(argv[++i]))
+      {
+        const std::vector<std::string> group = name == "all" ? vtkMLAAScenes::Names()
+          : name == "held-out"                               ? vtkMLAAScenes::HeldOutNames()
+                                                             : std::vector<std::string>{ name };
+        scenes.insert(scenes.end(), group.begin(), group.end());
+      }
     }
     else if (arg == "--samples" && hasValue && mlaaBenchmark::ParsePositive(argv[i + 1], samples))
     {

@@ -136,6 +136,10 @@ int main(int argc, char* argv[])
       {
         std::cout << name << ": " << vtkMLAAScenes::Describe(name) << "\n";
       }
+      for (const auto& name : vtkMLAAScenes::HeldOutNames())
+      {
+        std::cout << name << " (held out): " << vtkMLAAScenes::Describe(name) << "\n";
+      }
       return EXIT_SUCCESS;
     }
     else if (arg == "--scene" && hasValue)

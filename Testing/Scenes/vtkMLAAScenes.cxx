@@ -36,6 +36,7 @@
 #include "vtkTextProperty.h"
 #include "vtkTexture.h"
 #include "vtkTexturedSphereSource.h"
+#include "vtkTrivialProducer.h"
 #include "vtkTubeFilter.h"
 #include "vtkWindowToImageFilter.h"
 
@@ -626,6 +627,162 @@ void PointCloud(vtkRenderer* renderer)
   renderer->ResetCameraClippingRange();
 }
 
+// Held-out scenes (vtkMLAAScenes::HeldOutNames): kinds of pictures the main set does not have,
+// kept out of the default lists so that nothing is tuned on them.
+
+void SurfaceWithEdges(vtkRenderer* renderer)
+{
+  // ParaView's "Surface With Edges": a shaded superquadric with its mesh edges drawn over it
+  // (VTK 9.1 draws such edges in the surface's fragment shader, already smoothed).
+  renderer->SetBackground(0.32, 0.34, 0.43);
+  vtkNew<vtkSuperquadricSource> quadric;
+  quadric->SetThetaResolution(18);
+  quadric->SetPhiResolution(12);
+  quadric->SetThetaRoundness(0.3);
+  quadric->SetPhiRoundness(1.4);
+  const double sand[3] = { 0.9, 0.85, 0.7 };
+  auto actor = AddActor(renderer, quadric, sand);
+  actor->GetProperty()->EdgeVisibilityOn();
+  actor->GetProperty()->SetEdgeColor(0.1, 0.1, 0.3);
+  actor->RotateX(35.0);
+  actor->RotateY(-25.0);
+  renderer->ResetCamera();
+  renderer->GetActiveCamera()->Zoom(1.4);
+  renderer->ResetCameraClippingRange();
+}
+
+void Molecule(vtkRenderer* renderer)
+{
+  // Shaded spheres coloured by position over black: overlapping silhouettes, and dark spheres
+  // whose shaded rims fade into the background.
+  renderer->SetBackground(0.0, 0.0, 0.0);
+  vtkNew<vtkMinimalStandardRandomSequence> random;
+  random->SetSeed(77);
+  vtkNew<vtkPointSource> atoms;
+  atoms->SetRandomSequence(random);
+  atoms->SetRadius(1.3);
+  atoms->SetNumberOfPoints(140);
+  atoms->SetDistributionToUniform();
+  vtkNew<vtkElevationFilter> position;
+  position->SetInputConnection(atoms->GetOutputPort());
+  position->SetLowPoint(-1.3, -1.3, 0.0);
+  position->SetHighPoint(1.3, 1.3, 0.0);
+  vtkNew<vtkSphereSource> ball;
+  ball->SetThetaResolution(24);
+  ball->SetPhiResolution(16);
+  vtkNew<vtkGlyph3D> glyphs;
+  glyphs->SetInputConnection(position->GetOutputPort());
+  glyphs->SetSourceConnection(ball->GetOutputPort());
+  glyphs->SetScaleFactor(0.28);
+  glyphs->SetScaleModeToDataScalingOff();
+  glyphs->SetColorModeToColorByScalar();
+  vtkNew<vtkLookupTable> colors;
+  colors->SetHueRange(0.6, 0.0);
+  colors->SetValueRange(0.25, 0.9);
+  colors->Build();
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(glyphs->GetOutputPort());
+  mapper->SetScalarRange(0.0, 1.0);
+  mapper->SetLookupTable(colors);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  renderer->AddActor(actor);
+  renderer->ResetCamera();
+  renderer->GetActiveCamera()->Zoom(1.3);
+  renderer->ResetCameraClippingRange();
+}
+
+void Terrain(vtkRenderer* renderer)
+{
+  // A height field coloured by elevation, seen obliquely, with 1-pixel contour lines on it:
+  // slopes, smooth colour ramps and curved thin lines.
+  renderer->SetBackground(0.75, 0.82, 0.9);
+  const int n = 120;
+  vtkNew<vtkPoints> points;
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      const double x = -2.0 + 4.0 * i / (n - 1.0);
+      const double y = -2.0 + 4.0 * j / (n - 1.0);
+      const double hill = std::exp(-2.0 * ((x - 0.5) * (x - 0.5) + y * y));
+      points->InsertNextPoint(x, y, 0.35 * std::sin(1.7 * x) * std::cos(1.3 * y) + 0.25 * hill);
+    }
+  }
+  vtkNew<vtkCellArray> quads;
+  for (int j = 0; j + 1 < n; ++j)
+  {
+    for (int i = 0; i + 1 < n; ++i)
+    {
+      const vtkIdType quad[4] = { j * n + i, j * n + i + 1, (j + 1) * n + i + 1, (j + 1) * n + i };
+      quads->InsertNextCell(4, quad);
+    }
+  }
+  vtkNew<vtkPolyData> surface;
+  surface->SetPoints(points);
+  surface->SetPolys(quads);
+  vtkNew<vtkElevationFilter> elevation;
+  elevation->SetInputData(surface);
+  elevation->SetLowPoint(0.0, 0.0, -0.6);
+  elevation->SetHighPoint(0.0, 0.0, 0.6);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(elevation->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  renderer->AddActor(actor);
+  vtkNew<vtkContourFilter> contours;
+  contours->SetInputConnection(elevation->GetOutputPort());
+  contours->GenerateValues(12, 0.05, 0.95);
+  const double ink[3] = { 0.1, 0.1, 0.1 };
+  auto lines = AddActor(renderer, contours, ink);
+  lines->GetProperty()->LightingOff();
+  lines->SetPosition(0.0, 0.0, 0.004); // just above the surface
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(0.0, -5.0, 3.2);
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  renderer->ResetCameraClippingRange();
+}
+
+void Streamlines(vtkRenderer* renderer)
+{
+  // Forty curved 1-pixel polylines traced through a swirling field, in perspective over white.
+  renderer->SetBackground(1.0, 1.0, 1.0);
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> lines;
+  for (int c = 0; c < 40; ++c)
+  {
+    const int n = 300;
+    lines->InsertNextCell(n);
+    double x = -1.5 + 3.0 * ((c * 37) % 40) / 40.0;
+    double y = -1.2 + 2.4 * ((c * 13) % 40) / 40.0;
+    double z = 0.3 * std::sin(c);
+    for (int i = 0; i < n; ++i)
+    {
+      lines->InsertCellPoint(points->InsertNextPoint(x, y, z));
+      const double vx = -y + 0.3 * std::sin(2.0 * z);
+      const double vy = 0.8 * x + 0.2;
+      const double vz = 0.2 * std::cos(x);
+      const double step = 0.012 / (std::sqrt(vx * vx + vy * vy + vz * vz) + 1e-9);
+      x += step * vx;
+      y += step * vy;
+      z += step * vz;
+    }
+  }
+  vtkNew<vtkPolyData> curves;
+  curves->SetPoints(points);
+  curves->SetLines(lines);
+  vtkNew<vtkTrivialProducer> producer;
+  producer->SetOutput(curves);
+  const double blue[3] = { 0.1, 0.25, 0.6 };
+  auto actor = AddActor(renderer, producer, blue);
+  actor->GetProperty()->LightingOff();
+  actor->RotateX(-30.0);
+  renderer->ResetCamera();
+  renderer->GetActiveCamera()->Zoom(1.2);
+  renderer->ResetCameraClippingRange();
+}
+
 struct Scene
 {
   std::string Description;
@@ -652,6 +809,37 @@ const std::vector<std::pair<std::string, Scene>>& Scenes()
   };
   return scenes;
 }
+
+const std::vector<std::pair<std::string, Scene>>& HeldOutScenes()
+{
+  static const std::vector<std::pair<std::string, Scene>> scenes = {
+    { "surface-edges",
+      { "a shaded superquadric with its mesh edges drawn over it (ParaView's Surface With Edges)",
+        SurfaceWithEdges } },
+    { "molecule", { "140 shaded spheres coloured by position over black", Molecule } },
+    { "terrain",
+      { "an elevation-coloured height field seen obliquely, with 1-pixel contour lines",
+        Terrain } },
+    { "streamlines", { "forty curved 1-pixel polylines in perspective over white", Streamlines } },
+  };
+  return scenes;
+}
+
+// The scene called `name`, in either list; null for an unknown name.
+const Scene* Find(const std::string& name)
+{
+  for (const auto* list : { &Scenes(), &HeldOutScenes() })
+  {
+    for (const auto& scene : *list)
+    {
+      if (scene.first == name)
+      {
+        return &scene.second;
+      }
+    }
+  }
+  return nullptr;
+}
 }
 
 namespace vtkMLAAScenes
@@ -666,29 +854,30 @@ std::vector<std::string> Names()
   return names;
 }
 
+std::vector<std::string> HeldOutNames()
+{
+  std::vector<std::string> names;
+  for (const auto& scene : HeldOutScenes())
+  {
+    names.push_back(scene.first);
+  }
+  return names;
+}
+
 std::string Describe(const std::string& name)
 {
-  for (const auto& scene : Scenes())
-  {
-    if (scene.first == name)
-    {
-      return scene.second.Description;
-    }
-  }
-  return std::string();
+  const Scene* scene = Find(name);
+  return scene ? scene->Description : std::string();
 }
 
 bool Build(const std::string& name, vtkRenderer* renderer)
 {
-  for (const auto& scene : Scenes())
+  const Scene* scene = Find(name);
+  if (scene)
   {
-    if (scene.first == name)
-    {
-      scene.second.Build(renderer);
-      return true;
-    }
+    scene->Build(renderer);
   }
-  return false;
+  return scene != nullptr;
 }
 
 vtkSmartPointer<vtkRenderWindow> NewOffscreenWindow(int width, int height)
