@@ -79,6 +79,21 @@ void vtkMLAAAreaTexture::ComputeAreas(
   const double middle = 0.5 * length;
   const double x0 = left;
   const double x1 = left + 1.0;
+  // Crossing edges on both sides at both ends (code 4 at both): the run of a one-pixel-thin
+  // feature between two of its diagonal steps (the apex of a thin curve, or thin lines and gaps
+  // side by side), read only where one of the two pixels is that thin (the weights stages test
+  // it). The pixels cannot tell which of the two is the feature stepping on, so both take the
+  // area of the U shape that would be its (the heights 1/2 at both ends): the sum of the
+  // readings into either side, each at most one pixel.
+  if (e1 == 4 && e2 == 4)
+  {
+    double opposite[2], owning[2];
+    ComputeAreas(1, 1, left, right, opposite, across, along);
+    ComputeAreas(3, 3, left, right, owning, across, along);
+    areas[0] = std::min(1.0, opposite[0] + owning[0]);
+    areas[1] = std::min(1.0, opposite[1] + owning[1]);
+    return;
+  }
   double h1 = EndHeight(e1);
   double h2 = EndHeight(e2);
   // Crossing edges on both sides at one end (code 4) and on one side at the other: the line

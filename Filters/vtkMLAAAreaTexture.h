@@ -29,9 +29,14 @@
  * L shape. An end with no crossing edge adds nothing. An end with crossing edges on both sides
  * (code 4) is where a one-pixel-wide line (or gap) steps on diagonally: with a one-sided
  * crossing edge at the other end, it acts as a crossing edge on the side opposite to that one,
- * which makes the pattern the Z that the outline of such a line is; with nothing or code 4 at the
- * other end (a + junction, the end of a thin line) no slope can be told and it adds nothing. The
- * chapter leaves code 4's areas to its web material; this reading is the project's. The areas
+ * which makes the pattern the Z that the outline of such a line is; with nothing at the other end
+ * (the end of a thin line) no slope can be told and it adds nothing. Code 4 at both ends is the
+ * run of a thin feature between two of its diagonal steps (thin lines and gaps side by side, the
+ * apex of a thin curve), or a side between two junctions of wider shapes (a checkerboard's
+ * corners): the weights stages use this cell only where one of the two pixels is one pixel thin
+ * across the edge, and since the pixels cannot tell which of the two features steps on at
+ * either end, both take the area of the U shape (heights 1/2 at both ends) that would be its.
+ * The chapter leaves code 4's areas to its web material; this reading is the project's. The areas
  * are exact integrals of this piecewise-linear line over the pixel, evaluated in double
  * precision; an L shape gives the trapeze area 1/2 (1 - (2p + 1) / L) of "Morphological
  * antialiasing and topological reconstruction" (section 3.4) for the p-th pixel from its crossing

@@ -274,6 +274,10 @@ public:
           half2 = second.Half;
         }
       }
+      if (e1 == 4 && e2 == 4 && !this->ThinAcross(x, y, false))
+      {
+        e1 = e2 = 0; // junctions of wider shapes at both ends: no slope
+      }
       this->LookUpArea(e1, e2, leftEnd, rightEnd, half1, half2, w);
     }
     if (left)
@@ -308,6 +312,10 @@ public:
           half1 = first.Half;
           half2 = second.Half;
         }
+      }
+      if (e1 == 4 && e2 == 4 && !this->ThinAcross(x, y, true))
+      {
+        e1 = e2 = 0;
       }
       this->LookUpArea(e1, e2, up, down, half1, half2, w + 2);
     }
@@ -571,7 +579,7 @@ private:
     return 3 * this->TopAt(ownX, y) + this->TopAt(oppositeX, y);
   }
 
-  // Edgels for the diagonal search: none outside the image.
+  // Edgels for the diagonal search and ThinAcross: none outside the image.
   int DiagonalTopAt(int x, int y) const
   {
     return this->Whole.Contains(x, y) ? this->TopAt(x, y) : 0;
@@ -579,6 +587,16 @@ private:
   int DiagonalLeftAt(int x, int y) const
   {
     return this->Whole.Contains(x, y) ? this->LeftAt(x, y) : 0;
+  }
+  // Whether one of the two pixels across the edgel of (x, y), horizontal (this pixel and the one
+  // above it) or vertical (this pixel and the one left of it), is one pixel thin across it: it
+  // has an edgel on its far side too. A line with crossing edges on both sides at both ends
+  // (code 4 at both) is read as a thin feature's run only there (vtkMLAAAreaTexture); between
+  // the junctions of wider shapes (a checkerboard's corners, say) it keeps no slope.
+  bool ThinAcross(int x, int y, bool vertical) const
+  {
+    return vertical ? (this->DiagonalLeftAt(x + 1, y) || this->DiagonalLeftAt(x - 1, y))
+                    : (this->DiagonalTopAt(x, y - 1) || this->DiagonalTopAt(x, y + 1));
   }
   // A unit of a rising staircase: a pixel with both edgels. A unit of a falling one, named by its
   // pixel q: q's top edgel and its right neighbour's left edgel.

@@ -321,6 +321,24 @@ vec2 edgelsAt(ivec2 p)
 bool topAt(ivec2 p) { return edgelsAt(p).g > 0.5; }
 bool leftAt(ivec2 p) { return edgelsAt(p).r > 0.5; }
 
+// Whether one of the two pixels across the edgel of p, horizontal (p and the pixel above) or
+// vertical (p and the pixel left of it), is one pixel thin across it: it has an edgel on its far
+// side too. A line with code 4 at both ends is read as a thin feature's run only there
+// (vtkMLAAAreaTexture); between the junctions of wider shapes it keeps no slope
+// (WeightsComputer::ThinAcross).
+// With the sample areas of a multisampled render (MLAA_SAMPLE_AREAS) it is never read so: the
+// samples themselves resolve how much of a pixel thin features cover, where the single-sample
+// reading can only share it out evenly.
+bool thinAcross(ivec2 p, bool vertical)
+{
+#ifdef MLAA_SAMPLE_AREAS
+  return false;
+#else
+  return vertical ? (leftAt(p + ivec2(1, 0)) || leftAt(p - ivec2(1, 0)))
+                  : (topAt(p - ivec2(0, 1)) || topAt(p + ivec2(0, 1)));
+#endif
+}
+
 // A unit of a rising staircase (up and to the right) is a pixel with both edgels; a unit of a
 // falling one, named by its pixel q, is q's top edgel and its right neighbour's left edgel.
 // The unchecked tests read without the image's bounds: their caller keeps every pixel they read
@@ -729,6 +747,10 @@ void main()
       }
     }
 #endif
+    if (e1 == 4 && e2 == 4 && !thinAcross(p, false))
+    {
+      e1 = e2 = 0; // junctions of wider shapes at both ends: no slope
+    }
     weights.rg = any(halved) ? area(e1, e2, left, right, halved)
                              : lineArea(p, p + ivec2(0, 1), false, e1, e2, left, right);
   }
@@ -781,6 +803,10 @@ void main()
       }
     }
 #endif
+    if (e1 == 4 && e2 == 4 && !thinAcross(p, true))
+    {
+      e1 = e2 = 0;
+    }
     weights.ba = any(halved) ? area(e1, e2, up, down, halved)
                              : lineArea(p, p - ivec2(1, 0), true, e1, e2, up, down);
   }

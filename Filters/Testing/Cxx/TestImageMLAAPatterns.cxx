@@ -1,7 +1,8 @@
 // SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
 // SPDX-License-Identifier: BSD-3-Clause
 // Exact expected pixels of vtkImageMLAA on small synthetic images: a straight step edge, the
-// L, U and Z patterns of the GPU Pro 2 chapter, a line longer than the search distance,
+// L, U and Z patterns of the GPU Pro 2 chapter, thin lines alone and side by side, a line
+// longer than the search distance,
 // one-pixel-wide images, and a diagonal staircase (DiagonalDetection), whose effect on the error
 // against exact coverage is measured too. The expected blending weights were worked out by hand from sections
 // 4.3.1-4.3.3 (search, crossing edges, areas); see the comments at each case.
@@ -245,6 +246,39 @@ void ThinLine()
   MLAA_CHECK(GetValue(ChapterBlending(in), 4, 2) == 175.0);
 }
 
+void ThinLinesSideBySide()
+{
+  // Two one-pixel-wide black lines rising one row every 4 pixels, two rows apart: (x, 2 + x / 4)
+  // and (x, 4 + x / 4), with a one-pixel white gap between them. Over x = 4..7 the gap is row 4;
+  // the outlines on either side of it (top edgels of rows 3 and 4) each end at x = 4 and x = 8
+  // with crossing edgels on both sides (code 4 at both ends): one line steps on at one end, the
+  // other line at the other, and the pixels cannot tell which. A pixel on either side is one
+  // pixel thin across the edge (the gap, the line), so both take the U shape's area, 3/8, 1/8,
+  // 1/8, 3/8 along the run, each of the other's colour (vtkMLAAAreaTexture, code 4 at both
+  // ends).
+  auto in = Grey(24, 12, [](int x, int y) { return y != 2 + x / 4 && y != 4 + x / 4; });
+  auto weights = Weights(in);
+  const int expected[4] = { Q(3.0 / 8.0), Q(1.0 / 8.0), Q(1.0 / 8.0), Q(3.0 / 8.0) };
+  for (int x = 4; x <= 7; ++x)
+  {
+    for (int y : { 3, 4 })
+    {
+      MLAA_CHECK(GetValue(weights, x, y, 0) == expected[x - 4] &&
+        GetValue(weights, x, y, 1) == expected[x - 4]);
+    }
+  }
+  auto out = RunMLAA(in, MediumOptions());
+  // The gap pixel at the run's end takes 3/8 of the black from above and from below alike (the
+  // same weight both ways, whose blend is that weight's): 255 - 96.
+  MLAA_CHECK(GetValue(out, 4, 4) == White - Q(3.0 / 8.0));
+
+  // A checkerboard of 4 x 4 squares: every side lies between two corners where four squares
+  // meet (code 4 at both ends), but no pixel is one pixel thin across it: no slope, nothing is
+  // blended.
+  auto board = Grey(16, 16, [](int x, int y) { return (x / 4 + y / 4) % 2 == 0; });
+  MLAA_CHECK(Compare(board, RunMLAA(board, MediumOptions())).Count == 0);
+}
+
 void LongLine(int searchSteps)
 {
   // A single step at x = 20 in a 64 x 4 image: the line of top edgels on row 0 (x < 20) ends
@@ -409,6 +443,7 @@ int TestImageMLAAPatterns(int, char*[])
   UShape();
   ZShape();
   ThinLine();
+  ThinLinesSideBySide();
   for (int steps : { 1, 2, 4, 8, 16 })
   {
     LongLine(steps);

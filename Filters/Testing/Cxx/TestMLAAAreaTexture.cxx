@@ -71,11 +71,13 @@ int TestMLAAAreaTexture(int, char*[])
   EXPECT(table[2 * ((d * 3 + 2) * size + (d * 1 + 5)) + 0] == texture->GetArea(1, 3, 5, 2, 0));
   EXPECT(table[2 * ((d * 3 + 2) * size + (d * 1 + 5)) + 1] == texture->GetArea(1, 3, 5, 2, 1));
 
-  // Code 2 cannot occur: its row and column of cells are empty. No crossing edges (code 0) and
-  // crossing edges on both sides at both ends (4, 4) give no slope: nothing to blend. Code 4 at
-  // one end and no crossing edge at the other: no slope either. Code 4 at one end and a one-sided
-  // crossing edge (1 or 3) at the other: the line continues diagonally past the code-4 end, so
-  // that end acts as the other side's crossing edge and the pattern is a Z.
+  // Code 2 cannot occur: its row and column of cells are empty. No crossing edges (code 0) give
+  // no slope: nothing to blend. Code 4 at one end and no crossing edge at the other: no slope
+  // either. Code 4 at one end and a one-sided crossing edge (1 or 3) at the other: the line
+  // continues diagonally past the code-4 end, so that end acts as the other side's crossing edge
+  // and the pattern is a Z. Code 4 at both ends (a thin feature's run between two diagonal
+  // steps, whose side cannot be told): both pixels take the U's area, the owning pixel that of
+  // the U into its side (3, 3), the other that of the U into its own (1, 1); the two are equal.
   const int otherSide[5] = { 0, 3, 0, 1, 0 };
   for (int e = 0; e < 5; ++e)
   {
@@ -88,7 +90,9 @@ int TestMLAAAreaTexture(int, char*[])
           EXPECT(texture->GetArea(2, e, l, r, c) == 0.0f);
           EXPECT(texture->GetArea(e, 2, l, r, c) == 0.0f);
           EXPECT(texture->GetArea(0, 0, l, r, c) == 0.0f);
-          EXPECT(texture->GetArea(4, 4, l, r, c) == 0.0f);
+          EXPECT(texture->GetArea(4, 4, l, r, c) == texture->GetArea(c == 0 ? 3 : 1, c == 0 ? 3 : 1, l, r, c));
+          EXPECT(texture->GetArea(4, 4, l, r, c) == texture->GetArea(4, 4, l, r, 1 - c));
+          EXPECT(texture->GetArea(3, 3, l, r, 1) == 0.0f && texture->GetArea(1, 1, l, r, 0) == 0.0f);
           EXPECT(texture->GetArea(0, 4, l, r, c) == 0.0f);
           EXPECT(texture->GetArea(4, 0, l, r, c) == 0.0f);
           if (e == 1 || e == 3)
