@@ -59,6 +59,14 @@ vtkSmartPointer<vtkActor> AddActor(vtkRenderer* renderer, vtkAlgorithm* source,
   return actor;
 }
 
+// Points the camera at everything in the scene, zoomed by `zoom`.
+void FrameAll(vtkRenderer* renderer, double zoom)
+{
+  renderer->ResetCamera();
+  renderer->GetActiveCamera()->Zoom(zoom);
+  renderer->ResetCameraClippingRange();
+}
+
 void Silhouettes(vtkRenderer* renderer)
 {
   // Shaded solids: curved and straight silhouettes at every angle, against a light background.
@@ -160,9 +168,7 @@ void IsoSurface(vtkRenderer* renderer)
   renderer->AddActor(actor);
   actor->RotateY(30.0);
   actor->RotateX(-20.0);
-  renderer->ResetCamera();
-  renderer->GetActiveCamera()->Zoom(1.3);
-  renderer->ResetCameraClippingRange();
+  FrameAll(renderer, 1.3);
 }
 
 void Glyphs(vtkRenderer* renderer)
@@ -646,9 +652,7 @@ void SurfaceWithEdges(vtkRenderer* renderer)
   actor->GetProperty()->SetEdgeColor(0.1, 0.1, 0.3);
   actor->RotateX(35.0);
   actor->RotateY(-25.0);
-  renderer->ResetCamera();
-  renderer->GetActiveCamera()->Zoom(1.4);
-  renderer->ResetCameraClippingRange();
+  FrameAll(renderer, 1.4);
 }
 
 void Molecule(vtkRenderer* renderer)
@@ -687,9 +691,7 @@ void Molecule(vtkRenderer* renderer)
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
   renderer->AddActor(actor);
-  renderer->ResetCamera();
-  renderer->GetActiveCamera()->Zoom(1.3);
-  renderer->ResetCameraClippingRange();
+  FrameAll(renderer, 1.3);
 }
 
 void Terrain(vtkRenderer* renderer)
@@ -778,9 +780,7 @@ void Streamlines(vtkRenderer* renderer)
   auto actor = AddActor(renderer, producer, blue);
   actor->GetProperty()->LightingOff();
   actor->RotateX(-30.0);
-  renderer->ResetCamera();
-  renderer->GetActiveCamera()->Zoom(1.2);
-  renderer->ResetCameraClippingRange();
+  FrameAll(renderer, 1.2);
 }
 
 struct Scene
