@@ -326,18 +326,19 @@ bool leftAt(ivec2 p) { return edgelsAt(p).r > 0.5; }
 // side too. A line with code 4 at both ends is read as a thin feature's run only there
 // (vtkMLAAAreaTexture); between the junctions of wider shapes it keeps no slope
 // (WeightsComputer::ThinAcross).
-// With the sample areas of a multisampled render (MLAA_SAMPLE_AREAS) it is never read so: the
-// samples themselves resolve how much of a pixel thin features cover, where the single-sample
-// reading can only share it out evenly.
 bool thinAcross(ivec2 p, bool vertical)
 {
-#ifdef MLAA_SAMPLE_AREAS
-  return false;
-#else
   return vertical ? (leftAt(p + ivec2(1, 0)) || leftAt(p - ivec2(1, 0)))
                   : (topAt(p - ivec2(0, 1)) || topAt(p + ivec2(0, 1)));
-#endif
 }
+// Whether such runs are read at all: not with the sample areas of a multisampled render, whose
+// samples resolve how much of a pixel thin features cover, where the single-sample reading can
+// only share it out evenly.
+#ifdef MLAA_SAMPLE_AREAS
+const bool readThinRuns = false;
+#else
+const bool readThinRuns = true;
+#endif
 
 // A unit of a rising staircase (up and to the right) is a pixel with both edgels; a unit of a
 // falling one, named by its pixel q, is q's top edgel and its right neighbour's left edgel.
@@ -747,7 +748,7 @@ void main()
       }
     }
 #endif
-    if (e1 == 4 && e2 == 4 && !thinAcross(p, false))
+    if (e1 == 4 && e2 == 4 && !(readThinRuns && thinAcross(p, false)))
     {
       e1 = e2 = 0; // junctions of wider shapes at both ends: no slope
     }
@@ -803,7 +804,7 @@ void main()
       }
     }
 #endif
-    if (e1 == 4 && e2 == 4 && !thinAcross(p, true))
+    if (e1 == 4 && e2 == 4 && !(readThinRuns && thinAcross(p, true)))
     {
       e1 = e2 = 0;
     }
