@@ -309,10 +309,16 @@ vec2 area(int e1, int e2, int d1, int d2, bvec2 halved)
     (halved.y ? 0.5 : 1.0) * area(0, e2, d1, d2);
 }
 
+// Whether pixel p lies inside the image.
+bool insideImage(ivec2 p)
+{
+  return all(greaterThanEqual(p, ivec2(0))) && all(lessThan(p, ivec2(edgesSize)));
+}
+
 // Exact edgels of a pixel; none outside the image.
 vec2 edgelsAt(ivec2 p)
 {
-  if (any(lessThan(p, ivec2(0))) || any(greaterThanEqual(p, ivec2(edgesSize))))
+  if (!insideImage(p))
   {
     return vec2(0.0);
   }
@@ -353,15 +359,10 @@ bool fallingUnitInside(ivec2 q)
   return texelFetch(edgesTexture, q, 0).g > 0.5 &&
     texelFetch(edgesTexture, q + ivec2(1, 0), 0).r > 0.5;
 }
-bool isRisingUnit(ivec2 p)
-{
-  return all(greaterThanEqual(p, ivec2(0))) && all(lessThan(p, ivec2(edgesSize))) &&
-    risingUnitInside(p);
-}
+bool isRisingUnit(ivec2 p) { return insideImage(p) && risingUnitInside(p); }
 bool isFallingUnit(ivec2 q)
 {
-  return all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q + ivec2(1, 0), ivec2(edgesSize))) &&
-    fallingUnitInside(q);
+  return insideImage(q) && insideImage(q + ivec2(1, 0)) && fallingUnitInside(q);
 }
 
 // Whether the neighbours of unit q along its staircase, towards its first end (-x) and its
