@@ -222,8 +222,9 @@ public:
 
   // The four weights of a pixel with edgels (see WeightsBuffer), given the lengths of its lines
   // (ComputeRowLineLengths, ComputeColumnLineLengths): leftEnd and rightEnd along its row,
-  // up and down along its column; leftEnd -1: none given, they are searched. With DiagonalDetection, an edgel that is part of a 45-degree
-  // staircase takes its weights from the diagonal line instead (ComputeDiagonalWeights).
+  // up and down along its column; leftEnd -1: none given, they are searched. With
+  // DiagonalDetection, an edgel that is part of a 45-degree staircase takes its weights from the
+  // diagonal line instead (ComputeDiagonalWeights).
   void Compute(int x, int y, int leftEnd, int rightEnd, int up, int down, unsigned char* w) const
   {
     w[0] = w[1] = w[2] = w[3] = 0;
@@ -232,10 +233,10 @@ public:
     if (leftEnd < 0)
     {
       // No lengths counted beforehand: search.
-      leftEnd = top ? this->SearchTopEdges(x, y, -1) : 0;
-      rightEnd = top ? this->SearchTopEdges(x, y, +1) : 0;
-      up = left ? this->SearchLeftEdges(x, y, +1) : 0;
-      down = left ? this->SearchLeftEdges(x, y, -1) : 0;
+      leftEnd = top ? this->SearchLine(Line<false>{ x, y }, 0, 0, -1) : 0;
+      rightEnd = top ? this->SearchLine(Line<false>{ x, y }, 0, 0, +1) : 0;
+      up = left ? this->SearchLine(Line<true>{ x, y }, 0, 0, -1) : 0;
+      down = left ? this->SearchLine(Line<true>{ x, y }, 0, 0, +1) : 0;
     }
     if (this->S.Diagonals)
     {
@@ -243,82 +244,107 @@ public:
     }
     if (top)
     {
-      // A horizontal line: its ends lie to the left and to the right.
-      int e1 = this->CrossingLeftEdges(x - leftEnd, y, y + 1);
-      int e2 = this->CrossingLeftEdges(x + rightEnd + 1, y, y + 1);
-      bool half1 = false, half2 = false;
-      if (this->S.Corners && leftEnd + rightEnd > 0)
-      {
-        // Past a step the staircase goes on one row down (code 3: the crossing edge is on this
-        // row) or up (code 1), from the pixel just beyond the end; at a corner the crossing edge
-        // goes on one more row that way instead.
-        End first{ e1, leftEnd };
-        End second{ e2, rightEnd };
-        this->HorizontalEnd(x - leftEnd - 1, x - leftEnd, y, -1, first);
-        this->HorizontalEnd(x + rightEnd + 1, x + rightEnd + 1, y, +1, second);
-        if (x - leftEnd <= this->Whole.X0)
-        {
-          first = End{ 0, x - this->Whole.X0, true };
-        }
-        if (x + rightEnd >= this->Whole.X1)
-        {
-          second = End{ 0, this->Whole.X1 - x, true };
-        }
-        if (this->ExtrapolateCorners(first, second))
-        {
-          e1 = first.Code;
-          leftEnd = first.Distance;
-          e2 = second.Code;
-          rightEnd = second.Distance;
-          half1 = first.Half;
-          half2 = second.Half;
-        }
-      }
-      if (e1 == 4 && e2 == 4 && !this->ThinAcross(x, y, false))
-      {
-        e1 = e2 = 0; // junctions of wider shapes at both ends: no slope
-      }
-      this->LookUpArea(e1, e2, leftEnd, rightEnd, half1, half2, w);
+      this->LineWeights(Line<false>{ x, y }, leftEnd, rightEnd, w);
     }
     if (left)
     {
-      // A vertical line: its first end is the upper one.
-      int e1 = this->CrossingTopEdges(x, x - 1, y + up);
-      int e2 = this->CrossingTopEdges(x, x - 1, y - down - 1);
-      bool half1 = false, half2 = false;
-      if (this->S.Corners && up + down > 0)
-      {
-        // Past a step the staircase goes on one column right (code 3: the crossing edge is on
-        // this column) or left (code 1); at a corner the crossing edge goes on one more column
-        // that way instead.
-        End first{ e1, up };
-        End second{ e2, down };
-        this->VerticalEnd(x, y + up + 1, y + up, +1, first);
-        this->VerticalEnd(x, y - down - 1, y - down - 1, -1, second);
-        if (y + up >= this->Whole.Y1)
-        {
-          first = End{ 0, this->Whole.Y1 - y, true };
-        }
-        if (y - down <= this->Whole.Y0)
-        {
-          second = End{ 0, y - this->Whole.Y0, true };
-        }
-        if (this->ExtrapolateCorners(first, second))
-        {
-          e1 = first.Code;
-          up = first.Distance;
-          e2 = second.Code;
-          down = second.Distance;
-          half1 = first.Half;
-          half2 = second.Half;
-        }
-      }
-      if (e1 == 4 && e2 == 4 && !this->ThinAcross(x, y, true))
-      {
-        e1 = e2 = 0;
-      }
-      this->LookUpArea(e1, e2, up, down, half1, half2, w + 2);
+      this->LineWeights(Line<true>{ x, y }, up, down, w + 2);
     }
+  }
+
+private:
+  // Line coordinates: the lines of top edgels (horizontal) and of left edgels (vertical) are
+  // followed by the same code. In them u runs along the line towards its second end (right, or
+  // down: a vertical line's first end is the upper one, as in the area table) and v across it,
+  // towards the pixels on the line's other side (up, or left). The line's own edgel of a pixel
+  // then lies between the pixel and its neighbour at v + 1, and the crossing edgel between the
+  // pixel and its neighbour at u - 1, for either orientation; crossing-edge codes count the
+  // edgel at v = 0 three times. Line<Vertical> is the pixel whose edgel the line goes through.
+  template <bool Vertical>
+  struct Line
+  {
+    int X, Y;
+    int XAt(int u, int v) const { return Vertical ? this->X - v : this->X + u; }
+    int YAt(int u, int v) const { return Vertical ? this->Y - u : this->Y + v; }
+  };
+  // The edgels at (u, v): along the line (Along) or crossing it (Crossing), clamped to the
+  // available pixels as the GPU's reads are; AlongInside and CrossingInside, none outside the
+  // image (the reads of the diagonal search).
+  template <bool V>
+  int AlongAt(const Line<V>& l, int u, int v) const
+  {
+    return V ? this->LeftAt(l.XAt(u, v), l.YAt(u, v)) : this->TopAt(l.XAt(u, v), l.YAt(u, v));
+  }
+  template <bool V>
+  int CrossingAt(const Line<V>& l, int u, int v) const
+  {
+    return V ? this->TopAt(l.XAt(u, v), l.YAt(u, v)) : this->LeftAt(l.XAt(u, v), l.YAt(u, v));
+  }
+  template <bool V>
+  int AlongInside(const Line<V>& l, int u, int v) const
+  {
+    return V ? this->DiagonalLeftAt(l.XAt(u, v), l.YAt(u, v))
+             : this->DiagonalTopAt(l.XAt(u, v), l.YAt(u, v));
+  }
+  template <bool V>
+  int CrossingInside(const Line<V>& l, int u, int v) const
+  {
+    return V ? this->DiagonalTopAt(l.XAt(u, v), l.YAt(u, v))
+             : this->DiagonalLeftAt(l.XAt(u, v), l.YAt(u, v));
+  }
+  // How many pixels the image holds past the line's pixel in direction s (-1 or +1) of u.
+  template <bool V>
+  int ToBorder(const Line<V>& l, int s) const
+  {
+    if (V)
+    {
+      return s < 0 ? this->Whole.Y1 - l.Y : l.Y - this->Whole.Y0;
+    }
+    return s < 0 ? l.X - this->Whole.X0 : this->Whole.X1 - l.X;
+  }
+
+  // The weights (two of w) of the line through the edgel of l's pixel, whose ends lie d1 pixels
+  // before it and d2 after it along u.
+  template <bool V>
+  void LineWeights(const Line<V>& l, int d1, int d2, unsigned char* w) const
+  {
+    int e1 = this->CrossingCode(l, -d1);
+    int e2 = this->CrossingCode(l, d2 + 1);
+    bool half1 = false, half2 = false;
+    if (this->S.Corners && d1 + d2 > 0)
+    {
+      // Past a step the staircase goes on one row (column) over, at v - 1 (code 3: the crossing
+      // edge is on this side) or v + 1 (code 1), from the pixel just beyond the end; at a corner
+      // the crossing edge goes on one more pixel that way instead.
+      End first{ e1, d1 };
+      End second{ e2, d2 };
+      this->LineEnd(l, -1, first);
+      this->LineEnd(l, +1, second);
+      const int border1 = this->ToBorder(l, -1);
+      const int border2 = this->ToBorder(l, +1);
+      if (d1 >= border1)
+      {
+        first = End{ 0, border1, true };
+      }
+      if (d2 >= border2)
+      {
+        second = End{ 0, border2, true };
+      }
+      if (this->ExtrapolateCorners(first, second))
+      {
+        e1 = first.Code;
+        d1 = first.Distance;
+        e2 = second.Code;
+        d2 = second.Distance;
+        half1 = first.Half;
+        half2 = second.Half;
+      }
+    }
+    if (e1 == 4 && e2 == 4 && !this->ThinAcross(l))
+    {
+      e1 = e2 = 0; // junctions of wider shapes at both ends: no slope
+    }
+    this->LookUpArea(e1, e2, d1, d2, half1, half2, w);
   }
 
 private:
@@ -408,57 +434,41 @@ private:
     return true;
   }
 
-  // An end of a horizontal line of row y with a crossing edge on one side: `beyond` is the column
-  // just past the end, `crossing` the column whose left edgels are the crossing edge, dx the
-  // direction of the end. A step if the line goes on one row over from `beyond` (then the length
-  // of that next run, and whether it ends unseen), a corner if the crossing edge goes on
-  // instead. Edgels outside the image are none.
-  void HorizontalEnd(int beyond, int crossing, int y, int dx, End& end) const
+  // The end of l's line in direction s (-1: the first, d1 before the pixel; +1: the second),
+  // with a crossing edge on one side (code 1 or 3). A step if the line goes on one row (column)
+  // over from the pixel just past the end (then the length of that next run, and whether it ends
+  // unseen), a corner if the crossing edge goes on instead. Edgels outside the image are none.
+  template <bool V>
+  void LineEnd(const Line<V>& l, int s, End& end) const
   {
     if (end.Code != 1 && end.Code != 3)
     {
       return;
     }
-    const int next = end.Code == 3 ? y - 1 : y + 1;
-    if (this->DiagonalTopAt(beyond, next))
+    const int beyond = s * (end.Distance + 1); // the pixel just past the end
+    const int crossing = s < 0 ? beyond + 1 : beyond; // the crossing edge's pixel
+    const int next = end.Code == 3 ? -1 : 1;
+    if (this->AlongInside(l, beyond, next))
     {
-      end.Next = this->SearchTopEdges(beyond, next, dx) + 1;
-      end.NextUnseen = this->HorizontalRunEndsUnseen(beyond, next, dx, end.Next);
+      end.Next = this->SearchLine(l, beyond, next, s) + 1;
+      end.NextUnseen = this->RunEndsUnseen(l, beyond, next, s, end.Next);
     }
     else
     {
-      end.Unseen = this->DiagonalLeftAt(crossing, end.Code == 3 ? y - 1 : y + 2) != 0;
-    }
-  }
-  // The same for a vertical line of column x: `beyond` is the row just past the end, `crossing`
-  // the row whose top edgels are the crossing edge, dy the direction of the end.
-  void VerticalEnd(int x, int beyond, int crossing, int dy, End& end) const
-  {
-    if (end.Code != 1 && end.Code != 3)
-    {
-      return;
-    }
-    const int next = end.Code == 3 ? x + 1 : x - 1;
-    if (this->DiagonalLeftAt(next, beyond))
-    {
-      end.Next = this->SearchLeftEdges(next, beyond, dy) + 1;
-      end.NextUnseen = this->VerticalRunEndsUnseen(beyond, next, dy, end.Next);
-    }
-    else
-    {
-      end.Unseen = this->DiagonalTopAt(end.Code == 3 ? x + 1 : x - 2, crossing) != 0;
+      end.Unseen = this->CrossingInside(l, crossing, end.Code == 3 ? -1 : 2) != 0;
     }
   }
 
-  // Whether the next run of a staircase (of row `row`, from column `beyond` in direction dx,
-  // `length` pixels) ends at a corner or the image border, so that the staircase shows no second
-  // step and that run is cut short too: past its last pixel the crossing edge is on one side only
-  // and goes on for a second pixel that way, and the run does not go on one row over. Within the
-  // reach; edgels outside the image are none.
-  bool HorizontalRunEndsUnseen(int beyond, int row, int dx, int length) const
+  // Whether the next run of a staircase (at v, from u in direction s, `length` pixels) ends at a
+  // corner or the image border, so that the staircase shows no second step and that run is cut
+  // short too: past its last pixel the crossing edge is on one side only and goes on for a second
+  // pixel that way, and the run does not go on one row (column) over. Within the reach; edgels
+  // outside the image are none.
+  template <bool V>
+  bool RunEndsUnseen(const Line<V>& l, int u, int v, int s, int length) const
   {
-    const int last = beyond + dx * (length - 1);
-    if (dx < 0 ? last <= this->Whole.X0 : last >= this->Whole.X1)
+    const int last = u + s * (length - 1);
+    if (s * last >= this->ToBorder(l, s))
     {
       return true;
     }
@@ -466,36 +476,14 @@ private:
     {
       return false;
     }
-    const int crossing = dx < 0 ? last : last + 1;
+    const int crossing = s < 0 ? last : last + 1;
     const int code =
-      3 * this->DiagonalLeftAt(crossing, row) + this->DiagonalLeftAt(crossing, row + 1);
-    if ((code != 1 && code != 3) || this->DiagonalTopAt(last + dx, code == 3 ? row - 1 : row + 1))
+      3 * this->CrossingInside(l, crossing, v) + this->CrossingInside(l, crossing, v + 1);
+    if ((code != 1 && code != 3) || this->AlongInside(l, last + s, code == 3 ? v - 1 : v + 1))
     {
       return false;
     }
-    return this->DiagonalLeftAt(crossing, code == 3 ? row - 1 : row + 2) != 0;
-  }
-  // The same for the next run of column `column`, from row `beyond` in direction dy.
-  bool VerticalRunEndsUnseen(int beyond, int column, int dy, int length) const
-  {
-    const int last = beyond + dy * (length - 1);
-    if (dy < 0 ? last <= this->Whole.Y0 : last >= this->Whole.Y1)
-    {
-      return true;
-    }
-    if (length - 1 >= 2 * this->S.SearchSteps)
-    {
-      return false;
-    }
-    const int crossing = dy > 0 ? last : last - 1;
-    const int code =
-      3 * this->DiagonalTopAt(column, crossing) + this->DiagonalTopAt(column - 1, crossing);
-    if ((code != 1 && code != 3) ||
-      this->DiagonalLeftAt(code == 3 ? column + 1 : column - 1, last + dy))
-    {
-      return false;
-    }
-    return this->DiagonalTopAt(code == 3 ? column + 1 : column - 2, crossing) != 0;
+    return this->CrossingInside(l, crossing, code == 3 ? v - 1 : v + 2) != 0;
   }
 
   // The edgels at (x, y) clamped to the available pixels, as a GPU reads a texture with
@@ -509,49 +497,32 @@ private:
   int LeftAt(int x, int y) const { return this->Clamped(x, y)[0] ? 1 : 0; }
 
   // Section 4.3.1, searched (below vtkMLAAOptions::ExactLineLengthsSteps; the run lengths give the
-  // same numbers): distance from (x, y) to the end of its line of top edgels in direction dx
-  // (-1 left, +1 right), or of left edgels in direction dy (-1 down, +1 up). Each step looks at
-  // the next two pixels along the line, as the GPU does with two bilinear fetches:
-  // - the two edgels along the line (weighted 3:1, so that each can be told apart);
+  // same numbers): distance from the pixel at (u, v) of l's line coordinates to the end of its
+  // line (of l's kind) in direction s of u. Each step looks at the next two pixels along the
+  // line, as the GPU does with one bilinear fetch (searchLine in vtkMLAABlendingWeightsFS.glsl):
+  // - the two edgels along the line;
   // - the crossing edgels (perpendicular ones, on either side of the line) at the boundary
   //   before the first pixel and at the boundary between the two.
   // The line ends before the first pixel without an edgel, or at the first boundary with a
   // crossing edgel. Stopping at crossing edges (which the chapter's search does not, section
   // 4.3.1 and 4.6) keeps the top and bottom outlines of one-pixel-wide lines apart.
-  int SearchTopEdges(int x, int y, int dx) const
+  template <bool V>
+  int SearchLine(const Line<V>& l, int u, int v, int s) const
   {
     for (int i = 0; i < this->S.SearchSteps; ++i)
     {
-      const int first = x + dx * (2 * i + 1);
-      const int second = first + dx;
-      // Left edgels of the pixels right of the two boundaries, on this row and the one above.
-      const int nearOwner = std::max(first, first - dx);
+      const int first = u + s * (2 * i + 1);
+      const int second = first + s;
+      // The crossing edgels of the two boundaries, on this row (column) and the one across.
+      const int nearOwner = std::max(first, first - s);
       const int midOwner = std::max(first, second);
-      if (this->LeftAt(nearOwner, y) || this->LeftAt(nearOwner, y + 1) || !this->TopAt(first, y))
+      if (this->CrossingAt(l, nearOwner, v) || this->CrossingAt(l, nearOwner, v + 1) ||
+        !this->AlongAt(l, first, v))
       {
         return 2 * i;
       }
-      if (this->LeftAt(midOwner, y) || this->LeftAt(midOwner, y + 1) || !this->TopAt(second, y))
-      {
-        return 2 * i + 1;
-      }
-    }
-    return 2 * this->S.SearchSteps;
-  }
-  int SearchLeftEdges(int x, int y, int dy) const
-  {
-    for (int i = 0; i < this->S.SearchSteps; ++i)
-    {
-      const int first = y + dy * (2 * i + 1);
-      const int second = first + dy;
-      // Top edgels of the pixels below the two boundaries, in this column and the one left.
-      const int nearOwner = std::min(first, first - dy);
-      const int midOwner = std::min(first, second);
-      if (this->TopAt(x, nearOwner) || this->TopAt(x - 1, nearOwner) || !this->LeftAt(x, first))
-      {
-        return 2 * i;
-      }
-      if (this->TopAt(x, midOwner) || this->TopAt(x - 1, midOwner) || !this->LeftAt(x, second))
+      if (this->CrossingAt(l, midOwner, v) || this->CrossingAt(l, midOwner, v + 1) ||
+        !this->AlongAt(l, second, v))
       {
         return 2 * i + 1;
       }
@@ -562,21 +533,14 @@ private:
   // Section 4.3.2: the crossing-edge code at an end of a line, 3 * (edgel on the owning pixel's
   // side) + (edgel on the opposite side), as the bilinear fetch a quarter pixel off the edge
   // reads it. Ends outside the image have no crossing edge.
-  int CrossingLeftEdges(int x, int ownY, int oppositeY) const
+  template <bool V>
+  int CrossingCode(const Line<V>& l, int u) const
   {
-    if (x < this->Whole.X0 || x > this->Whole.X1)
+    if (u < -this->ToBorder(l, -1) || u > this->ToBorder(l, +1))
     {
       return 0;
     }
-    return 3 * this->LeftAt(x, ownY) + this->LeftAt(x, oppositeY);
-  }
-  int CrossingTopEdges(int ownX, int oppositeX, int y) const
-  {
-    if (y < this->Whole.Y0 || y > this->Whole.Y1)
-    {
-      return 0;
-    }
-    return 3 * this->TopAt(ownX, y) + this->TopAt(oppositeX, y);
+    return 3 * this->CrossingAt(l, u, 0) + this->CrossingAt(l, u, 1);
   }
 
   // Edgels for the diagonal search and ThinAcross: none outside the image.
@@ -593,10 +557,10 @@ private:
   // has an edgel on its far side too. A line with crossing edges on both sides at both ends
   // (code 4 at both) is read as a thin feature's run only there (vtkMLAAAreaTexture); between
   // the junctions of wider shapes (a checkerboard's corners, say) it keeps no slope.
-  bool ThinAcross(int x, int y, bool vertical) const
+  template <bool V>
+  bool ThinAcross(const Line<V>& l) const
   {
-    return vertical ? (this->DiagonalLeftAt(x + 1, y) || this->DiagonalLeftAt(x - 1, y))
-                    : (this->DiagonalTopAt(x, y - 1) || this->DiagonalTopAt(x, y + 1));
+    return this->AlongInside(l, 0, -1) || this->AlongInside(l, 0, 1);
   }
   // A unit of a rising staircase: a pixel with both edgels. A unit of a falling one, named by its
   // pixel q: q's top edgel and its right neighbour's left edgel.

@@ -176,11 +176,34 @@ int searchLine(vec2 center, bool vertical, float direction, out int code)
   return 2 * maxSearchSteps; // not reached
 }
 
-// The crossing-edge code of an end whose crossing edgels belong to pixel `endPixel` (its column
-// or row): none outside the image (where the clamped reads repeat the border's edgels).
-int insideCode(int code, int endPixel, int size)
+// Line coordinates (WeightsComputer::Line in vtkMLAABlendingWeights.cxx): the lines of top edgels
+// (horizontal) and of left edgels (vertical) are followed by the same code. u runs along the line
+// towards its second end (right, or down: a vertical line's first end is the upper one, as in the
+// area table) and v across it, towards the pixels on the line's other side (up, or left). The
+// line's own edgel of a pixel then lies between the pixel and its neighbour at v + 1, and the
+// crossing edgel between the pixel and its neighbour at u - 1, for either orientation;
+// crossing-edge codes count the edgel at v = 0 three times.
+ivec2 lineToImage(ivec2 p, bool vertical, int u, int v)
 {
-  return (endPixel < 0 || endPixel >= size) ? 0 : code;
+  return p + (vertical ? ivec2(-v, -u) : ivec2(u, v));
+}
+
+// How many pixels the image holds past pixel p in direction s (-1 or +1) of u.
+int toBorder(ivec2 p, bool vertical, int s)
+{
+  ivec2 last = ivec2(edgesSize) - 1;
+  if (vertical)
+  {
+    return s < 0 ? last.y - p.y : p.y;
+  }
+  return s < 0 ? p.x : last.x - p.x;
+}
+
+// The crossing-edge code of the end of p's line whose crossing edgels belong to the pixel at u:
+// none outside the image (where the clamped reads repeat the border's edgels).
+int insideCode(int code, ivec2 p, bool vertical, int u)
+{
+  return (u < -toBorder(p, vertical, -1) || u > toBorder(p, vertical, 1)) ? 0 : code;
 }
 
 vec2 area(int e1, int e2, int d1, int d2)
@@ -327,15 +350,26 @@ vec2 edgelsAt(ivec2 p)
 bool topAt(ivec2 p) { return edgelsAt(p).g > 0.5; }
 bool leftAt(ivec2 p) { return edgelsAt(p).r > 0.5; }
 
-// Whether one of the two pixels across the edgel of p, horizontal (p and the pixel above) or
-// vertical (p and the pixel left of it), is one pixel thin across it: it has an edgel on its far
-// side too. A line with code 4 at both ends is read as a thin feature's run only there
-// (vtkMLAAAreaTexture); between the junctions of wider shapes it keeps no slope
-// (WeightsComputer::ThinAcross).
+// The edgels at (u, v) of p's line coordinates: along the line, or crossing it; none outside the
+// image.
+bool alongAt(ivec2 p, bool vertical, int u, int v)
+{
+  vec2 e = edgelsAt(lineToImage(p, vertical, u, v));
+  return (vertical ? e.r : e.g) > 0.5;
+}
+bool crossingAt(ivec2 p, bool vertical, int u, int v)
+{
+  vec2 e = edgelsAt(lineToImage(p, vertical, u, v));
+  return (vertical ? e.g : e.r) > 0.5;
+}
+
+// Whether one of the two pixels across the edgel of p's line (p and the pixel at v + 1) is one
+// pixel thin across it: it has an edgel on its far side too. A line with code 4 at both ends is
+// read as a thin feature's run only there (vtkMLAAAreaTexture); between the junctions of wider
+// shapes it keeps no slope (WeightsComputer::ThinAcross).
 bool thinAcross(ivec2 p, bool vertical)
 {
-  return vertical ? (leftAt(p + ivec2(1, 0)) || leftAt(p - ivec2(1, 0)))
-                  : (topAt(p - ivec2(0, 1)) || topAt(p + ivec2(0, 1)));
+  return alongAt(p, vertical, 0, -1) || alongAt(p, vertical, 0, 1);
 }
 // Whether such runs are read at all: not with the sample areas of a multisampled render, whose
 // samples resolve how much of a pixel thin features cover, where the single-sample reading can
@@ -449,17 +483,17 @@ vec3 diagonalArea(int e1, int e2, int d1, int d2)
 }
 
 #ifdef MLAA_CORNER_EXTRAPOLATION
-// Distance from pixel q to the end of its line in `direction` (0 left, 1 right, 2 down, 3 up),
-// as the distances of main() are found.
-int runDistance(ivec2 q, int direction)
+// Distance from pixel q to the end of its line (of top edgels, or of left edgels if vertical) in
+// direction s of u, as the distances of lineWeights are found.
+int runDistance(ivec2 q, bool vertical, int s)
 {
 #ifdef MLAA_RECURSIVE_DOUBLING
-  return min(int(round(texelFetch(lengthsTexture, q, 0)[direction])), 2 * maxSearchSteps);
+  // lengthsTexture: left, right, down, up.
+  int component = vertical ? (s < 0 ? 3 : 2) : (s < 0 ? 0 : 1);
+  return min(int(round(texelFetch(lengthsTexture, q, 0)[component])), 2 * maxSearchSteps);
 #else
-  vec2 c = vec2(q) + 0.5;
-  float sense = (direction == 0 || direction == 2) ? -1.0 : 1.0;
   int code;
-  return searchLine(c, direction >= 2, sense, code);
+  return searchLine(vec2(q) + 0.5, vertical, vertical ? float(-s) : float(s), code);
 #endif
 }
 
@@ -518,12 +552,12 @@ bool extrapolateCorners(
   return true;
 }
 
-// Whether the staircase's next run, which starts at q and is `length` pixels long in `direction`,
-// ends at a corner or the image border (WeightsComputer::HorizontalRunEndsUnseen).
-bool horizontalRunEndsUnseen(ivec2 q, int direction, int length)
+// Whether the staircase's next run, at v from u of p's line coordinates and `length` pixels long
+// in direction s, ends at a corner or the image border (WeightsComputer::RunEndsUnseen).
+bool runEndsUnseen(ivec2 p, bool vertical, int u, int v, int s, int length)
 {
-  int last = q.x + direction * (length - 1);
-  if (direction < 0 ? last <= 0 : last >= int(edgesSize.x) - 1)
+  int last = u + s * (length - 1);
+  if (s * last >= toBorder(p, vertical, s))
   {
     return true;
   }
@@ -531,69 +565,34 @@ bool horizontalRunEndsUnseen(ivec2 q, int direction, int length)
   {
     return false;
   }
-  int crossing = direction < 0 ? last : last + 1;
-  int code = 3 * int(leftAt(ivec2(crossing, q.y))) + int(leftAt(ivec2(crossing, q.y + 1)));
-  if ((code != 1 && code != 3) || topAt(ivec2(last + direction, code == 3 ? q.y - 1 : q.y + 1)))
+  int crossing = s < 0 ? last : last + 1;
+  int code =
+    3 * int(crossingAt(p, vertical, crossing, v)) + int(crossingAt(p, vertical, crossing, v + 1));
+  if ((code != 1 && code != 3) || alongAt(p, vertical, last + s, code == 3 ? v - 1 : v + 1))
   {
     return false;
   }
-  return leftAt(ivec2(crossing, code == 3 ? q.y - 1 : q.y + 2));
-}
-// The same for the next run of a column (WeightsComputer::VerticalRunEndsUnseen).
-bool verticalRunEndsUnseen(ivec2 q, int direction, int length)
-{
-  int last = q.y + direction * (length - 1);
-  if (direction < 0 ? last <= 0 : last >= int(edgesSize.y) - 1)
-  {
-    return true;
-  }
-  if (length - 1 >= 2 * maxSearchSteps)
-  {
-    return false;
-  }
-  int crossing = direction > 0 ? last : last - 1;
-  int code = 3 * int(topAt(ivec2(q.x, crossing))) + int(topAt(ivec2(q.x - 1, crossing)));
-  if ((code != 1 && code != 3) || leftAt(ivec2(code == 3 ? q.x + 1 : q.x - 1, last + direction)))
-  {
-    return false;
-  }
-  return topAt(ivec2(code == 3 ? q.x + 1 : q.x - 2, crossing));
+  return crossingAt(p, vertical, crossing, code == 3 ? v - 1 : v + 2);
 }
 
-// The end of a horizontal line of row y with crossing-edge code `code` (WeightsComputer::
-// HorizontalEnd): `beyond` is the column just past the end, `crossing` the column whose left
-// edgels are the crossing edge. Returns (unseen, next run length, whether the next run ends
-// unseen).
-ivec3 horizontalEnd(int code, int beyond, int crossing, int y, int direction)
+// The end of p's line in direction s (-1: the first end, +1: the second), `distance` pixels
+// away, with crossing-edge code `code` (WeightsComputer::LineEnd). Returns (unseen, next run
+// length, whether the next run ends unseen).
+ivec3 lineEnd(int code, ivec2 p, bool vertical, int s, int distance)
 {
   if (code != 1 && code != 3)
   {
     return ivec3(0);
   }
-  ivec2 q = ivec2(beyond, code == 3 ? y - 1 : y + 1);
-  if (topAt(q))
+  int beyond = s * (distance + 1); // the pixel just past the end
+  int crossing = s < 0 ? beyond + 1 : beyond; // the crossing edge's pixel
+  int next = code == 3 ? -1 : 1;
+  if (alongAt(p, vertical, beyond, next))
   {
-    int length = runDistance(q, direction < 0 ? 0 : 1) + 1;
-    return ivec3(0, length, horizontalRunEndsUnseen(q, direction, length) ? 1 : 0);
+    int length = runDistance(lineToImage(p, vertical, beyond, next), vertical, s) + 1;
+    return ivec3(0, length, runEndsUnseen(p, vertical, beyond, next, s, length) ? 1 : 0);
   }
-  return ivec3(leftAt(ivec2(crossing, code == 3 ? y - 1 : y + 2)) ? 1 : 0, 0, 0);
-}
-
-// The same for a vertical line of column x (WeightsComputer::VerticalEnd): `beyond` is the row
-// just past the end, `crossing` the row whose top edgels are the crossing edge.
-ivec3 verticalEnd(int code, int x, int beyond, int crossing, int direction)
-{
-  if (code != 1 && code != 3)
-  {
-    return ivec3(0);
-  }
-  ivec2 q = ivec2(code == 3 ? x + 1 : x - 1, beyond);
-  if (leftAt(q))
-  {
-    int length = runDistance(q, direction < 0 ? 2 : 3) + 1;
-    return ivec3(0, length, verticalRunEndsUnseen(q, direction, length) ? 1 : 0);
-  }
-  return ivec3(topAt(ivec2(code == 3 ? x + 1 : x - 2, crossing)) ? 1 : 0, 0, 0);
+  return ivec3(crossingAt(p, vertical, crossing, code == 3 ? -1 : 2) ? 1 : 0, 0, 0);
 }
 #endif
 
@@ -629,12 +628,79 @@ bool staircaseAreas(ivec2 q, bool rising, bvec2 next, out vec3 a)
 }
 #endif
 
+// The two weights of the line through p's top edgel (vertical false) or its left edgel (true),
+// section 4.3: the distances to its ends, d1 before p and d2 after it along u (searched, or with
+// MLAA_RECURSIVE_DOUBLING the given lengths), the crossing-edge codes there, and the area.
+vec2 lineWeights(ivec2 p, bool vertical, ivec2 lengths)
+{
+  int e1, e2, d1, d2;
+#ifdef MLAA_RECURSIVE_DOUBLING
+  d1 = lengths.x;
+  d2 = lengths.y;
+  // The codes, read 3:1 between p's row (column) and the one across: round(4 v).
+  vec2 center = vec2(p) + 0.5;
+  vec2 along = vertical ? vec2(0.0, -1.0) : vec2(1.0, 0.0); // u in the image
+  vec2 fetch = center + (vertical ? vec2(-0.25, 0.0) : vec2(0.0, 0.25));
+  vec2 c1 = edgesAt(fetch - along * float(d1));
+  vec2 c2 = edgesAt(fetch + along * float(d2 + 1));
+  e1 = int(round(4.0 * (vertical ? c1.g : c1.r)));
+  e2 = int(round(4.0 * (vertical ? c2.g : c2.r)));
+#else
+  // searchLine's direction: x right, y up.
+  float first = vertical ? 1.0 : -1.0;
+  d1 = searchLine(vec2(p) + 0.5, vertical, first, e1);
+  d2 = searchLine(vec2(p) + 0.5, vertical, -first, e2);
+#endif
+  e1 = insideCode(e1, p, vertical, -d1);
+  e2 = insideCode(e2, p, vertical, d2 + 1);
+  bvec2 halved = bvec2(false); // ends of half height (CornerExtrapolation)
+#ifdef MLAA_CORNER_EXTRAPOLATION
+  if (d1 + d2 > 0)
+  {
+    ivec3 end1 = lineEnd(e1, p, vertical, -1, d1);
+    ivec3 end2 = lineEnd(e2, p, vertical, 1, d2);
+    ivec4 ends = ivec4(e1, d1, e2, d2);
+    bvec2 unseen = bvec2(end1.x != 0, end2.x != 0);
+    ivec2 next = ivec2(end1.y, end2.y);
+    bvec2 nextUnseen = bvec2(end1.z != 0, end2.z != 0);
+    int border1 = toBorder(p, vertical, -1);
+    int border2 = toBorder(p, vertical, 1);
+    if (d1 >= border1) // the image border: the line's course beyond it is not seen
+    {
+      ends.xy = ivec2(0, border1);
+      unseen.x = true;
+      next.x = 0;
+      nextUnseen.x = false;
+    }
+    if (d2 >= border2)
+    {
+      ends.zw = ivec2(0, border2);
+      unseen.y = true;
+      next.y = 0;
+      nextUnseen.y = false;
+    }
+    if (extrapolateCorners(ends, unseen, next, nextUnseen, halved))
+    {
+      e1 = ends.x;
+      d1 = ends.y;
+      e2 = ends.z;
+      d2 = ends.w;
+    }
+  }
+#endif
+  if (e1 == 4 && e2 == 4 && !(readThinRuns && thinAcross(p, vertical)))
+  {
+    e1 = e2 = 0; // junctions of wider shapes at both ends: no slope
+  }
+  return any(halved) ? area(e1, e2, d1, d2, halved)
+                     : lineArea(p, lineToImage(p, vertical, 0, 1), vertical, e1, e2, d1, d2);
+}
+
 void main()
 {
   ivec2 size = textureSize(edgesTexture, 0);
   ivec2 p = ivec2(texCoord * vec2(size)); // this fragment's pixel (texCoord is at its centre)
   edgesSize = vec2(size);
-  vec2 center = vec2(p) + 0.5;
   vec2 e = texelFetch(edgesTexture, p, 0).rg;
   vec4 weights = vec4(0.0);
   bool top = e.g > 0.5;
@@ -694,123 +760,21 @@ void main()
 #endif
 
 #ifdef MLAA_RECURSIVE_DOUBLING
-  // The same distances as the searches below, counted for every pixel at once.
+  // The same distances as the searches of lineWeights, counted for every pixel at once.
   ivec4 lengths = (top || left)
     ? min(ivec4(round(texelFetch(lengthsTexture, p, 0))), ivec4(2 * maxSearchSteps))
     : ivec4(0);
+#else
+  ivec4 lengths = ivec4(0); // searched
 #endif
 
-  if (top) // edge at the top: a horizontal line, ends to the left and to the right
+  if (top) // a horizontal line, its first end to the left
   {
-    int e1, e2; // the crossing-edge codes of the ends
-#ifdef MLAA_RECURSIVE_DOUBLING
-    int left = lengths.x;
-    int right = lengths.y;
-    // Read 3:1 between this row and the row above: round(4 v) is the code.
-    float fetchY = center.y + 0.25;
-    e1 = int(round(4.0 * edgesAt(vec2(center.x - float(left), fetchY)).r));
-    e2 = int(round(4.0 * edgesAt(vec2(center.x + float(right + 1), fetchY)).r));
-#else
-    int left = searchLine(center, false, -1.0, e1);
-    int right = searchLine(center, false, 1.0, e2);
-#endif
-    e1 = insideCode(e1, p.x - left, size.x);
-    e2 = insideCode(e2, p.x + right + 1, size.x);
-    bvec2 halved = bvec2(false); // ends of half height (CornerExtrapolation)
-#ifdef MLAA_CORNER_EXTRAPOLATION
-    if (left + right > 0)
-    {
-      ivec3 end1 = horizontalEnd(e1, p.x - left - 1, p.x - left, p.y, -1);
-      ivec3 end2 = horizontalEnd(e2, p.x + right + 1, p.x + right + 1, p.y, 1);
-      ivec4 ends = ivec4(e1, left, e2, right);
-      bvec2 unseen = bvec2(end1.x != 0, end2.x != 0);
-      ivec2 next = ivec2(end1.y, end2.y);
-      bvec2 nextUnseen = bvec2(end1.z != 0, end2.z != 0);
-      if (p.x - left <= 0) // the image border: the line's course beyond it is not seen
-      {
-        ends.xy = ivec2(0, p.x);
-        unseen.x = true;
-        next.x = 0;
-        nextUnseen.x = false;
-      }
-      if (p.x + right >= size.x - 1)
-      {
-        ends.zw = ivec2(0, size.x - 1 - p.x);
-        unseen.y = true;
-        next.y = 0;
-        nextUnseen.y = false;
-      }
-      if (extrapolateCorners(ends, unseen, next, nextUnseen, halved))
-      {
-        e1 = ends.x;
-        left = ends.y;
-        e2 = ends.z;
-        right = ends.w;
-      }
-    }
-#endif
-    if (e1 == 4 && e2 == 4 && !(readThinRuns && thinAcross(p, false)))
-    {
-      e1 = e2 = 0; // junctions of wider shapes at both ends: no slope
-    }
-    weights.rg = any(halved) ? area(e1, e2, left, right, halved)
-                             : lineArea(p, p + ivec2(0, 1), false, e1, e2, left, right);
+    weights.rg = lineWeights(p, false, lengths.xy);
   }
-
-  if (left) // edge at the left: a vertical line, its first end is the upper one
+  if (left) // a vertical line, its first end the upper one
   {
-    int e1, e2;
-#ifdef MLAA_RECURSIVE_DOUBLING
-    int up = lengths.w;
-    int down = lengths.z;
-    float fetchX = center.x - 0.25; // 3:1 between this column and the column to the left
-    e1 = int(round(4.0 * edgesAt(vec2(fetchX, center.y + float(up))).g));
-    e2 = int(round(4.0 * edgesAt(vec2(fetchX, center.y - float(down + 1))).g));
-#else
-    int up = searchLine(center, true, 1.0, e1);
-    int down = searchLine(center, true, -1.0, e2);
-#endif
-    e1 = insideCode(e1, p.y + up, size.y);
-    e2 = insideCode(e2, p.y - down - 1, size.y);
-    bvec2 halved = bvec2(false); // ends of half height (CornerExtrapolation)
-#ifdef MLAA_CORNER_EXTRAPOLATION
-    if (up + down > 0)
-    {
-      ivec3 end1 = verticalEnd(e1, p.x, p.y + up + 1, p.y + up, 1);
-      ivec3 end2 = verticalEnd(e2, p.x, p.y - down - 1, p.y - down - 1, -1);
-      ivec4 ends = ivec4(e1, up, e2, down);
-      bvec2 unseen = bvec2(end1.x != 0, end2.x != 0);
-      ivec2 next = ivec2(end1.y, end2.y);
-      bvec2 nextUnseen = bvec2(end1.z != 0, end2.z != 0);
-      if (p.y + up >= size.y - 1) // the image border
-      {
-        ends.xy = ivec2(0, size.y - 1 - p.y);
-        unseen.x = true;
-        next.x = 0;
-        nextUnseen.x = false;
-      }
-      if (p.y - down <= 0)
-      {
-        ends.zw = ivec2(0, p.y);
-        unseen.y = true;
-        next.y = 0;
-        nextUnseen.y = false;
-      }
-      if (extrapolateCorners(ends, unseen, next, nextUnseen, halved))
-      {
-        e1 = ends.x;
-        up = ends.y;
-        e2 = ends.z;
-        down = ends.w;
-      }
-    }
-#endif
-    if (e1 == 4 && e2 == 4 && !(readThinRuns && thinAcross(p, true)))
-    {
-      e1 = e2 = 0;
-    }
-    weights.ba = any(halved) ? area(e1, e2, up, down, halved)
-                             : lineArea(p, p - ivec2(1, 0), true, e1, e2, up, down);
+    weights.ba = lineWeights(p, true, lengths.wz);
   }
 
   gl_FragData[0] = weights;
