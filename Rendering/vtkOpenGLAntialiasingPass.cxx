@@ -608,11 +608,9 @@ void vtkOpenGLAntialiasingPass::RenderCompositedTranslucency(
     Define("ANTIALIASING_KEEP_ALPHA", true));
   if (kept)
   {
-    this->ColorTexture->Activate();
-    this->KeepAlphaQuad.Quad->Program->SetUniformi(
-      "source", this->ColorTexture->GetTextureUnit());
+    const ScopedTextures source(
+      this->KeepAlphaQuad.Quad->Program, { { "source", this->ColorTexture } });
     this->KeepAlphaQuad.Quad->Render();
-    this->ColorTexture->Deactivate();
   }
   ostate->PopFramebufferBindings();
 
@@ -629,11 +627,11 @@ void vtkOpenGLAntialiasingPass::RenderCompositedTranslucency(
   ostate->vtkglDisable(GL_BLEND);
   ostate->vtkglDisable(GL_DEPTH_TEST);
   ostate->vtkglDepthMask(GL_FALSE);
-  this->AlphaTexture->Activate();
-  this->RestoreAlphaQuad.Quad->Program->SetUniformi(
-    "source", this->AlphaTexture->GetTextureUnit());
-  this->RestoreAlphaQuad.Quad->Render();
-  this->AlphaTexture->Deactivate();
+  {
+    const ScopedTextures source(
+      this->RestoreAlphaQuad.Quad->Program, { { "source", this->AlphaTexture } });
+    this->RestoreAlphaQuad.Quad->Render();
+  }
 
   // ... and the coverage of the translucent geometry in front of the opaque depth blended into it:
   // a = a_i + (1 - a_i) a, which does not depend on the order of the fragments, leaves
@@ -1311,17 +1309,13 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
       {
         textures.emplace_back("previousTexture", h.Previous);
       }
+      ScopedTextures bound;
       for (const auto& texture : textures)
       {
-        texture.second->Activate();
-        program->SetUniformi(texture.first, texture.second->GetTextureUnit());
+        bound.Bind(program, texture.first, texture.second);
       }
       program->SetUniformf("currentWeight", weight);
       h.BlendQuad.Quad->Render();
-      for (auto texture = textures.rbegin(); texture != textures.rend(); ++texture)
-      {
-        texture->second->Deactivate();
-      }
     }
     if (reproject)
     {
@@ -1351,14 +1345,9 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
     return false;
   }
   SetTargetWriteState(ostate, frame.X, frame.Y, frame.Width, frame.Height, frame.Composite, true);
-  vtkShaderProgram* program = h.OutputQuad.Quad->Program;
-  h.Histories[h.Latest]->Activate();
-  this->DepthTexture->Activate();
-  program->SetUniformi("historyTexture", h.Histories[h.Latest]->GetTextureUnit());
-  program->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
+  const ScopedTextures textures(h.OutputQuad.Quad->Program,
+    { { "historyTexture", h.Histories[h.Latest] }, { "depthTexture", this->DepthTexture } });
   h.OutputQuad.Quad->Render();
-  this->DepthTexture->Deactivate();
-  h.Histories[h.Latest]->Deactivate();
   return true;
 }
 
@@ -1380,17 +1369,12 @@ bool vtkOpenGLAntialiasingPass::MarkBlendedPixels(
   ostate->vtkglEnable(GL_DEPTH_TEST);
   ostate->vtkglDepthFunc(GL_ALWAYS);
   ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  vtkShaderProgram* program = h.MaskQuad.Quad->Program;
-  current->Activate();
-  this->ColorTexture->Activate();
-  this->DepthTexture->Activate();
-  program->SetUniformi("currentTexture", current->GetTextureUnit());
-  program->SetUniformi("frameTexture", this->ColorTexture->GetTextureUnit());
-  program->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
-  h.MaskQuad.Quad->Render();
-  this->DepthTexture->Deactivate();
-  this->ColorTexture->Deactivate();
-  current->Deactivate();
+  {
+    const ScopedTextures textures(h.MaskQuad.Quad->Program,
+      { { "currentTexture", current }, { "frameTexture", this->ColorTexture },
+        { "depthTexture", this->DepthTexture } });
+    h.MaskQuad.Quad->Render();
+  }
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   ostate->vtkglDepthMask(GL_FALSE);
   ostate->vtkglDepthFunc(GL_LESS);
@@ -1578,14 +1562,11 @@ bool vtkOpenGLAntialiasingPass::CopySample(
     return false;
   }
   vtkShaderProgram* program = this->SampleCopyQuad.Quad->Program;
-  this->SamplesColorTexture->Activate();
-  this->SamplesDepthTexture->Activate();
-  program->SetUniformi("samplesColor", this->SamplesColorTexture->GetTextureUnit());
-  program->SetUniformi("samplesDepth", this->SamplesDepthTexture->GetTextureUnit());
+  const ScopedTextures textures(program,
+    { { "samplesColor", this->SamplesColorTexture },
+      { "samplesDepth", this->SamplesDepthTexture } });
   program->SetUniformi("sampleIndex", std::min(sample, samples - 1));
   this->SampleCopyQuad.Quad->Render();
-  this->SamplesDepthTexture->Deactivate();
-  this->SamplesColorTexture->Deactivate();
   return true;
 }
 
@@ -1661,11 +1642,9 @@ bool vtkOpenGLAntialiasingPass::AntialiasSamples(const Frame& frame, int samples
     ostate->vtkglEnable(GL_BLEND);
     ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
     vtkShaderProgram* program = this->AccumulateQuad.Quad->Program;
-    result->Activate();
-    program->SetUniformi("source", result->GetTextureUnit());
+    const ScopedTextures source(program, { { "source", result } });
     program->SetUniformf("scale", 1.0f / static_cast<float>(last - first));
     this->AccumulateQuad.Quad->Render();
-    result->Deactivate();
   }
   ostate->PopFramebufferBindings();
   if (!done ||
@@ -1679,12 +1658,9 @@ bool vtkOpenGLAntialiasingPass::AntialiasSamples(const Frame& frame, int samples
   // Premultiplied "over" onto what lower layers drew, as the single-sample pass does.
   SetTargetWriteState(ostate, frame.X, frame.Y, width, height, frame.Composite, true);
   vtkShaderProgram* program = this->ResolveQuad.Quad->Program;
-  this->AccumulationTexture->Activate();
-  this->SamplesColorTexture->Activate();
-  this->SamplesDepthTexture->Activate();
-  program->SetUniformi("source", this->AccumulationTexture->GetTextureUnit());
-  program->SetUniformi("samplesColor", this->SamplesColorTexture->GetTextureUnit());
-  program->SetUniformi("samplesDepth", this->SamplesDepthTexture->GetTextureUnit());
+  const ScopedTextures textures(program,
+    { { "source", this->AccumulationTexture }, { "samplesColor", this->SamplesColorTexture },
+      { "samplesDepth", this->SamplesDepthTexture } });
   program->SetUniformi("numberOfSamples", samples);
   // Where a pixel's samples differ, half the method's average and half the plain average (see
   // vtkAntialiasingSamplesFS.glsl); the plain image of DebugSample and the method's debug
@@ -1692,9 +1668,6 @@ bool vtkOpenGLAntialiasingPass::AntialiasSamples(const Frame& frame, int samples
   const bool debugImage = debug || !this->DrawsDeferredOverlays();
   program->SetUniformf("resolveWeight", debugImage ? 0.0f : 0.5f);
   this->ResolveQuad.Quad->Render();
-  this->SamplesDepthTexture->Deactivate();
-  this->SamplesColorTexture->Deactivate();
-  this->AccumulationTexture->Deactivate();
   return true;
 }
 

@@ -1,16 +1,22 @@
 // SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
 // SPDX-License-Identifier: BSD-3-Clause
 // Small helpers of the antialiasing passes (vtkOpenGLAntialiasingPass and its subclasses): render
-// targets that are resized in place, #define lines of shader variants. Private header.
+// targets that are resized in place, textures bound for a scope, #define lines of shader variants.
+// Private header.
 #ifndef vtkOpenGLAntialiasingPassInternals_h
 #define vtkOpenGLAntialiasingPassInternals_h
 
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
+#include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtkType.h"
 
+#include <algorithm>
+#include <initializer_list>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "vtk_glew.h" // For GL enums only
 
@@ -115,6 +121,52 @@ inline void SetTargetWriteState(
     ostate->vtkglDisable(GL_DEPTH_TEST);
   }
 }
+
+// The textures that one or more draws read, for as long as the object lives: Bind activates a
+// texture (on a free unit of the window's pool; a texture already active keeps its unit) and
+// points a program's sampler at it; when the object goes out of scope, on every path out of the
+// caller, early returns included, the textures are deactivated, last first, freeing the units.
+class ScopedTextures
+{
+public:
+  ScopedTextures() = default;
+  ScopedTextures(vtkShaderProgram* program,
+    std::initializer_list<std::pair<const char*, vtkTextureObject*>> samplers)
+  {
+    for (const auto& sampler : samplers)
+    {
+      this->Bind(program, sampler.first, sampler.second);
+    }
+  }
+  ~ScopedTextures()
+  {
+    for (auto texture = this->Textures.rbegin(); texture != this->Textures.rend(); ++texture)
+    {
+      (*texture)->Deactivate();
+    }
+  }
+  ScopedTextures(const ScopedTextures&) = delete;
+  ScopedTextures& operator=(const ScopedTextures&) = delete;
+
+  // Activates `texture` until the end of the scope.
+  void Activate(vtkTextureObject* texture)
+  {
+    texture->Activate();
+    if (std::find(this->Textures.begin(), this->Textures.end(), texture) == this->Textures.end())
+    {
+      this->Textures.push_back(texture);
+    }
+  }
+  // The same, and `program`'s sampler `name` reads it.
+  void Bind(vtkShaderProgram* program, const char* name, vtkTextureObject* texture)
+  {
+    this->Activate(texture);
+    program->SetUniformi(name, texture->GetTextureUnit());
+  }
+
+private:
+  std::vector<vtkTextureObject*> Textures;
+};
 
 // One #define line of a shader variant.
 inline std::string Define(const char* name, int value)

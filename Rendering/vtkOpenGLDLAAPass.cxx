@@ -101,13 +101,11 @@ bool vtkOpenGLDLAAPass::ComputeMasks(const Frame& frame)
     return false;
   }
   vtkShaderProgram* program = this->MasksQuad.Quad->Program;
-  this->ColorTexture->Activate();
-  program->SetUniformi("colorTexture", this->ColorTexture->GetTextureUnit());
+  const ScopedTextures textures(program, { { "colorTexture", this->ColorTexture } });
   program->SetUniformf("lambda", static_cast<float>(this->Options->GetLambda()));
   program->SetUniformf("epsilon", static_cast<float>(this->Options->GetEpsilon()));
   program->SetUniformi("padding", padding);
   this->MasksQuad.Quad->Render();
-  this->ColorTexture->Deactivate();
   return true;
 }
 
@@ -127,23 +125,14 @@ bool vtkOpenGLDLAAPass::Filter(const Frame& frame)
     return false;
   }
   vtkShaderProgram* program = this->FilterQuad.Quad->Program;
-  this->ColorTexture->Activate();
-  this->MasksTexture->Activate();
-  program->SetUniformi("colorTexture", this->ColorTexture->GetTextureUnit());
-  program->SetUniformi("masksTexture", this->MasksTexture->GetTextureUnit());
+  ScopedTextures textures(program,
+    { { "colorTexture", this->ColorTexture }, { "masksTexture", this->MasksTexture } });
   program->SetUniformi("padding", this->GetMasksPadding());
   if (!frame.InPlace)
   {
-    this->DepthTexture->Activate();
-    program->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
+    textures.Bind(program, "depthTexture", this->DepthTexture);
   }
   this->FilterQuad.Quad->Render();
-  if (!frame.InPlace)
-  {
-    this->DepthTexture->Deactivate();
-  }
-  this->MasksTexture->Deactivate();
-  this->ColorTexture->Deactivate();
   return true;
 }
 

@@ -218,70 +218,67 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   const std::string edgeDefines =
     Define("MLAA_EDGE_DETECTION", this->Options->GetEdgeDetection()) +
     Define("MLAA_USE_ALPHA", useAlpha) + Define("MLAA_SRGB_TABLE", this->UsesSrgbTable());
-  vtkTextureObject* source = this->GetSourceTexture();
-  source->Activate();
-  // The depth copy exists only when the delegate renders into the pass's textures; the shaders
-  // read it in depth mode only, which always has it. (Activating a texture that was never
-  // allocated fails an assertion in VTK builds that keep them, as ParaView's does.)
-  const bool hasDepth = this->DepthTexture->GetHandle() != 0;
-  if (hasDepth)
   {
-    this->DepthTexture->Activate();
-  }
-  // Pass 0: the change mask. Cleared edges and a mask at 0; pixels that differ from their left
-  // or upper neighbour write depth 1, the others keep 0.
-  ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
-  ostate->vtkglClearDepth(0.0);
-  ostate->vtkglDepthMask(GL_TRUE);
-  ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  ostate->vtkglEnable(GL_DEPTH_TEST);
-  ostate->vtkglDepthFunc(GL_ALWAYS);
-  // The mask compares whole pixels (and depths in depth mode): neither alpha's part nor the
-  // threshold and Lab's table matter to it.
-  if (!this->ReadyQuad(renWin, this->ChangeMaskQuad, vtkMLAAEdgeDetectionFS,
-        Define("MLAA_EDGE_DETECTION", this->Options->GetEdgeDetection()) +
-          Define("MLAA_CHANGE_MASK", true)))
-  {
-    return false;
-  }
-  vtkShaderProgram* program = this->ChangeMaskQuad.Quad->Program;
-  this->SetEdgeTextures(program);
-  ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  this->ChangeMaskQuad.Quad->Render();
-  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-
-  // Pass 1: edges, on the marked pixels only (the quad's depth, 1/2, is less than 1 there and not
-  // less than 0 elsewhere, so the depth test rejects unchanged pixels before the shader runs);
-  // edge pixels write the quad's depth.
-  ostate->vtkglDepthFunc(GL_LESS);
-  if (!this->ReadyQuad(renWin, this->EdgesQuad, vtkMLAAEdgeDetectionFS, edgeDefines))
-  {
-    return false;
-  }
-  program = this->EdgesQuad.Quad->Program;
-  this->SetEdgeUniforms(program);
-  this->EdgesQuad.Quad->Render();
-
-  // Local contrast adaptation: the edge pixels (those whose mask depth was written) rewrite
-  // their edges, keeping those not much weaker than their neighbours.
-  ostate->vtkglDepthMask(GL_FALSE);
-  ostate->vtkglDepthFunc(GL_EQUAL);
-  if (this->Options->GetLocalContrastFactor() > 0.0)
-  {
-    if (!this->ReadyQuad(renWin, this->LocalContrastQuad, vtkMLAAEdgeDetectionFS,
-          edgeDefines + Define("MLAA_LOCAL_CONTRAST", true)))
+    // The colour, and the depth, for the three edge passes (their samplers: SetEdgeTextures). The
+    // depth copy exists only when the delegate renders into the pass's textures; the shaders read
+    // it in depth mode only, which always has it. (Activating a texture that was never allocated
+    // fails an assertion in VTK builds that keep them, as ParaView's does.)
+    ScopedTextures edgeTextures;
+    edgeTextures.Activate(this->GetSourceTexture());
+    if (this->DepthTexture->GetHandle())
+    {
+      edgeTextures.Activate(this->DepthTexture);
+    }
+    // Pass 0: the change mask. Cleared edges and a mask at 0; pixels that differ from their left
+    // or upper neighbour write depth 1, the others keep 0.
+    ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+    ostate->vtkglClearDepth(0.0);
+    ostate->vtkglDepthMask(GL_TRUE);
+    ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    ostate->vtkglEnable(GL_DEPTH_TEST);
+    ostate->vtkglDepthFunc(GL_ALWAYS);
+    // The mask compares whole pixels (and depths in depth mode): neither alpha's part nor the
+    // threshold and Lab's table matter to it.
+    if (!this->ReadyQuad(renWin, this->ChangeMaskQuad, vtkMLAAEdgeDetectionFS,
+          Define("MLAA_EDGE_DETECTION", this->Options->GetEdgeDetection()) +
+            Define("MLAA_CHANGE_MASK", true)))
     {
       return false;
     }
-    program = this->LocalContrastQuad.Quad->Program;
+    vtkShaderProgram* program = this->ChangeMaskQuad.Quad->Program;
+    this->SetEdgeTextures(program);
+    ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    this->ChangeMaskQuad.Quad->Render();
+    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+
+    // Pass 1: edges, on the marked pixels only (the quad's depth, 1/2, is less than 1 there and not
+    // less than 0 elsewhere, so the depth test rejects unchanged pixels before the shader runs);
+    // edge pixels write the quad's depth.
+    ostate->vtkglDepthFunc(GL_LESS);
+    if (!this->ReadyQuad(renWin, this->EdgesQuad, vtkMLAAEdgeDetectionFS, edgeDefines))
+    {
+      return false;
+    }
+    program = this->EdgesQuad.Quad->Program;
     this->SetEdgeUniforms(program);
-    this->LocalContrastQuad.Quad->Render();
+    this->EdgesQuad.Quad->Render();
+
+    // Local contrast adaptation: the edge pixels (those whose mask depth was written) rewrite
+    // their edges, keeping those not much weaker than their neighbours.
+    ostate->vtkglDepthMask(GL_FALSE);
+    ostate->vtkglDepthFunc(GL_EQUAL);
+    if (this->Options->GetLocalContrastFactor() > 0.0)
+    {
+      if (!this->ReadyQuad(renWin, this->LocalContrastQuad, vtkMLAAEdgeDetectionFS,
+            edgeDefines + Define("MLAA_LOCAL_CONTRAST", true)))
+      {
+        return false;
+      }
+      program = this->LocalContrastQuad.Quad->Program;
+      this->SetEdgeUniforms(program);
+      this->LocalContrastQuad.Quad->Render();
+    }
   }
-  if (hasDepth)
-  {
-    this->DepthTexture->Deactivate();
-  }
-  source->Deactivate();
 
   // Line lengths by recursive doubling (LineLengths), on the same pixels, along the rows and
   // columns and, with diagonal detection, along the diagonals in the same passes.
@@ -328,19 +325,14 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   {
     return false;
   }
-  program = this->WeightsQuad.Quad->Program;
-  this->EdgesTexture->Activate();
-  this->AreaTexture->Activate();
-  this->DiagonalAreaTexture->Activate();
-  program->SetUniformi("edgesTexture", this->EdgesTexture->GetTextureUnit());
-  program->SetUniformi("areaTexture", this->AreaTexture->GetTextureUnit());
-  program->SetUniformi("diagonalAreaTexture", this->DiagonalAreaTexture->GetTextureUnit());
+  vtkShaderProgram* program = this->WeightsQuad.Quad->Program;
+  ScopedTextures textures(program,
+    { { "edgesTexture", this->EdgesTexture }, { "areaTexture", this->AreaTexture },
+      { "diagonalAreaTexture", this->DiagonalAreaTexture } });
   if (sampleAreas)
   {
-    this->SampleAreaTexture->Activate();
-    set.Colors->Activate();
-    program->SetUniformi("sampleAreaTexture", this->SampleAreaTexture->GetTextureUnit());
-    program->SetUniformi("samplesColor", set.Colors->GetTextureUnit());
+    textures.Bind(program, "sampleAreaTexture", this->SampleAreaTexture);
+    textures.Bind(program, "samplesColor", set.Colors);
     program->SetUniformi("numberOfSamples", static_cast<int>(set.Offsets.size() / 2));
     program->SetUniformi("sampleIndex", set.Index);
     // How near a pixel's border its samples come (the edge between two pixels whose samples
@@ -360,31 +352,13 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   }
   if (lengths)
   {
-    lengths->Activate();
-    program->SetUniformi("lengthsTexture", lengths->GetTextureUnit());
+    textures.Bind(program, "lengthsTexture", lengths);
   }
   if (diagonalLengths)
   {
-    diagonalLengths->Activate();
-    program->SetUniformi("diagonalLengthsTexture", diagonalLengths->GetTextureUnit());
+    textures.Bind(program, "diagonalLengthsTexture", diagonalLengths);
   }
   this->WeightsQuad.Quad->Render();
-  if (diagonalLengths)
-  {
-    diagonalLengths->Deactivate();
-  }
-  if (lengths)
-  {
-    lengths->Deactivate();
-  }
-  if (sampleAreas)
-  {
-    set.Colors->Deactivate();
-    this->SampleAreaTexture->Deactivate();
-  }
-  this->DiagonalAreaTexture->Deactivate();
-  this->AreaTexture->Deactivate();
-  this->EdgesTexture->Deactivate();
   ostate->vtkglDepthMask(GL_TRUE);
   return true;
 }
@@ -467,11 +441,11 @@ bool vtkOpenGLMLAAPass::ComputeLineLengths(
   {
     return false;
   }
-  this->EdgesTexture->Activate();
-  this->LengthsInitQuad.Quad->Program->SetUniformi(
-    "edgesTexture", this->EdgesTexture->GetTextureUnit());
-  this->LengthsInitQuad.Quad->Render();
-  this->EdgesTexture->Deactivate();
+  {
+    const ScopedTextures edges(
+      this->LengthsInitQuad.Quad->Program, { { "edgesTexture", this->EdgesTexture } });
+    this->LengthsInitQuad.Quad->Render();
+  }
 
   // Doubling passes for levels 1, 4, 16, ... until the counts are exact up to the maximum
   // distance (4 level >= maximum distance), reading one set of textures and writing the other.
@@ -485,20 +459,14 @@ bool vtkOpenGLMLAAPass::ComputeLineLengths(
   for (int level = 1; level < maxDistance; level *= 4)
   {
     attach(1 - source);
-    for (unsigned int k = 0; k < outputs; ++k)
     {
-      textures[k][source]->Activate();
-    }
-    program->SetUniformi("lengthsTexture", textures[0][source]->GetTextureUnit());
-    if (diagonals)
-    {
-      program->SetUniformi("diagonalLengthsTexture", textures[1][source]->GetTextureUnit());
-    }
-    program->SetUniformf("level", static_cast<float>(level));
-    this->LengthsQuad.Quad->Render();
-    for (unsigned int k = 0; k < outputs; ++k)
-    {
-      textures[k][source]->Deactivate();
+      ScopedTextures read(program, { { "lengthsTexture", textures[0][source] } });
+      if (diagonals)
+      {
+        read.Bind(program, "diagonalLengthsTexture", textures[1][source]);
+      }
+      program->SetUniformf("level", static_cast<float>(level));
+      this->LengthsQuad.Quad->Render();
     }
     source = 1 - source;
   }
@@ -530,26 +498,14 @@ bool vtkOpenGLMLAAPass::Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int w
     return false;
   }
   vtkShaderProgram* program = this->BlendQuad.Quad->Program;
-  vtkTextureObject* source = this->GetSourceTexture();
-  source->Activate();
+  ScopedTextures textures(program,
+    { { "colorTexture", this->GetSourceTexture() }, { "edgesTexture", this->EdgesTexture },
+      { "weightsTexture", this->WeightsTexture } });
   if (!inPlace)
   {
-    this->DepthTexture->Activate();
-    program->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
+    textures.Bind(program, "depthTexture", this->DepthTexture);
   }
-  this->EdgesTexture->Activate();
-  this->WeightsTexture->Activate();
-  program->SetUniformi("colorTexture", source->GetTextureUnit());
-  program->SetUniformi("edgesTexture", this->EdgesTexture->GetTextureUnit());
-  program->SetUniformi("weightsTexture", this->WeightsTexture->GetTextureUnit());
   this->BlendQuad.Quad->Render();
-  this->WeightsTexture->Deactivate();
-  this->EdgesTexture->Deactivate();
-  if (!inPlace)
-  {
-    this->DepthTexture->Deactivate();
-  }
-  source->Deactivate();
   return true;
 }
 
@@ -596,10 +552,10 @@ bool vtkOpenGLMLAAPass::Reconstruct(
   {
     return false;
   }
-  this->ColorTexture->Activate();
+  ScopedTextures textures;
+  textures.Activate(this->ColorTexture);
   this->SetReconstructionUniforms(this->ReconstructionQuad.Quad->Program);
   this->ReconstructionQuad.Quad->Render();
-  this->ColorTexture->Deactivate();
   return true;
 }
 
@@ -620,10 +576,10 @@ bool vtkOpenGLMLAAPass::WriteBackReconstruction(
   {
     return false;
   }
-  this->ColorTexture->Activate();
+  ScopedTextures textures;
+  textures.Activate(this->ColorTexture);
   this->SetReconstructionUniforms(this->WriteBackQuad.Quad->Program);
   this->WriteBackQuad.Quad->Render();
-  this->ColorTexture->Deactivate();
   return true;
 }
 

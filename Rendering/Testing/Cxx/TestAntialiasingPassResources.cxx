@@ -12,11 +12,17 @@
 // - a multisampled window works (the pass renders in place into a multisampled framebuffer and
 //   copies a resolved image): the result differs from the plain multisampled render only near
 //   edges;
-// - a pass without a delegate warns and draws nothing.
+// - a pass without a delegate warns and draws nothing;
+// - the pass leaves the window's texture units as it found them, in every mode (single frame,
+//   multisampled, temporal with the camera moving and still; for MLAA also with reconstruction
+//   and recursive doubling): each draw's textures are released after it.
 // No errors are reported on the way.
 #include "vtkAntialiasingRenderTestUtilities.h"
 
+#include "vtkMLAAOptions.h"
+#include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderLargeImage.h"
+#include "vtkTextureUnitManager.h"
 
 using namespace vtkMLAATest;
 
@@ -84,6 +90,50 @@ void Multisampling(vtkRenderWindow* window, vtkRenderer* renderer, vtkOpenGLAnti
   window->SetMultiSamples(0);
 }
 
+int AllocatedTextureUnits(vtkRenderWindow* window)
+{
+  vtkTextureUnitManager* units =
+    vtkOpenGLRenderWindow::SafeDownCast(window)->GetTextureUnitManager();
+  int allocated = 0;
+  for (int i = 0; i < units->GetNumberOfTextureUnits(); ++i)
+  {
+    allocated += units->IsAllocated(i) ? 1 : 0;
+  }
+  return allocated;
+}
+
+void TextureUnits(vtkRenderWindow* window, vtkRenderer* renderer, vtkOpenGLAntialiasingPass* pass)
+{
+  renderer->SetPass(nullptr);
+  window->Render();
+  const int before = AllocatedTextureUnits(window);
+  renderer->SetPass(pass);
+  auto check = [&](const char* mode) {
+    window->Render();
+    const int after = AllocatedTextureUnits(window);
+    std::cout << "texture units allocated after a render, " << mode << ": " << after << " ("
+              << before << " without the pass)" << std::endl;
+    MLAA_CHECK(after == before);
+  };
+  check("single frame");
+  pass->SetMultiSamples(4);
+  check("multisampled");
+  pass->SetMultiSamples(0);
+  if (auto* mlaa = vtkOpenGLMLAAPass::SafeDownCast(pass))
+  {
+    // Reconstruction, and 32 search steps: line lengths by recursive doubling.
+    mlaa->GetOptions()->SetPreset(vtkMLAAOptions::MAX);
+    check("MLAA max preset");
+    mlaa->GetOptions()->SetPreset(vtkMLAAOptions::HIGH);
+  }
+  pass->SetTemporal(true);
+  check("temporal, first render");
+  check("temporal, still");
+  renderer->GetActiveCamera()->Azimuth(1.0);
+  check("temporal, camera moving");
+  pass->SetTemporal(false);
+}
+
 void NoDelegate(const PassMethod& method, vtkRenderWindow* window, vtkRenderer* renderer)
 {
   // A pass of the method without a delegate: a warning, nothing drawn, no crash.
@@ -119,6 +169,7 @@ int TestAntialiasingPassResources(int, char*[])
     Resources(method, window, renderer, pass);
     Tiling(renderer, pass);
     Multisampling(window, renderer, pass);
+    TextureUnits(window, renderer, pass);
     pass->ReleaseGraphicsResources(window);
     NoDelegate(method, window, renderer);
   });
