@@ -38,15 +38,14 @@
 #include "vtkAntialiasingTemporalFS.h"
 #include "vtkAntialiasingSamplesFS.h"
 
-#include <algorithm>
-#include <cstdlib>
-
 #include "vtk_glew.h" // For GL enums, and the calls VTK has no wrapper for
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
+#include <iterator>
 #include <utility>
 #include <vector>
 
@@ -136,6 +135,14 @@ public:
     this->Valid = false;
     this->PreviousValid = false;
     this->Accumulated = 0;
+  }
+  // The bytes of its targets, colorBytes a texel for the method's frames.
+  vtkIdType TargetBytes(int colorBytes) const
+  {
+    return TextureBytes(this->Current, colorBytes) + TextureBytes(this->Previous, colorBytes) +
+      TextureBytes(this->Histories[0], 16) + TextureBytes(this->Histories[1], 16) +
+      TextureBytes(this->Counts[0], 4) + TextureBytes(this->Counts[1], 4) +
+      TextureBytes(this->Mask, 2);
   }
   bool HoldsResources() const
   {
@@ -368,7 +375,10 @@ vtkOpenGLAntialiasingPass::vtkOpenGLAntialiasingPass() = default;
 //------------------------------------------------------------------------------
 vtkOpenGLAntialiasingPass::~vtkOpenGLAntialiasingPass()
 {
-  if (this->HoldsSharedResources() || (this->History && this->History->HoldsResources()))
+  const bool holdsHistory = std::any_of(std::begin(this->EyeHistories),
+    std::end(this->EyeHistories),
+    [](const TemporalHistory* h) { return h && h->HoldsResources(); });
+  if (this->HoldsSharedResources() || holdsHistory)
   {
     vtkErrorMacro("Graphics resources should have been released by "
                   "ReleaseGraphicsResources().");
@@ -379,7 +389,10 @@ vtkOpenGLAntialiasingPass::~vtkOpenGLAntialiasingPass()
   {
     this->CompositedPass->Owner = nullptr;
   }
-  delete this->History;
+  for (TemporalHistory* h : this->EyeHistories)
+  {
+    delete h;
+  }
   for (vtkRenderPass* pass : { static_cast<vtkRenderPass*>(this->TranslucencyPass),
          static_cast<vtkRenderPass*>(this->PeelingPass),
          static_cast<vtkRenderPass*>(this->CompositedPass) })
@@ -835,6 +848,7 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
       steps ? this->UseRendererTranslucency(s, steps, frame.Composite, samples > 0) : StepsChange();
     if (temporal)
     {
+      this->SelectEyeHistory(s);
       this->BeginTemporalFrame(s, frame);
     }
     if (frame.InPlace)
@@ -913,9 +927,12 @@ void vtkOpenGLAntialiasingPass::ReleaseGraphicsResources(vtkWindow* w)
   DeleteObject(this->AlphaTexture, w);
   this->KeepAlphaQuad.Release(w);
   this->RestoreAlphaQuad.Release(w);
-  if (this->History)
+  for (TemporalHistory* h : this->EyeHistories)
   {
-    this->History->Release(w);
+    if (h)
+    {
+      h->Release(w);
+    }
   }
   this->ReleaseSampleResources(w);
   this->SupportedSampleCounts[0].clear(); // the next context may offer others
@@ -928,15 +945,13 @@ vtkIdType vtkOpenGLAntialiasingPass::GetTargetMemorySize()
   const int colorBytes =
     (this->ColorTexture && this->ColorTexture->GetVTKDataType() == VTK_FLOAT) ? 16 : 4;
   const int samples = this->SamplesColorTexture ? this->SamplesColorTexture->GetSamples() : 0;
+  vtkIdType history = 0;
+  for (const TemporalHistory* h : this->EyeHistories)
+  {
+    history += h ? h->TargetBytes(colorBytes) : 0;
+  }
   return TextureBytes(this->ColorTexture, colorBytes) + TextureBytes(this->DepthTexture, 4) +
-    TextureBytes(this->AlphaTexture, colorBytes / 4) + this->GetMethodTargetMemorySize() +
-    (this->History ? TextureBytes(this->History->Current, colorBytes) +
-          TextureBytes(this->History->Previous, colorBytes) +
-          TextureBytes(this->History->Histories[0], 16) +
-          TextureBytes(this->History->Histories[1], 16) +
-          TextureBytes(this->History->Counts[0], 4) + TextureBytes(this->History->Counts[1], 4) +
-          TextureBytes(this->History->Mask, 2)
-                   : 0) +
+    TextureBytes(this->AlphaTexture, colorBytes / 4) + this->GetMethodTargetMemorySize() + history +
     TextureBytes(this->SamplesColorTexture, colorBytes * samples) +
     TextureBytes(this->SamplesDepthTexture, 4 * samples) +
     TextureBytes(this->SampleTexture, colorBytes) + TextureBytes(this->AccumulationTexture, 16);
@@ -989,17 +1004,27 @@ void vtkOpenGLAntialiasingPass::SetTemporal(bool temporal)
 //------------------------------------------------------------------------------
 void vtkOpenGLAntialiasingPass::ResetHistory()
 {
-  if (this->History)
+  for (TemporalHistory* h : this->EyeHistories)
   {
-    this->History->Valid = false;
-    this->History->Accumulated = 0;
+    if (h)
+    {
+      h->Valid = false;
+      h->Accumulated = 0;
+    }
   }
 }
 
 //------------------------------------------------------------------------------
 int vtkOpenGLAntialiasingPass::GetAccumulatedFrames() const
 {
-  return this->History ? this->History->Accumulated : 0;
+  // The fewer of the eyes rendered (a stereo window may render one eye only).
+  const TemporalHistory* left = this->EyeHistories[0];
+  const TemporalHistory* right = this->EyeHistories[1];
+  if (left && right)
+  {
+    return std::min(left->Accumulated, right->Accumulated);
+  }
+  return left ? left->Accumulated : (right ? right->Accumulated : 0);
 }
 
 //------------------------------------------------------------------------------
@@ -1034,12 +1059,33 @@ int vtkOpenGLAntialiasingPass::RenderConverged(vtkRenderWindow* window)
 }
 
 //------------------------------------------------------------------------------
+void vtkOpenGLAntialiasingPass::SelectEyeHistory(const vtkRenderState* s)
+{
+  // vtkRenderWindow renders a stereo frame as the left eye's render, then the right eye's, with
+  // the active camera's LeftEye set accordingly (and LeftEye 1 in mono). The two eyes see the
+  // scene from two places: one history would take every render for a camera motion, and never
+  // accumulate a still.
+  vtkRenderer* renderer = s->GetRenderer();
+  const bool rightEye = renderer->GetRenderWindow()->GetStereoRender() &&
+    renderer->GetActiveCamera()->GetLeftEye() == 0;
+  TemporalHistory*& h = this->EyeHistories[rightEye ? 1 : 0];
+  if (!h)
+  {
+    h = new TemporalHistory;
+  }
+  this->History = h;
+  if (!renderer->GetRenderWindow()->GetStereoRender() && this->EyeHistories[1])
+  {
+    // Mono again: the right eye's history would be stale when stereo comes back.
+    this->EyeHistories[1]->Release(renderer->GetRenderWindow());
+    delete this->EyeHistories[1];
+    this->EyeHistories[1] = nullptr;
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkOpenGLAntialiasingPass::BeginTemporalFrame(const vtkRenderState* s, const Frame& frame)
 {
-  if (!this->History)
-  {
-    this->History = new TemporalHistory;
-  }
   TemporalHistory& h = *this->History;
   vtkRenderer* renderer = s->GetRenderer();
   vtkCamera* camera = renderer->GetActiveCamera();
