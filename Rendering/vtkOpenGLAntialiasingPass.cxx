@@ -33,6 +33,7 @@
 #include "vtkTranslucentPass.h"
 #include "vtkVersionMacros.h"
 #include "vtkVolume.h"
+#include "vtkWeakPointer.h"
 
 #include "vtkAntialiasingAlphaFS.h"
 #include "vtkAntialiasingTemporalFS.h"
@@ -46,6 +47,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <iterator>
+#include <limits>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -148,6 +151,35 @@ public:
   {
     return this->Current || this->Previous || this->Histories[0] || this->Histories[1] ||
       this->Counts[0] || this->Counts[1] || this->Mask || this->Framebuffer;
+  }
+};
+
+// The histories of a pass, one per renderer and eye that it renders (SelectHistory).
+class vtkOpenGLAntialiasingPass::TemporalHistories
+{
+public:
+  struct Entry
+  {
+    vtkWeakPointer<vtkRenderer> Renderer;
+    bool RightEye = false;
+    std::unique_ptr<TemporalHistory> History;
+    std::uint64_t LastRender = 0; // Renders when it was last rendered
+  };
+  std::vector<Entry> Entries;
+  std::uint64_t Renders = 0; // temporal renders of the pass
+
+  void Release(vtkWindow* w)
+  {
+    for (Entry& entry : this->Entries)
+    {
+      entry.History->Release(w);
+    }
+    this->Entries.clear();
+  }
+  bool HoldsResources() const
+  {
+    return std::any_of(this->Entries.begin(), this->Entries.end(),
+      [](const Entry& entry) { return entry.History->HoldsResources(); });
   }
 };
 
@@ -375,10 +407,7 @@ vtkOpenGLAntialiasingPass::vtkOpenGLAntialiasingPass() = default;
 //------------------------------------------------------------------------------
 vtkOpenGLAntialiasingPass::~vtkOpenGLAntialiasingPass()
 {
-  const bool holdsHistory = std::any_of(std::begin(this->EyeHistories),
-    std::end(this->EyeHistories),
-    [](const TemporalHistory* h) { return h && h->HoldsResources(); });
-  if (this->HoldsSharedResources() || holdsHistory)
+  if (this->HoldsSharedResources() || (this->Histories && this->Histories->HoldsResources()))
   {
     vtkErrorMacro("Graphics resources should have been released by "
                   "ReleaseGraphicsResources().");
@@ -389,10 +418,7 @@ vtkOpenGLAntialiasingPass::~vtkOpenGLAntialiasingPass()
   {
     this->CompositedPass->Owner = nullptr;
   }
-  for (TemporalHistory* h : this->EyeHistories)
-  {
-    delete h;
-  }
+  delete this->Histories;
   for (vtkRenderPass* pass : { static_cast<vtkRenderPass*>(this->TranslucencyPass),
          static_cast<vtkRenderPass*>(this->PeelingPass),
          static_cast<vtkRenderPass*>(this->CompositedPass) })
@@ -848,7 +874,7 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
       steps ? this->UseRendererTranslucency(s, steps, frame.Composite, samples > 0) : StepsChange();
     if (temporal)
     {
-      this->SelectEyeHistory(s);
+      this->SelectHistory(s);
       this->BeginTemporalFrame(s, frame);
     }
     if (frame.InPlace)
@@ -927,13 +953,11 @@ void vtkOpenGLAntialiasingPass::ReleaseGraphicsResources(vtkWindow* w)
   DeleteObject(this->AlphaTexture, w);
   this->KeepAlphaQuad.Release(w);
   this->RestoreAlphaQuad.Release(w);
-  for (TemporalHistory* h : this->EyeHistories)
+  if (this->Histories)
   {
-    if (h)
-    {
-      h->Release(w);
-    }
+    this->Histories->Release(w);
   }
+  this->History = nullptr;
   this->ReleaseSampleResources(w);
   this->SupportedSampleCounts[0].clear(); // the next context may offer others
   this->SupportedSampleCounts[1].clear();
@@ -946,9 +970,12 @@ vtkIdType vtkOpenGLAntialiasingPass::GetTargetMemorySize()
     (this->ColorTexture && this->ColorTexture->GetVTKDataType() == VTK_FLOAT) ? 16 : 4;
   const int samples = this->SamplesColorTexture ? this->SamplesColorTexture->GetSamples() : 0;
   vtkIdType history = 0;
-  for (const TemporalHistory* h : this->EyeHistories)
+  if (this->Histories)
   {
-    history += h ? h->TargetBytes(colorBytes) : 0;
+    for (const auto& entry : this->Histories->Entries)
+    {
+      history += entry.History->TargetBytes(colorBytes);
+    }
   }
   return TextureBytes(this->ColorTexture, colorBytes) + TextureBytes(this->DepthTexture, 4) +
     TextureBytes(this->AlphaTexture, colorBytes / 4) + this->GetMethodTargetMemorySize() + history +
@@ -1004,12 +1031,12 @@ void vtkOpenGLAntialiasingPass::SetTemporal(bool temporal)
 //------------------------------------------------------------------------------
 void vtkOpenGLAntialiasingPass::ResetHistory()
 {
-  for (TemporalHistory* h : this->EyeHistories)
+  if (this->Histories)
   {
-    if (h)
+    for (auto& entry : this->Histories->Entries)
     {
-      h->Valid = false;
-      h->Accumulated = 0;
+      entry.History->Valid = false;
+      entry.History->Accumulated = 0;
     }
   }
 }
@@ -1017,14 +1044,23 @@ void vtkOpenGLAntialiasingPass::ResetHistory()
 //------------------------------------------------------------------------------
 int vtkOpenGLAntialiasingPass::GetAccumulatedFrames() const
 {
-  // The fewer of the eyes rendered (a stereo window may render one eye only).
-  const TemporalHistory* left = this->EyeHistories[0];
-  const TemporalHistory* right = this->EyeHistories[1];
-  if (left && right)
+  // The fewest of the histories rendered last: with n histories, those among the last n renders
+  // (a renderer that no longer renders with the pass, or an eye no longer rendered, drops out).
+  if (!this->Histories || this->Histories->Entries.empty())
   {
-    return std::min(left->Accumulated, right->Accumulated);
+    return 0;
   }
-  return left ? left->Accumulated : (right ? right->Accumulated : 0);
+  const TemporalHistories& all = *this->Histories;
+  const std::uint64_t recent = all.Renders - std::min<std::uint64_t>(all.Renders, all.Entries.size());
+  int accumulated = std::numeric_limits<int>::max();
+  for (const auto& entry : all.Entries)
+  {
+    if (entry.LastRender > recent)
+    {
+      accumulated = std::min(accumulated, entry.History->Accumulated);
+    }
+  }
+  return accumulated;
 }
 
 //------------------------------------------------------------------------------
@@ -1059,28 +1095,49 @@ int vtkOpenGLAntialiasingPass::RenderConverged(vtkRenderWindow* window)
 }
 
 //------------------------------------------------------------------------------
-void vtkOpenGLAntialiasingPass::SelectEyeHistory(const vtkRenderState* s)
+void vtkOpenGLAntialiasingPass::SelectHistory(const vtkRenderState* s)
 {
-  // vtkRenderWindow renders a stereo frame as the left eye's render, then the right eye's, with
-  // the active camera's LeftEye set accordingly (and LeftEye 1 in mono). The two eyes see the
-  // scene from two places: one history would take every render for a camera motion, and never
-  // accumulate a still.
+  if (!this->Histories)
+  {
+    this->Histories = new TemporalHistories;
+  }
+  TemporalHistories& all = *this->Histories;
+  // A pass shared by several renderers renders each with its own camera and scene: one history
+  // would be reset (or reprojected from another view) at every render. And vtkRenderWindow
+  // renders a stereo frame as the left eye's render, then the right eye's, with the active
+  // camera's LeftEye set accordingly (and LeftEye 1 in mono): the two eyes see the scene from two
+  // places, and one history would average their pictures.
   vtkRenderer* renderer = s->GetRenderer();
-  const bool rightEye = renderer->GetRenderWindow()->GetStereoRender() &&
-    renderer->GetActiveCamera()->GetLeftEye() == 0;
-  TemporalHistory*& h = this->EyeHistories[rightEye ? 1 : 0];
-  if (!h)
+  const bool stereo = renderer->GetRenderWindow()->GetStereoRender() != 0;
+  const bool rightEye = stereo && renderer->GetActiveCamera()->GetLeftEye() == 0;
+  if (!stereo)
   {
-    h = new TemporalHistory;
+    // Mono again: this renderer's right-eye history would be stale when stereo comes back.
+    auto stale = std::find_if(all.Entries.begin(), all.Entries.end(),
+      [renderer](const TemporalHistories::Entry& entry) {
+        return entry.Renderer == renderer && entry.RightEye;
+      });
+    if (stale != all.Entries.end())
+    {
+      stale->History->Release(renderer->GetRenderWindow());
+      all.Entries.erase(stale);
+    }
   }
-  this->History = h;
-  if (!renderer->GetRenderWindow()->GetStereoRender() && this->EyeHistories[1])
+  auto found = std::find_if(all.Entries.begin(), all.Entries.end(),
+    [renderer, rightEye](const TemporalHistories::Entry& entry) {
+      return entry.Renderer == renderer && entry.RightEye == rightEye;
+    });
+  if (found == all.Entries.end())
   {
-    // Mono again: the right eye's history would be stale when stereo comes back.
-    this->EyeHistories[1]->Release(renderer->GetRenderWindow());
-    delete this->EyeHistories[1];
-    this->EyeHistories[1] = nullptr;
+    TemporalHistories::Entry entry;
+    entry.Renderer = renderer;
+    entry.RightEye = rightEye;
+    entry.History.reset(new TemporalHistory);
+    all.Entries.push_back(std::move(entry));
+    found = all.Entries.end() - 1;
   }
+  found->LastRender = ++all.Renders;
+  this->History = found->History.get();
 }
 
 //------------------------------------------------------------------------------

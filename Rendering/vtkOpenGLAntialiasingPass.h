@@ -142,9 +142,9 @@ public:
    * shows the current frame alone. The camera's parameters are the same after a render as before
    * it; its modified time advances. Switching it on resets the history. Temporal antialiasing
    * renders one sample per pixel: with it on, MultiSamples is not used (a warning says so once).
-   * Stereo renders (vtkRenderWindow::StereoRenderOn) keep one history per eye, each eye's
-   * renders being its own sequence of frames (the right eye's history is dropped when the window
-   * renders in mono again).
+   * The history is kept per renderer (a pass shared by several renderers) and, in stereo
+   * (vtkRenderWindow::StereoRenderOn), per eye: each eye's renders are a sequence of frames of
+   * their own (the right eye's history is dropped when the window renders in mono again).
    */
   virtual void SetTemporal(bool temporal);
   vtkGetMacro(Temporal, bool);
@@ -174,8 +174,8 @@ public:
 
   /**
    * Frames averaged in the history since the scene and camera last changed (1 after a reset or a
-   * render with a moving camera; 0 before the first temporal render). In stereo, the fewer of the
-   * two eyes'.
+   * render with a moving camera; 0 before the first temporal render). Where the pass keeps several
+   * histories (several renderers, stereo), the fewest of those it rendered last (one render each).
    */
   int GetAccumulatedFrames() const;
 
@@ -414,12 +414,14 @@ private:
   double TemporalWeight = 0.1;
   int ConvergedFrames = 16;
   class TemporalHistory;
-  // The histories of the left eye (or of a mono render) and of the right eye of a stereo render;
-  // History is the one of the eye being rendered.
-  TemporalHistory* EyeHistories[2] = { nullptr, nullptr };
+  // The histories of the renderers, and of the eyes of stereo renders, that the pass renders;
+  // History is the one of the render under way.
+  class TemporalHistories;
+  TemporalHistories* Histories = nullptr;
   TemporalHistory* History = nullptr;
-  // Points History at the history of the eye that `s` renders, made when first needed.
-  void SelectEyeHistory(const vtkRenderState* s);
+  // Points History at the history of the renderer and eye that `s` renders, made when first
+  // needed.
+  void SelectHistory(const vtkRenderState* s);
   // Before the delegate's render: decides whether the history is kept and jitters the camera.
   void BeginTemporalFrame(const vtkRenderState* s, const Frame& frame);
   // After it: puts the camera back and keeps the scene's state for the next render.

@@ -10,7 +10,8 @@
 //   turning it off again gives the default result back;
 // - two viewports: each equals the pass on a window of the viewport's size alone, and the CPU
 //   filter on the viewport's plain render (so the pass reads and writes its own viewport only, at
-//   the right offset); one pass object shared by both renderers gives the same image.
+//   the right offset); one pass object shared by both renderers gives the same image, and with
+//   Temporal on the same converged still as a pass per renderer.
 // No errors are reported on the way. The base's resources, tiling, multisampling and the missing
 // delegate are tested in TestAntialiasingPassResources, layers in TestAntialiasingPassLayers,
 // selection in TestAntialiasingPassSelection; the baselines of TestMLAAPassTwoViewports and
@@ -147,7 +148,33 @@ void TwoViewports(const PassMethod& method, MessageObserver* messages)
   messages->Watch(shared);
   two.Renderers[1]->SetPass(shared);
   MLAA_CHECK(Compare(result, vtkMLAAScenes::Capture(two.Window), 0.0).Count == 0);
+
+  // The same with Temporal on: the shared pass keeps a history per renderer, so that its
+  // converged still is that of a pass per renderer (one history would be reset at every render,
+  // the renderers' scenes differing).
+  shared->SetTemporal(true);
+  const int sharedRenders = shared->RenderConverged(two.Window);
+  std::cout << "shared temporal pass: " << shared->GetAccumulatedFrames() << " frames after "
+            << sharedRenders << " renders" << std::endl;
+  MLAA_CHECK(shared->GetAccumulatedFrames() >= shared->GetConvergedFrames());
+  auto sharedStill = vtkMLAAScenes::Capture(two.Window);
+  StopPass(two.Renderers[0], two.Window);
   two.Renderers[1]->SetPass(nullptr);
+  vtkOpenGLAntialiasingPass* own[2];
+  for (int side = 0; side < 2; ++side)
+  {
+    own[side] = method.Use(two.Renderers[side]);
+    messages->Watch(own[side]);
+    own[side]->SetTemporal(true);
+  }
+  own[0]->RenderConverged(two.Window);
+  MLAA_CHECK(own[0]->GetAccumulatedFrames() >= own[0]->GetConvergedFrames() &&
+    own[1]->GetAccumulatedFrames() >= own[1]->GetConvergedFrames());
+  const Difference stills = Compare(vtkMLAAScenes::Capture(two.Window), sharedStill, 2.0);
+  std::cout << "converged stills, shared pass against a pass per renderer: " << stills.Pixels
+            << " pixels differ" << std::endl;
+  MLAA_CHECK(stills.Count == 0);
+  MLAA_CHECK(Compare(sharedStill, result, 2.0).Pixels > 100); // the still is not the single frame
 }
 }
 
