@@ -1051,7 +1051,8 @@ int vtkOpenGLAntialiasingPass::GetAccumulatedFrames() const
     return 0;
   }
   const TemporalHistories& all = *this->Histories;
-  const std::uint64_t recent = all.Renders - std::min<std::uint64_t>(all.Renders, all.Entries.size());
+  const std::uint64_t recent =
+    all.Renders - std::min<std::uint64_t>(all.Renders, all.Entries.size());
   int accumulated = std::numeric_limits<int>::max();
   for (const auto& entry : all.Entries)
   {
