@@ -455,20 +455,7 @@ void vtkOpenGLAntialiasingPass::PrepareTargets(const Frame& frame, bool depth)
     reallocated = true;
   }
   reallocated |= this->PrepareMethodTargets(frame);
-  if (reallocated)
-  {
-    // Framebuffer objects remember their attachments: start afresh with the new textures.
-    DeleteObject(this->DelegateFramebuffer, renWin);
-    DeleteObject(this->WorkFramebuffer, renWin);
-  }
-  for (vtkOpenGLFramebufferObject** fbo : { &this->DelegateFramebuffer, &this->WorkFramebuffer })
-  {
-    if (!*fbo)
-    {
-      * fbo = vtkOpenGLFramebufferObject::New();
-      (*fbo)->SetContext(renWin);
-    }
-  }
+  PrepareFramebuffers(renWin, reallocated, { &this->DelegateFramebuffer, &this->WorkFramebuffer });
 }
 
 //------------------------------------------------------------------------------
@@ -1253,8 +1240,7 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
     h.Counts[0] = NewTexture(renWin);
     h.Counts[1] = NewTexture(renWin);
     h.Mask = NewTexture(renWin);
-    h.Framebuffer = vtkOpenGLFramebufferObject::New();
-    h.Framebuffer->SetContext(renWin);
+    PrepareFramebuffers(renWin, false, { &h.Framebuffer });
   }
   // Previous keeps the method's frame of the last unjittered render (a still accumulation's
   // jittered frames go to Current and are not kept: the still scene's unjittered frame is the one
@@ -1633,19 +1619,7 @@ void vtkOpenGLAntialiasingPass::PrepareSampleTargets(const Frame& frame, int sam
   // The sum of N images, each scaled by 1 / N: full floats, blended.
   reallocated |= AllocateColorTarget(
     this->AccumulationTexture, frame.Width, frame.Height, 4, VTK_FLOAT, false, GL_RGBA32F);
-  if (reallocated)
-  {
-    DeleteObject(this->SamplesFramebuffer, renWin);
-    DeleteObject(this->SampleFramebuffer, renWin);
-  }
-  for (vtkOpenGLFramebufferObject** fbo : { &this->SamplesFramebuffer, &this->SampleFramebuffer })
-  {
-    if (!*fbo)
-    {
-      *fbo = vtkOpenGLFramebufferObject::New();
-      (*fbo)->SetContext(renWin);
-    }
-  }
+  PrepareFramebuffers(renWin, reallocated, { &this->SamplesFramebuffer, &this->SampleFramebuffer });
 }
 
 //------------------------------------------------------------------------------

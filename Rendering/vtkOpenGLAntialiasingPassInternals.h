@@ -6,6 +6,7 @@
 #ifndef vtkOpenGLAntialiasingPassInternals_h
 #define vtkOpenGLAntialiasingPassInternals_h
 
+#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
@@ -186,6 +187,25 @@ void DeleteObject(T*& object, vtkWindow* w)
     object->ReleaseGraphicsResources(w);
     object->Delete();
     object = nullptr;
+  }
+}
+
+// Makes each framebuffer object of `framebuffers` that is missing, and afresh all of them with
+// `reset` (framebuffer objects remember their attachments: after new textures, start anew).
+inline void PrepareFramebuffers(vtkOpenGLRenderWindow* renWin, bool reset,
+  std::initializer_list<vtkOpenGLFramebufferObject**> framebuffers)
+{
+  for (vtkOpenGLFramebufferObject** fbo : framebuffers)
+  {
+    if (reset)
+    {
+      DeleteObject(*fbo, renWin);
+    }
+    if (!*fbo)
+    {
+      *fbo = vtkOpenGLFramebufferObject::New();
+      (*fbo)->SetContext(renWin);
+    }
   }
 }
 } // namespace vtkOpenGLAntialiasingPassInternals
