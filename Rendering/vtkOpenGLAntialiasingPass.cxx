@@ -94,6 +94,7 @@ public:
     RESET,  // the current frame alone
     STILL,  // running average with the history at the same pixel
     MOVING, // reprojected, clamped history
+    HOLD,   // a converged still: the history as it is, neither jittered nor blended
   };
 
   vtkTextureObject* Current = nullptr;               // this frame, antialiased
@@ -1173,12 +1174,18 @@ void vtkOpenGLAntialiasingPass::BeginTemporalFrame(const vtkRenderState* s, cons
     reprojection->Transpose(); // vtkShaderProgram uploads the elements as GLSL's column order
     std::memcpy(h.Reprojection, reprojection->GetData(), sizeof(h.Reprojection));
   }
+  else if (h.Accumulated >= this->ConvergedFrames)
+  {
+    // Converged (RenderConverged's aim): further renders of the still scene show the same image,
+    // whatever their number, and leave the camera alone.
+    h.FrameMode = TemporalHistory::HOLD;
+  }
   else
   {
     h.FrameMode = TemporalHistory::STILL;
     ++h.Accumulated;
   }
-  if (h.FrameMode != TemporalHistory::STILL)
+  if (h.FrameMode != TemporalHistory::STILL && h.FrameMode != TemporalHistory::HOLD)
   {
     // A still camera keeps the matrices its accumulation started with, so that changes below
     // StillDisplacement cannot add up.
@@ -1287,9 +1294,11 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
   // The method antialiases this frame into Current. A still accumulation averages the jittered
   // renders themselves (see below), so the method does not run there: its frame would not be read.
   const bool still = h.FrameMode == TemporalHistory::STILL;
+  // A converged still (HOLD) neither runs the method nor blends: the history is the result.
+  const bool hold = h.FrameMode == TemporalHistory::HOLD;
   ostate->PushFramebufferBindings();
   bool done = true;
-  if (!still)
+  if (!still && !hold)
   {
     Frame local = frame;
     local.X = 0;
@@ -1317,8 +1326,8 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
   }
 
   // The blend into the other history.
-  const int next = 1 - h.Latest;
-  if (done)
+  const int next = hold ? h.Latest : 1 - h.Latest;
+  if (done && !hold)
   {
     bindTarget(h.Histories[next]);
     h.Framebuffer->AddColorAttachment(1, h.Counts[next]); // each pixel's count of frames
@@ -1421,7 +1430,7 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
   }
   h.Latest = next;
   h.Valid = true;
-  if (!still)
+  if (!still && !hold)
   {
     std::swap(h.Current, h.Previous);
     h.PreviousValid = true;

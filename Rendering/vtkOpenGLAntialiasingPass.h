@@ -115,7 +115,9 @@ public:
    *   the mean of N jittered renders, which converges to the supersampled picture (line widths
    *   and point sizes kept); the first frame of an accumulation is the method's antialiased frame,
    *   not jittered (it may be the first frame of a motion)
-   *   (RenderConverged asks for a converged still);
+   *   (RenderConverged asks for a converged still); once ConvergedFrames frames are accumulated,
+   *   further renders of the unchanged scene hold the converged still: neither jittered nor
+   *   blended, the same image however many renders follow, the camera left alone;
    * - when the camera moves, the frame (not jittered) is antialiased by the method, and the
    *   history is reprojected with the delegate's depth and the previous and current
    *   view-projection matrices, clamped to the range of the 3 x 3 neighbourhood of the current
@@ -164,9 +166,10 @@ public:
 
   // /@{
   /**
-   * Number of frames of an unchanged scene that RenderConverged accumulates. Default 16, clamped
-   * to [1, 4096]. The still jitter's offsets are placed for this many renders (rounded up to a
-   * power of two): they then lie on the centres of as many equal strata of the pixel.
+   * Number of frames of an unchanged scene that RenderConverged accumulates, and after which
+   * further renders hold the converged still (raising it resumes the accumulation). Default 16,
+   * clamped to [1, 4096]. The still jitter's offsets are placed for this many renders (rounded up
+   * to a power of two): they then lie on the centres of as many equal strata of the pixel.
    */
   vtkSetClampMacro(ConvergedFrames, int, 1, 4096);
   vtkGetMacro(ConvergedFrames, int);
