@@ -347,7 +347,6 @@ private:
     this->LookUpArea(e1, e2, d1, d2, half1, half2, w);
   }
 
-private:
   // One end of an orthogonal line for CornerExtrapolation: crossing-edge code and distance from
   // the pixel, whether the line's course past it is unseen (a corner of a shape, or the image
   // border), and, at a step of a staircase, the length of the staircase's next run (0: none).
@@ -552,9 +551,8 @@ private:
   {
     return this->Whole.Contains(x, y) ? this->LeftAt(x, y) : 0;
   }
-  // Whether one of the two pixels across the edgel of (x, y), horizontal (this pixel and the one
-  // above it) or vertical (this pixel and the one left of it), is one pixel thin across it: it
-  // has an edgel on its far side too. A line with crossing edges on both sides at both ends
+  // Whether one of the two pixels across the edgel of l's pixel (that pixel and the one at v + 1:
+  // above it, or left of it) is one pixel thin across it: it has an edgel on its far side too. A line with crossing edges on both sides at both ends
   // (code 4 at both) is read as a thin feature's run only there (vtkMLAAAreaTexture); between
   // the junctions of wider shapes (a checkerboard's corners, say) it keeps no slope.
   template <bool V>

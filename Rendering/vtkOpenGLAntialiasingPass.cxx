@@ -46,7 +46,6 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
-#include <iterator>
 #include <limits>
 #include <memory>
 #include <utility>
@@ -1386,17 +1385,17 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
       vtkShaderProgram* program = h.BlendQuad.Quad->Program;
       // The textures of this variant (the camera moving reads no counts; a still camera reads
       // neither this frame before the method nor the last one).
-      std::vector<std::pair<const char*, vtkTextureObject*>> textures = {
-        { "currentTexture", current }, { "historyTexture", h.Histories[h.Latest] },
-        { "depthTexture", this->DepthTexture }
-      };
+      ScopedTextures textures(program,
+        { { "currentTexture", current }, { "historyTexture", h.Histories[h.Latest] },
+          { "depthTexture", this->DepthTexture } });
       if (!reproject)
       {
-        textures.emplace_back("countTexture", h.Counts[h.Latest]);
+        textures.Bind(program, "countTexture", h.Counts[h.Latest]);
       }
       else
       {
-        textures.emplace_back("frameTexture", this->ColorTexture); // not jittered: the clamp's range
+        // Not jittered: the clamp's range.
+        textures.Bind(program, "frameTexture", this->ColorTexture);
         float matrix[16];
         for (int i = 0; i < 16; ++i)
         {
@@ -1406,12 +1405,7 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
       }
       if (keep)
       {
-        textures.emplace_back("previousTexture", h.Previous);
-      }
-      ScopedTextures bound;
-      for (const auto& texture : textures)
-      {
-        bound.Bind(program, texture.first, texture.second);
+        textures.Bind(program, "previousTexture", h.Previous);
       }
       program->SetUniformf("currentWeight", weight);
       h.BlendQuad.Quad->Render();
