@@ -30,7 +30,9 @@
 #include "vtkMLAANeighborhoodBlendingFS.h"
 #include "vtkMLAAReconstructionFS.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <string>
 
 #include "vtk_glew.h" // For GL enums only: every call goes through VTK's classes
@@ -87,33 +89,32 @@ bool vtkOpenGLMLAAPass::PrepareMethodTargets(const Frame& frame)
   reallocated |=
     AllocateColorTarget(this->WeightsTexture, width, height, 4, VTK_UNSIGNED_CHAR, false);
   reallocated |= AllocateDepthTarget(this->MaskTexture, width, height, vtkTextureObject::Fixed16);
-  // Orthogonal and diagonal lengths by recursive doubling, each where it is used.
-  for (const bool diagonal : { false, true })
-  {
-    vtkTextureObject** textures = diagonal ? this->DiagonalLengthsTextures : this->LengthsTextures;
-    const bool used =
-      diagonal ? this->GetUsesDiagonalRecursiveDoubling() : this->GetUsesRecursiveDoubling();
-    for (int i = 0; i < 2; ++i)
+  // With recursive doubling only, else not kept (and no framebuffer keeps them attached): the
+  // orthogonal lengths, RGBA16F (integers up to 2048 exactly), and with diagonal detection the
+  // counts of staircase units, up to GetStaircaseCountReach() each way, two to a byte of an RG8
+  // texture.
+  const bool doubling = this->GetUsesRecursiveDoubling();
+  auto keep = [&](vtkTextureObject*& texture, bool used, int components, int vtkType,
+                unsigned int internalFormat) {
+    if (!used)
     {
-      vtkTextureObject*& lengths = textures[i];
-      if (used)
-      {
-        if (!lengths)
-        {
-          lengths = NewTexture(renWin);
-        }
-        // RGBA16F: integers up to 2048 exactly; nearest.
-        reallocated |=
-          AllocateColorTarget(lengths, width, height, 4, VTK_FLOAT, false, GL_RGBA16F);
-      }
-      else
-      {
-        // Not needed by the search loop: not kept (and no framebuffer keeps them attached).
-        reallocated |= lengths != nullptr;
-        DeleteObject(lengths, renWin);
-      }
+      reallocated |= texture != nullptr;
+      DeleteObject(texture, renWin);
+      return;
     }
+    if (!texture)
+    {
+      texture = NewTexture(renWin);
+    }
+    reallocated |= AllocateColorTarget(
+      texture, width, height, components, vtkType, false, internalFormat);
+  };
+  for (vtkTextureObject*& lengths : this->LengthsTextures)
+  {
+    keep(lengths, doubling, 4, VTK_FLOAT, GL_RGBA16F);
   }
+  keep(this->StaircaseCountsTexture, doubling && this->Options->GetDiagonalDetection(), 2,
+    VTK_UNSIGNED_CHAR, GL_RG8);
   // The reconstructed image (vtkMLAAOptions::Reconstruction), in the colour texture's format.
   if (this->Options->GetReconstruction())
   {
@@ -280,17 +281,14 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
     }
   }
 
-  // Line lengths by recursive doubling (LineLengths), on the same pixels, along the rows and
-  // columns and, with diagonal detection, along the diagonals in the same passes.
+  // Line lengths by recursive doubling (LineLengths), and the counts of staircase units with
+  // diagonal detection, on the same pixels.
   vtkTextureObject* lengths = nullptr;
-  vtkTextureObject* diagonalLengths = nullptr;
-  if (this->GetUsesRecursiveDoubling())
+  if (this->GetUsesRecursiveDoubling() && !this->CountLines(renWin, lengths))
   {
-    if (!this->ComputeLineLengths(renWin, lengths, diagonalLengths))
-    {
-      return false;
-    }
+    return false;
   }
+  const bool staircaseCounts = lengths && this->Options->GetDiagonalDetection();
 
   // Pass 2: blending weights, on the pixels whose mask depth was written only.
   fbo->AddColorAttachment(0, this->WeightsTexture);
@@ -316,7 +314,8 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
     Define("MLAA_CORNER_EXTRAPOLATION", this->Options->GetCornerExtrapolation()) +
     Define("MLAA_MINIMUM_DIAGONAL_LENGTH", vtkMLAAOptions::MinimumDiagonalLength) +
     Define("MLAA_RECURSIVE_DOUBLING", lengths != nullptr) +
-    Define("MLAA_DIAGONAL_LENGTHS", diagonalLengths != nullptr) +
+    (staircaseCounts ? Define("MLAA_STAIRCASE_REACH", this->GetStaircaseCountReach())
+                     : std::string()) +
     Define("MLAA_SAMPLE_AREAS", sampleAreas) +
     (sampleAreas && set.Shaded
         ? Define("MLAA_SAMPLES_SHADED", static_cast<int>(set.Offsets.size() / 2))
@@ -354,9 +353,9 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   {
     textures.Bind(program, "lengthsTexture", lengths);
   }
-  if (diagonalLengths)
+  if (staircaseCounts)
   {
-    textures.Bind(program, "diagonalLengthsTexture", diagonalLengths);
+    textures.Bind(program, "staircaseCountsTexture", this->StaircaseCountsTexture);
   }
   this->WeightsQuad.Quad->Render();
   ostate->vtkglDepthMask(GL_TRUE);
@@ -411,33 +410,31 @@ void vtkOpenGLMLAAPass::PrepareSampleAreas(vtkOpenGLRenderWindow* renWin, const 
 }
 
 //------------------------------------------------------------------------------
-bool vtkOpenGLMLAAPass::ComputeLineLengths(
-  vtkOpenGLRenderWindow* renWin, vtkTextureObject*& lengths, vtkTextureObject*& diagonalLengths)
+bool vtkOpenGLMLAAPass::CountLines(vtkOpenGLRenderWindow* renWin, vtkTextureObject*& lengths)
 {
   vtkOpenGLState* ostate = renWin->GetState();
   vtkOpenGLFramebufferObject* fbo = this->WorkFramebuffer;
-  const bool diagonals = this->GetUsesDiagonalRecursiveDoubling();
-  const unsigned int outputs = diagonals ? 2 : 1;
-  // Attaches textures[0][i] (and textures[1][i]) as the outputs.
-  vtkTextureObject** textures[2] = { this->LengthsTextures, this->DiagonalLengthsTextures };
-  auto attach = [&](int i) {
-    for (unsigned int k = 0; k < outputs; ++k)
-    {
-      fbo->AddColorAttachment(k, textures[k][i]);
-    }
-    fbo->ActivateDrawBuffers(outputs);
-  };
-  // Every texture starts at 0: the passes write the edge pixels only, and the jumps of the
-  // doubling land on pixels without an edge too, which must read 0.
+  const bool staircases = this->Options->GetDiagonalDetection();
+  // Every texture of the doubling starts at 0: the passes write the edge pixels only, and the
+  // jumps land on pixels without an edge too, which must read 0. (The counts of staircase units
+  // need no clearing: the weights pass reads those of units only, which are edge pixels.)
   ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
-  attach(0);
+  fbo->AddColorAttachment(0, this->LengthsTextures[0]);
+  fbo->ActivateDrawBuffer(0);
   ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
-  attach(1);
+  fbo->AddColorAttachment(0, this->LengthsTextures[1]);
   ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
 
-  // Initialisation: the 0/1 flags of every direction into the textures [1] (still attached).
-  const std::string defines = Define("MLAA_DIAGONAL_LENGTHS", diagonals);
-  if (!this->ReadyQuad(renWin, this->LengthsInitQuad, vtkMLAALineLengthsInitFS, defines))
+  // Initialisation: the 0/1 flags of every direction into LengthsTextures[1], and the counts of
+  // staircase units into StaircaseCountsTexture.
+  if (staircases)
+  {
+    fbo->AddColorAttachment(1, this->StaircaseCountsTexture);
+    fbo->ActivateDrawBuffers(2);
+  }
+  if (!this->ReadyQuad(renWin, this->LengthsInitQuad, vtkMLAALineLengthsInitFS,
+        Define("MLAA_STAIRCASE_COUNTS", staircases) +
+          Define("MLAA_STAIRCASE_REACH", this->GetStaircaseCountReach())))
   {
     return false;
   }
@@ -446,10 +443,14 @@ bool vtkOpenGLMLAAPass::ComputeLineLengths(
       this->LengthsInitQuad.Quad->Program, { { "edgesTexture", this->EdgesTexture } });
     this->LengthsInitQuad.Quad->Render();
   }
+  if (staircases)
+  {
+    fbo->RemoveColorAttachment(1);
+  }
 
   // Doubling passes for levels 1, 4, 16, ... until the counts are exact up to the maximum
-  // distance (4 level >= maximum distance), reading one set of textures and writing the other.
-  if (!this->ReadyQuad(renWin, this->LengthsQuad, vtkMLAALineLengthsFS, defines))
+  // distance (4 level >= maximum distance), reading one texture and writing the other.
+  if (!this->ReadyQuad(renWin, this->LengthsQuad, vtkMLAALineLengthsFS, std::string()))
   {
     return false;
   }
@@ -458,25 +459,25 @@ bool vtkOpenGLMLAAPass::ComputeLineLengths(
   int source = 1;
   for (int level = 1; level < maxDistance; level *= 4)
   {
-    attach(1 - source);
-    {
-      ScopedTextures read(program, { { "lengthsTexture", textures[0][source] } });
-      if (diagonals)
-      {
-        read.Bind(program, "diagonalLengthsTexture", textures[1][source]);
-      }
-      program->SetUniformf("level", static_cast<float>(level));
-      this->LengthsQuad.Quad->Render();
-    }
+    fbo->AddColorAttachment(0, this->LengthsTextures[1 - source]);
+    fbo->ActivateDrawBuffer(0);
+    const ScopedTextures read(program, { { "lengthsTexture", this->LengthsTextures[source] } });
+    program->SetUniformf("level", static_cast<float>(level));
+    this->LengthsQuad.Quad->Render();
     source = 1 - source;
   }
-  if (diagonals)
-  {
-    fbo->RemoveColorAttachment(1);
-  }
-  lengths = textures[0][source];
-  diagonalLengths = diagonals ? textures[1][source] : nullptr;
+  lengths = this->LengthsTextures[source];
   return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkOpenGLMLAAPass::GetStaircaseCountReach()
+{
+  // A unit reads about 2 reach units when counting and 2 maximum distance / reach counts when
+  // following its staircase both ways: least at the square root of the maximum distance.
+  const int reach =
+    static_cast<int>(std::lround(std::sqrt(static_cast<double>(this->Options->GetMaxDistance()))));
+  return std::min(std::max(reach, 2), 15); // 15: two counts are packed in a byte
 }
 
 //------------------------------------------------------------------------------
@@ -661,7 +662,7 @@ void vtkOpenGLMLAAPass::ReleaseMethodResources(vtkWindow* w)
   for (vtkTextureObject** texture : { &this->EdgesTexture, &this->WeightsTexture,
          &this->MaskTexture, &this->AreaTexture,
          &this->DiagonalAreaTexture, &this->LengthsTextures[0], &this->LengthsTextures[1],
-         &this->DiagonalLengthsTextures[0], &this->DiagonalLengthsTextures[1],
+         &this->StaircaseCountsTexture,
          &this->ReconstructedTexture, &this->SampleAreaTexture })
   {
     DeleteObject(*texture, w);
@@ -693,8 +694,7 @@ vtkIdType vtkOpenGLMLAAPass::GetMethodTargetMemorySize()
     TextureBytes(this->MaskTexture, 2) +
     TextureBytes(this->AreaTexture, 8) + TextureBytes(this->DiagonalAreaTexture, 12) +
     TextureBytes(this->LengthsTextures[0], 8) + TextureBytes(this->LengthsTextures[1], 8) +
-    TextureBytes(this->DiagonalLengthsTextures[0], 8) +
-    TextureBytes(this->DiagonalLengthsTextures[1], 8) + TextureBytes(this->SampleAreaTexture, 8);
+    TextureBytes(this->StaircaseCountsTexture, 2) + TextureBytes(this->SampleAreaTexture, 8);
 }
 
 //------------------------------------------------------------------------------
@@ -709,12 +709,6 @@ bool vtkOpenGLMLAAPass::GetUsesRecursiveDoubling()
     default:
       return this->Options->GetCountsExactLineLengths();
   }
-}
-
-//------------------------------------------------------------------------------
-bool vtkOpenGLMLAAPass::GetUsesDiagonalRecursiveDoubling()
-{
-  return this->Options->GetDiagonalDetection() && this->GetUsesRecursiveDoubling();
 }
 
 //------------------------------------------------------------------------------

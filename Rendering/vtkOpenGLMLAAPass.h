@@ -23,8 +23,9 @@
  *    fetch and stopping at crossing edges (or, with LineLengths, line lengths counted beforehand
  *    by recursive doubling), crossing edges read with a quarter-pixel offset, and
  *    the area texture of vtkMLAAAreaTexture, uploaded once per maximum distance; with
- *    DiagonalDetection, staircases of one-pixel steps are followed texel by texel and take their
- *    weights from vtkMLAAAreaTexture's diagonal table;
+ *    DiagonalDetection, staircases of one-pixel steps are followed texel by texel (or, with
+ *    LineLengths, through counts of their units made beforehand) and take their weights from
+ *    vtkMLAAAreaTexture's diagonal table;
  * 3. blending of each pixel with its four neighbours (along the dominant line only at a
  *    staircase's corner, with DominantDirectionBlending).
  * It reads the same vtkMLAAOptions as the CPU filter vtkImageMLAA (share one object with
@@ -167,9 +168,13 @@ public:
    * - AUTOMATIC (default): the rule both back ends share,
    *   vtkMLAAOptions::GetCountsExactLineLengths(): RECURSIVE_DOUBLING from
    *   vtkMLAAOptions::ExactLineLengthsSteps search steps on, SEARCH_LOOP below.
-   * The same choice applies to the staircases of vtkMLAAOptions::DiagonalDetection: searched
-   * one unit per read from every unit (up to GetMaxDistance() units each way), or counted in the
-   * same doubling passes along the diagonals, into two more RGBA16F textures.
+   * The same choice applies to the staircases of vtkMLAAOptions::DiagonalDetection: with
+   * SEARCH_LOOP each unit searches its staircase one unit per read (up to GetMaxDistance() units
+   * each way); with RECURSIVE_DOUBLING the pass that initialises the doubling also counts, for
+   * each unit, the units that follow it up to a reach of about the square root of
+   * GetMaxDistance() (into an RG8 texture, 2 bytes per pixel), and the weights pass follows a
+   * staircase one read per reach. (Counting them without the doubling would cost a pass of its
+   * own, which on llvmpipe costs more on common scenes than the searches it saves.)
    */
   enum LineLengthMethods
   {
@@ -190,12 +195,6 @@ public:
    * AUTOMATIC resolved for the current options.
    */
   bool GetUsesRecursiveDoubling();
-
-  /**
-   * Whether the next render counts the lengths of staircases (vtkMLAAOptions::DiagonalDetection)
-   * by recursive doubling: GetUsesRecursiveDoubling() with diagonal detection on.
-   */
-  bool GetUsesDiagonalRecursiveDoubling();
 
   ///@{
   /**
@@ -266,11 +265,14 @@ private:
   // Passes 1 and 2 into EdgesTexture and WeightsTexture.
   bool ComputeEdgesAndWeights(vtkOpenGLRenderWindow* renWin, int width, int height, bool useAlpha);
   // The line lengths by recursive doubling into one of LengthsTextures (`lengths`) and, with
-  // diagonal detection, in the same passes the lengths of staircases into one of
-  // DiagonalLengthsTextures (`diagonalLengths`, else null), on the pixels of the mask (the MLAA
-  // framebuffer is bound with the mask and depth test EQUAL).
-  bool ComputeLineLengths(vtkOpenGLRenderWindow* renWin, vtkTextureObject*& lengths,
-    vtkTextureObject*& diagonalLengths);
+  // diagonal detection, in the initialisation pass the counts of the units that follow each
+  // staircase unit, up to GetStaircaseCountReach() each way, into StaircaseCountsTexture (from
+  // which the weights pass follows a staircase one read per reach,
+  // vtkMLAALineLengthsInitFS.glsl); on the pixels of the mask (the MLAA framebuffer is bound
+  // with the mask and depth test EQUAL).
+  bool CountLines(vtkOpenGLRenderWindow* renWin, vtkTextureObject*& lengths);
+  // The reach of the counts of staircase units for the current maximum distance.
+  int GetStaircaseCountReach();
   // Pass 3 (or a debug output) into the target viewport, composited over it with premultiplied
   // alpha when `composite`.
   // With `straightAlpha`, colours are premultiplied before blending and divided by alpha after.
@@ -302,7 +304,7 @@ private:
   vtkTextureObject* AreaTexture = nullptr;
   vtkTextureObject* DiagonalAreaTexture = nullptr;
   vtkTextureObject* LengthsTextures[2] = { nullptr, nullptr }; // RGBA16F, ping-pong
-  vtkTextureObject* DiagonalLengthsTextures[2] = { nullptr, nullptr }; // the same, staircases
+  vtkTextureObject* StaircaseCountsTexture = nullptr; // RG8, with doubling and diagonals
   vtkTextureObject* ReconstructedTexture = nullptr; // with vtkMLAAOptions::Reconstruction only
   int AreaTextureMaxDistance = 0;
   // With MultiSamples and SampleAreas: the area tables of each sample's offsets, stacked

@@ -42,18 +42,18 @@
 //                                 (vtkOpenGLAntialiasingPass::SampleShading, nothing blended
 //                                 per pixel), so samples that agree bound every edge, not only
 //                                 geometric ones (see lineArea)
-//   MLAA_DIAGONAL_LENGTHS         defined (with MLAA_DIAGONAL_DETECTION): the numbers of units of
-//                                 staircases are read from the diagonal lengths that
-//                                 vtkMLAALineLengthsFS.glsl counted by recursive doubling
-//                                 instead of being searched unit by unit here; the same integers
-//                                 (vtkOpenGLMLAAPass::LineLengths)
+//   MLAA_STAIRCASE_REACH          defined (with MLAA_DIAGONAL_DETECTION and
+//                                 MLAA_RECURSIVE_DOUBLING): the units of staircases are counted
+//                                 beforehand, up to this reach each way; a count below it is
+//                                 final, a count equal to it goes on at the unit that far
+//                                 (followStaircase); the same integers as the search
 //
 // With MLAA_DIAGONAL_DETECTION, edgels that belong to a staircase of one-pixel steps (at least
 // minimumDiagonalLength units) take their weights from the 45-degree line through it instead,
 // from the diagonal area table (vtkMLAAAreaTexture::ComputeDiagonalAreas). Exact texel reads are
-// used there; the staircase is followed one unit per step, or its lengths are read from the
-// diagonal lengths texture (vtkImageMLAA counts the same lengths as run lengths along the
-// diagonals, WeightsComputer::ComputeDiagonalLengths).
+// used there; the staircase is searched one unit per step, or followed through the counts of
+// vtkMLAALineLengthsInitFS.glsl, one read per reach; vtkImageMLAA counts the same lengths
+// (WeightsComputer::ComputeDiagonalLengths).
 //
 // Must match vtkImageMLAA's blending weights (ComputeBlendingWeights in Filters/vtkMLAABlendingWeights.cxx);
 // the distances of searchLine must equal the line lengths of
@@ -81,10 +81,11 @@ uniform vec2 sampleOffsets[MLAA_SAMPLES_SHADED]; // from the pixel centre, x rig
 // Line lengths (left, right, down, up), RGBA16F integers, exact up to 4^passes >= maxDistance.
 uniform sampler2D lengthsTexture;
 #endif
-#ifdef MLAA_DIAGONAL_LENGTHS
-// Units of staircases: rising towards (-1, -1), (+1, +1), falling towards (-1, +1), (+1, -1);
-// RGBA16F integers, exact up to the maximum distance (vtkMLAALineLengthsFS.glsl).
-uniform sampler2D diagonalLengthsTexture;
+#ifdef MLAA_STAIRCASE_REACH
+// Counts of the units of staircases that follow each unit, up to MLAA_STAIRCASE_REACH: rising
+// towards (-1, -1), (+1, +1), falling towards (-1, +1), (+1, -1); RG8, two to a byte
+// (vtkMLAALineLengthsInitFS.glsl, countsAt).
+uniform sampler2D staircaseCountsTexture;
 #endif
 
 const int maxSearchSteps = MLAA_MAX_SEARCH_STEPS;
@@ -380,10 +381,51 @@ const bool readThinRuns = false;
 const bool readThinRuns = true;
 #endif
 
-// A unit of a rising staircase (up and to the right) is a pixel with both edgels; a unit of a
-// falling one, named by its pixel q, is q's top edgel and its right neighbour's left edgel.
-// The unchecked tests read without the image's bounds: their caller keeps every pixel they read
-// inside it; the checked ones find no unit outside it.
+#ifdef MLAA_DIAGONAL_DETECTION
+#ifdef MLAA_STAIRCASE_REACH
+// With recursive doubling, the units of staircases were counted beforehand
+// (vtkMLAALineLengthsInitFS.glsl): a unit of a rising staircase (up and to the right) is a pixel
+// with both edgels; a unit of a falling one, named by its pixel q, is q's top edgel and its right
+// neighbour's left edgel.
+// The four counts of pixel q: rising towards -x and +x, then falling towards -x and +x.
+vec4 countsAt(ivec2 q)
+{
+  // RG8: two counts to a byte, the count towards -x plus 16 times the count towards +x.
+  vec2 v = round(255.0 * texelFetch(staircaseCountsTexture, q, 0).rg);
+  vec2 high = floor(v / 16.0);
+  return vec4(v.r - 16.0 * high.r, high.r, v.g - 16.0 * high.g, high.g);
+}
+
+// The counts of units that follow unit q along its staircase, towards its first end (-x) and
+// towards its second, each up to the reach (0 where q is no unit of that kind).
+ivec2 unitCounts(ivec2 q, bool rising)
+{
+  vec4 counts = countsAt(clamp(q, ivec2(0), ivec2(edgesSize) - 1));
+  return ivec2(round(rising ? counts.rg : counts.ba));
+}
+
+// Number of further units of the staircase through unit q in `direction` (counts' `channel`),
+// at most the maximum distance, given its unitCounts that way; reachedEnd tells whether the
+// staircase ended within it. A count that equals the reach goes on at the unit that far, which is
+// counted too: one read per reach units.
+int followStaircase(ivec2 q, ivec2 direction, int channel, int count, out bool reachedEnd)
+{
+  int maxDistance = cellSize - 1;
+  int last = count;
+  while (last == MLAA_STAIRCASE_REACH && count < maxDistance)
+  {
+    last = int(round(countsAt(q + count * direction)[channel]));
+    count += last;
+  }
+  reachedEnd = count < maxDistance;
+  return min(count, maxDistance);
+}
+#else
+// Otherwise they are searched here, one unit per step. A unit of a rising staircase (up and to
+// the right) is a pixel with both edgels; a unit of a falling one, named by its pixel q, is q's
+// top edgel and its right neighbour's left edgel. The unchecked tests read without the image's
+// bounds: their caller keeps every pixel they read inside it; the checked ones find no unit
+// outside it.
 bool risingUnitInside(ivec2 p)
 {
   return all(greaterThan(texelFetch(edgesTexture, p, 0).rg, vec2(0.5)));
@@ -399,36 +441,23 @@ bool isFallingUnit(ivec2 q)
   return insideImage(q) && insideImage(q + ivec2(1, 0)) && fallingUnitInside(q);
 }
 
-// Whether the neighbours of unit q along its staircase, towards its first end (-x) and its
-// second, are units: read from the diagonal lengths (a count of at least 1) where they were
-// counted, from the edgels otherwise.
-bvec2 nextUnits(ivec2 q, bool rising)
+// Whether the neighbours of unit q along its staircase, towards its first end (-x) and towards
+// its second, are units (1) or not (0): the first step of each search.
+ivec2 unitCounts(ivec2 q, bool rising)
 {
-#ifdef MLAA_DIAGONAL_LENGTHS
-  vec4 counts = texelFetch(diagonalLengthsTexture, clamp(q, ivec2(0), ivec2(edgesSize) - 1), 0);
-  return greaterThan(rising ? counts.rg : counts.ba, vec2(0.5));
-#else
   ivec2 direction = rising ? ivec2(1) : ivec2(1, -1); // towards the second end
-  return rising ? bvec2(isRisingUnit(q - direction), isRisingUnit(q + direction))
-                : bvec2(isFallingUnit(q - direction), isFallingUnit(q + direction));
-#endif
+  bvec2 next = rising ? bvec2(isRisingUnit(q - direction), isRisingUnit(q + direction))
+                      : bvec2(isFallingUnit(q - direction), isFallingUnit(q + direction));
+  return ivec2(next);
 }
 
-// Number of further units of the staircase through p in `direction`, at most the maximum
-// distance; reachedEnd tells whether the staircase ended within it. `next` is whether the first
-// of them, p + direction, is a unit (the caller has read it).
-int searchDiagonal(ivec2 p, ivec2 direction, bool rising, bool next, out bool reachedEnd)
+// Number of further units of the staircase through unit p in `direction` (rising for `channel`
+// 0 and 1), at most the maximum distance, given whether the first of them is a unit (`count`,
+// unitCounts); reachedEnd tells whether the staircase ended within it.
+int followStaircase(ivec2 p, ivec2 direction, int channel, int count, out bool reachedEnd)
 {
   int maxDistance = cellSize - 1;
-#ifdef MLAA_DIAGONAL_LENGTHS
-  // The count of the unit, read instead of searched: the texture's channels are rising, then
-  // falling, each towards -x first.
-  int channel = (rising ? 0 : 2) + (direction.x > 0 ? 1 : 0);
-  int count = int(round(texelFetch(diagonalLengthsTexture, p, 0)[channel]));
-  reachedEnd = count < maxDistance;
-  return min(count, maxDistance);
-#else
-  if (!next)
+  if (count == 0)
   {
     reachedEnd = true;
     return 0;
@@ -438,6 +467,7 @@ int searchDiagonal(ivec2 p, ivec2 direction, bool rising, bool next, out bool re
   // the kind would read for both on every step.
   // The loops read the edgels without the image's bounds: they stop at the last unit inside it
   // (a falling unit also reads the pixel right of it), where the reads would find none.
+  bool rising = channel < 2;
   ivec2 last = ivec2(edgesSize) - ivec2(rising ? 1 : 2, 1);
   ivec2 room = ivec2(direction.x > 0 ? last.x - p.x : p.x, direction.y > 0 ? last.y - p.y : p.y);
   int reach = min(maxDistance, min(room.x, room.y));
@@ -463,8 +493,9 @@ int searchDiagonal(ivec2 p, ivec2 direction, bool rising, bool next, out bool re
   }
   reachedEnd = false;
   return maxDistance;
-#endif
 }
+#endif
+#endif
 
 // End code of the diagonal table (0 nothing, 1 out of the unit's pixel, 2 into it) from what the
 // staircase does past its end: a run along x (flatter) or along y (steeper).
@@ -601,16 +632,16 @@ const int IN = 2;
 
 #ifdef MLAA_DIAGONAL_DETECTION
 // The diagonal areas (vtkMLAAAreaTexture::ComputeDiagonalAreas) of the staircase through unit q,
-// rising or falling, if it has at least MLAA_MINIMUM_DIAGONAL_LENGTH units. `next` tells whether
-// q's neighbours along the staircase, towards its first and its second end, are units. The ends'
-// codes come from what the staircase does past them: a run along x (flatter) or along y
-// (steeper).
-bool staircaseAreas(ivec2 q, bool rising, bvec2 next, out vec3 a)
+// rising or falling, if it has at least MLAA_MINIMUM_DIAGONAL_LENGTH units. `counts` are q's
+// unitCounts. The ends' codes come from what the staircase does past them: a run along x
+// (flatter) or along y (steeper).
+bool staircaseAreas(ivec2 q, bool rising, ivec2 counts, out vec3 a)
 {
   ivec2 direction = rising ? ivec2(1) : ivec2(1, -1); // towards the second end
+  int channel = rising ? 0 : 2;
   bool end1, end2;
-  int d1 = searchDiagonal(q, -direction, rising, next.x, end1);
-  int d2 = searchDiagonal(q, direction, rising, next.y, end2);
+  int d1 = followStaircase(q, -direction, channel, counts.x, end1);
+  int d2 = followStaircase(q, direction, channel + 1, counts.y, end2);
   if (d1 + d2 + 1 < MLAA_MINIMUM_DIAGONAL_LENGTH)
   {
     return false;
@@ -719,12 +750,12 @@ void main()
     // lock-step, llvmpipe among them), and most edge pixels are on none.
     ivec2 dx = ivec2(1, 0);
     const bool single = MLAA_MINIMUM_DIAGONAL_LENGTH <= 1;
-    bvec2 risingNext = nextUnits(p, true);
-    bvec2 qNext = nextUnits(p, false);
-    bvec2 rNext = nextUnits(p - dx, false);
-    int candidates = (top && left && (any(risingNext) || single)) ? 1 : 0;
-    candidates |= (top && leftAt(p + dx) && (any(qNext) || single)) ? 2 : 0;
-    candidates |= (left && topAt(p - dx) && (any(rNext) || single)) ? 4 : 0;
+    ivec2 risingNext = unitCounts(p, true);
+    ivec2 qNext = unitCounts(p, false);
+    ivec2 rNext = unitCounts(p - dx, false);
+    int candidates = (top && left && (any(greaterThan(risingNext, ivec2(0))) || single)) ? 1 : 0;
+    candidates |= (top && leftAt(p + dx) && (any(greaterThan(qNext, ivec2(0))) || single)) ? 2 : 0;
+    candidates |= (left && topAt(p - dx) && (any(greaterThan(rNext, ivec2(0))) || single)) ? 4 : 0;
     while (candidates != 0)
     {
       int c = (candidates & 1) != 0 ? 1 : ((candidates & 2) != 0 ? 2 : 4);

@@ -25,24 +25,13 @@
 // exact because a line that continues across the border continues for ever there (the
 // initialisation reads its edgels clamped too).
 //
-// Built with MLAA_DIAGONAL_LENGTHS defined, the same passes also count the units of staircases
-// along the diagonals, from the second texture and into the second output (the flags of
-// vtkMLAALineLengthsInitFS.glsl): red and green towards (-1, -1) and (+1, +1) for rising
-// staircases, blue and alpha towards (-1, +1) and (+1, -1) for falling ones. A staircase ends
-// inside the image, so the clamped reads are never used there.
-//
 // Must match the line lengths of vtkImageMLAA (ComputeRowLineLengths and
-// ComputeColumnLineLengths in Filters/vtkMLAALineLengths.cxx) and, with MLAA_DIAGONAL_LENGTHS,
-// its diagonal lengths (WeightsComputer::ComputeDiagonalLengths in
-// Filters/vtkMLAABlendingWeights.cxx).
+// ComputeColumnLineLengths in Filters/vtkMLAALineLengths.cxx).
 
 in vec2 texCoord;
 
 uniform sampler2D lengthsTexture; // RGBA16F, the previous pass's counts (texelFetch only)
 uniform float level;              // 1, 4, 16 or 64
-#ifdef MLAA_DIAGONAL_LENGTHS
-uniform sampler2D diagonalLengthsTexture; // RGBA16F, the previous pass's staircase counts
-#endif
 
 // Equation 1 three times for each channel of `lengths` at p, along `directions`.
 vec4 doubled(sampler2D lengths, ivec2 p, ivec2 size, ivec2 directions[4])
@@ -72,8 +61,4 @@ void main()
   ivec2 p = ivec2(texCoord * vec2(size)); // this fragment's pixel (texCoord is at its centre)
   gl_FragData[0] = doubled(lengthsTexture, p, size,
     ivec2[4](ivec2(-1, 0), ivec2(1, 0), ivec2(0, -1), ivec2(0, 1)));
-#ifdef MLAA_DIAGONAL_LENGTHS
-  gl_FragData[1] = doubled(diagonalLengthsTexture, p, size,
-    ivec2[4](ivec2(-1, -1), ivec2(1, 1), ivec2(-1, 1), ivec2(1, -1)));
-#endif
 }

@@ -7,7 +7,8 @@
 // MLAA line lengths by recursive doubling, initialisation (Biri et al., "Practical morphological
 // antialiasing on the GPU", section 3.3: "we simply write 1 to the left and right distance of
 // any pixel belonging to horizontal lines and 1 to up and down distance to the ones belonging to
-// vertical lines"), with the crossing-edge rule of this project's search.
+// vertical lines"), with the crossing-edge rule of this project's search; and the counts of
+// staircase units (below).
 //
 // Output (RGBA16F, one flag 0 or 1 per direction, red = left, green = right, blue = down,
 // alpha = up): whether the neighbour in that direction continues this pixel's line:
@@ -23,24 +24,25 @@
 // vtkOpenGLMLAAPass runs this on the pixels with an edge only (the depth mask); the others stay
 // cleared to 0.
 //
-// With MLAA_DIAGONAL_LENGTHS defined (vtkMLAAOptions::DiagonalDetection), a second output
-// (RGBA16F) holds the same flags for the staircases of one-pixel steps, so that the doubling
-// passes count their units along the diagonals as they count lines (the search of
-// vtkMLAABlendingWeightsFS.glsl reads them one unit at a time, up to twice the maximum distance
-// per pixel on long 45-degree edges): whether the next pixel that way is a unit of the same
-// staircase,
-// - red, green: for a unit of a rising staircase (a pixel with both its left and its top edgel),
-//   towards (-1, -1) and (+1, +1);
-// - blue, alpha: for a unit of a falling staircase (a pixel q with its top edgel whose right
-//   neighbour has its left edgel), towards (-1, +1) and (+1, -1).
-// Outside the image there are no edgels here (no clamping), so a staircase ends at the border as
-// the search ends there.
+// With MLAA_STAIRCASE_COUNTS defined (vtkMLAAOptions::DiagonalDetection), a second output (RG8)
+// counts the units of the staircases of one-pixel steps that follow each unit, up to
+// MLAA_STAIRCASE_REACH units each way: how many of the next pixels that way are units of the
+// same staircase,
+// - for a unit of a rising staircase (a pixel with both its left and its top edgel), towards
+//   (-1, -1) and (+1, +1), in red;
+// - for a unit of a falling staircase (a pixel q with its top edgel whose right neighbour has its
+//   left edgel), towards (-1, +1) and (+1, -1), in green;
+// each byte the count towards -x plus 16 times the count towards +x (so a reach of at most 15).
+// A count below the reach is exact; a count equal to it goes on at the unit that far away (a
+// unit, and counted too). So the blending-weights shader follows a staircase with one read per
+// reach units (followStaircase), where its search reads every unit (up to twice the maximum
+// distance reads per unit on a long 45-degree edge), and no doubling pass counts staircases.
+// Outside the image there are no edgels here (no clamping), so a staircase ends at the border.
 //
 // Must match the line lengths of vtkImageMLAA (ComputeRowLineLengths and
 // ComputeColumnLineLengths in Filters/vtkMLAALineLengths.cxx) and searchLine in
-// vtkMLAABlendingWeightsFS.glsl; the staircase flags its diagonal lengths
-// (WeightsComputer::ComputeDiagonalLengths in Filters/vtkMLAABlendingWeights.cxx) and
-// isRisingUnit and isFallingUnit in vtkMLAABlendingWeightsFS.glsl.
+// vtkMLAABlendingWeightsFS.glsl; the staircase counts the diagonal lengths of vtkImageMLAA
+// (WeightsComputer::ComputeDiagonalLengths in Filters/vtkMLAABlendingWeights.cxx).
 
 in vec2 texCoord;
 
@@ -55,7 +57,7 @@ vec2 edgelsAt(ivec2 p)
 bool topAt(ivec2 p) { return edgelsAt(p).g > 0.5; }
 bool leftAt(ivec2 p) { return edgelsAt(p).r > 0.5; }
 
-#ifdef MLAA_DIAGONAL_LENGTHS
+#ifdef MLAA_STAIRCASE_COUNTS
 // Exact edgels, none outside the image.
 vec2 unclampedEdgelsAt(ivec2 p)
 {
@@ -69,6 +71,28 @@ bool isRisingUnit(ivec2 p) { return all(greaterThan(unclampedEdgelsAt(p), vec2(0
 bool isFallingUnit(ivec2 q)
 {
   return unclampedEdgelsAt(q).g > 0.5 && unclampedEdgelsAt(q + ivec2(1, 0)).r > 0.5;
+}
+
+// How many of the pixels after unit p in `direction` are units of its staircase, up to the
+// reach. A loop per kind, each reading what its kind needs (where pixels shaded in lock-step run
+// both sides of a branch, the loop of the other kind ends at once).
+float risingUnitsAfter(ivec2 p, ivec2 direction)
+{
+  int k = 0;
+  while (k < MLAA_STAIRCASE_REACH && isRisingUnit(p + (k + 1) * direction))
+  {
+    ++k;
+  }
+  return float(k);
+}
+float fallingUnitsAfter(ivec2 q, ivec2 direction)
+{
+  int k = 0;
+  while (k < MLAA_STAIRCASE_REACH && isFallingUnit(q + (k + 1) * direction))
+  {
+    ++k;
+  }
+  return float(k);
 }
 #endif
 
@@ -95,19 +119,19 @@ void main()
     flags.a = (leftAt(p + ivec2(0, 1)) && !topAt(p) && !topAt(p - ivec2(1, 0))) ? 1.0 : 0.0;
   }
   gl_FragData[0] = flags;
-#ifdef MLAA_DIAGONAL_LENGTHS
-  vec4 diagonalFlags = vec4(0.0);
+#ifdef MLAA_STAIRCASE_COUNTS
+  vec4 counts = vec4(0.0);
   // p is inside the image: its clamped edgels (top, left) are its own.
   if (top && left) // a rising unit
   {
-    diagonalFlags.r = isRisingUnit(p - ivec2(1, 1)) ? 1.0 : 0.0;
-    diagonalFlags.g = isRisingUnit(p + ivec2(1, 1)) ? 1.0 : 0.0;
+    counts.r = risingUnitsAfter(p, ivec2(-1, -1));
+    counts.g = risingUnitsAfter(p, ivec2(1, 1));
   }
   if (top && unclampedEdgelsAt(p + ivec2(1, 0)).r > 0.5) // a falling unit
   {
-    diagonalFlags.b = isFallingUnit(p + ivec2(-1, 1)) ? 1.0 : 0.0;
-    diagonalFlags.a = isFallingUnit(p + ivec2(1, -1)) ? 1.0 : 0.0;
+    counts.b = fallingUnitsAfter(p, ivec2(-1, 1));
+    counts.a = fallingUnitsAfter(p, ivec2(1, -1));
   }
-  gl_FragData[1] = diagonalFlags;
+  gl_FragData[1] = vec4(counts.r + 16.0 * counts.g, counts.b + 16.0 * counts.a, 0.0, 0.0) / 255.0;
 #endif
 }

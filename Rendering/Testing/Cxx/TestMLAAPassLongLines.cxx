@@ -11,11 +11,12 @@
 // - the blending-weights debug output (vtkMLAAOptions::BLENDING_WEIGHTS) is identical with and
 //   without recursive doubling on every shared scene at 8, 32 and 128 steps, with and without
 //   CornerExtrapolation (the lengths are the same integers);
-// - staircases of one-pixel steps (45-degree edges of diamonds, long ones and short ones): their
-//   lengths searched unit by unit and counted by recursive doubling give the same weights and
-//   the same image, equal to vtkImageMLAA's within 2/255;
-// - AUTOMATIC resolves by MaxSearchSteps (staircases with the rows and columns), and the
-//   doubling textures only exist while used;
+// - staircases of one-pixel steps (45-degree edges of diamonds, long ones and short ones, which
+//   end at every distance from their units): searched unit by unit, and followed through the
+//   counts of their units (with recursive doubling, so through every number of counts), they
+//   give the same weights and the same image, equal to vtkImageMLAA's within 2/255;
+// - AUTOMATIC resolves by MaxSearchSteps, and the doubling textures and the counts of staircase
+//   units only exist while used;
 // - CornerExtrapolation's sides with one step (a side between a corner and a step to a short run
 //   that ends at a corner, horizontal and vertical) and ends of unknown height (the short run
 //   ends at a step), as in TestImageMLAACorners: the pass's blending weights equal the filter's
@@ -237,7 +238,7 @@ void DiagonalStaircases()
       auto pass = UseMLAA(renderer, options);
       pass->SetLineLengths(
         doubling ? vtkOpenGLMLAAPass::RECURSIVE_DOUBLING : vtkOpenGLMLAAPass::SEARCH_LOOP);
-      MLAA_CHECK(pass->GetUsesDiagonalRecursiveDoubling() == (doubling == 1));
+      MLAA_CHECK(pass->GetUsesRecursiveDoubling() == (doubling == 1));
       images[doubling] = vtkMLAAScenes::Capture(window);
       options->SetDebugOutput(vtkMLAAOptions::BLENDING_WEIGHTS); // the pass's options
       weights[doubling] = vtkMLAAScenes::Capture(window, true);
@@ -311,26 +312,9 @@ void AutomaticAndResources()
   pass->GetOptions()->SetMaxSearchSteps(1);
   MLAA_CHECK(pass->GetUsesRecursiveDoubling());
 
-  // Staircases are counted in the same passes, with diagonal detection only.
-  pass->SetLineLengthsToAutomatic();
-  pass->GetOptions()->SetMaxSearchSteps(vtkMLAAOptions::ExactLineLengthsSteps - 1);
-  MLAA_CHECK(!pass->GetUsesDiagonalRecursiveDoubling());
-  pass->GetOptions()->SetMaxSearchSteps(vtkMLAAOptions::ExactLineLengthsSteps);
-  MLAA_CHECK(pass->GetUsesDiagonalRecursiveDoubling());
-  pass->GetOptions()->DiagonalDetectionOff();
-  MLAA_CHECK(pass->GetUsesRecursiveDoubling());
-  MLAA_CHECK(!pass->GetUsesDiagonalRecursiveDoubling());
-  pass->SetLineLengthsToRecursiveDoubling();
-  MLAA_CHECK(!pass->GetUsesDiagonalRecursiveDoubling());
-  pass->GetOptions()->DiagonalDetectionOn();
-  MLAA_CHECK(pass->GetUsesDiagonalRecursiveDoubling());
-  pass->SetLineLengthsToSearchLoop();
-  MLAA_CHECK(!pass->GetUsesDiagonalRecursiveDoubling());
-  pass->SetLineLengthsToRecursiveDoubling();
-  pass->GetOptions()->SetMaxSearchSteps(1);
-
-  // The four RGBA16F textures (8 bytes per pixel each: two for the rows and columns, two for the
-  // staircases) are held while doubling is used only.
+  // The two RGBA16F textures of the doubling (8 bytes per pixel each) are held while doubling is
+  // used only, and so are the RG8 counts of staircase units (2 bytes per pixel), with diagonal
+  // detection only.
   auto window = vtkMLAAScenes::NewOffscreenWindow(64, 48);
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
@@ -343,7 +327,13 @@ void AutomaticAndResources()
   pass->SetLineLengthsToSearchLoop();
   window->Render();
   const vtkIdType withLoop = pass->GetTargetMemorySize();
-  MLAA_CHECK(withDoubling - withLoop == 4 * 8 * 64 * 48);
+  MLAA_CHECK(withDoubling - withLoop == (2 * 8 + 2) * 64 * 48);
+  pass->GetOptions()->DiagonalDetectionOff();
+  window->Render();
+  MLAA_CHECK(pass->GetTargetMemorySize() == withLoop);
+  pass->SetLineLengthsToRecursiveDoubling();
+  window->Render();
+  MLAA_CHECK(pass->GetTargetMemorySize() - withLoop == 2 * 8 * 64 * 48);
   pass->ReleaseGraphicsResources(window);
   MLAA_CHECK(pass->GetTargetMemorySize() == 0);
   renderer->SetPass(nullptr);
