@@ -768,6 +768,9 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
     return;
   }
 
+  // The pass and its stages in the window's render timings (TimedStage), when they are on.
+  TimedStage passStage(renWin, this->GetClassName());
+
   // The viewport to fill: the renderer's (tiled) viewport in the window, or the whole of a
   // framebuffer object when an enclosing pass renders this one into its own target.
   Frame frame;
@@ -864,6 +867,7 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
       this->SelectHistory(s);
       this->BeginTemporalFrame(s, frame);
     }
+    TimedStage delegateStage(renWin, "delegate");
     if (frame.InPlace)
     {
       this->DelegatePass->Render(s);
@@ -894,6 +898,7 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
       }
       ostate->PopFramebufferBindings();
     }
+    delegateStage.Stop();
     if (temporal)
     {
       this->EndTemporalJitter(s);
@@ -904,6 +909,7 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
       steps->SetOverlayPass(overlay);
     }
 
+    TimedStage methodStage(renWin, "antialiasing");
     done = temporal   ? this->AntialiasTemporal(frame)
       : samples       ? this->AntialiasSamples(frame, samples)
                       : this->Antialias(frame);
@@ -915,6 +921,7 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
   {
     ostate->vtkglViewport(frame.X, frame.Y, frame.Width, frame.Height);
     ostate->vtkglScissor(frame.X, frame.Y, frame.Width, frame.Height);
+    TimedStage overlayStage(renWin, "overlays");
     overlay->Render(s);
     this->NumberOfRenderedProps += overlay->GetNumberOfRenderedProps();
   }
@@ -1326,6 +1333,7 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
 
   // The blend into the other history.
   const int next = hold ? h.Latest : 1 - h.Latest;
+  TimedStage blendStage(renWin, "temporal");
   if (done && !hold)
   {
     bindTarget(h.Histories[next]);
@@ -1342,6 +1350,7 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
       // The reprojecting blend leaves out the pixels whose result is the current frame whatever
       // the history (see vtkAntialiasingTemporalFS.glsl): the new history starts as a copy of the
       // current frame, with a count of 1.
+      TimedStage copyStage(renWin, "history copy");
       h.Framebuffer->AddColorAttachment(2, h.Current);
       h.Framebuffer->ActivateReadBuffer(2);
       h.Framebuffer->ActivateDrawBuffer(0);
@@ -1369,6 +1378,7 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
       // so that the depth test drops the others before their shader runs. A blend that discards
       // them still costs rasterisers that shade pixels in lock-step (llvmpipe) the write of every
       // pixel of the floating-point history (docs/measurements.md, issue 23).
+      TimedStage maskStage(renWin, "pixel mask");
       done = this->MarkBlendedPixels(renWin, h.Current);
     }
     done = done &&
@@ -1408,6 +1418,7 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
         textures.Bind(program, "previousTexture", h.Previous);
       }
       program->SetUniformf("currentWeight", weight);
+      TimedStage stage(renWin, "blend");
       h.BlendQuad.Quad->Render();
     }
     if (reproject)
@@ -1430,8 +1441,11 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
     h.PreviousValid = true;
   }
 
+  blendStage.Stop();
+
   // The result into the target viewport, with the delegate's depth (as the method writes it when
   // not in place), composited over lower layers when the renderer preserves the colour buffer.
+  TimedStage outputStage(renWin, "temporal output");
   if (!this->ReadyQuad(renWin, h.OutputQuad, vtkAntialiasingTemporalFS,
         Define("TEMPORAL_OUTPUT", true)))
   {

@@ -9,6 +9,7 @@
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
+#include "vtkRenderTimerLog.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtkType.h"
@@ -75,6 +76,46 @@ inline bool AllocateDepthTarget(vtkTextureObject* texture, int width, int height
   texture->AllocateDepth(width, height, format);
   return true;
 }
+
+// A stage of a pass as an event of the window's render timings (vtkRenderTimerLog, VTK's GL timer
+// queries), nested in the events open when it starts and ended by Stop() or when it goes out of
+// scope. Nothing is timed unless an application turns the timings on
+// (window->GetRenderTimer()->LoggingEnabledOn(); mlaa-benchmark-gpu --stages). While they are
+// on, each start and end of a stage waits for the GL work before it (WaitForCompletion), so that
+// every stage is charged with its own work on any implementation: timestamps are taken when the
+// GL queues them, which on llvmpipe is before its rasteriser has run the draws. Frames are slower
+// then; the stages are for comparing with one another.
+class TimedStage
+{
+public:
+  TimedStage(vtkRenderWindow* window, const char* name)
+    : Window(window)
+  {
+    if (window->GetRenderTimer()->GetLoggingEnabled())
+    {
+      window->WaitForCompletion();
+      this->Event = window->GetRenderTimer()->StartScopedEvent(name);
+      this->Open = true;
+    }
+  }
+  ~TimedStage() { this->Stop(); }
+  void Stop()
+  {
+    if (this->Open)
+    {
+      this->Window->WaitForCompletion();
+      this->Event.Stop();
+      this->Open = false;
+    }
+  }
+  TimedStage(const TimedStage&) = delete;
+  TimedStage& operator=(const TimedStage&) = delete;
+
+private:
+  vtkRenderWindow* Window;
+  vtkRenderTimerLog::ScopedEventLogger Event;
+  bool Open = false;
+};
 
 inline vtkTextureObject* NewTexture(vtkOpenGLRenderWindow* renWin)
 {

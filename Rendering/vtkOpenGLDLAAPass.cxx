@@ -105,6 +105,7 @@ bool vtkOpenGLDLAAPass::ComputeMasks(const Frame& frame)
   program->SetUniformf("lambda", static_cast<float>(this->Options->GetLambda()));
   program->SetUniformf("epsilon", static_cast<float>(this->Options->GetEpsilon()));
   program->SetUniformi("padding", padding);
+  TimedStage stage(frame.Window, "edge masks");
   this->MasksQuad.Quad->Render();
   return true;
 }
@@ -132,6 +133,7 @@ bool vtkOpenGLDLAAPass::Filter(const Frame& frame)
   {
     textures.Bind(program, "depthTexture", this->DepthTexture);
   }
+  TimedStage stage(frame.Window, "filter");
   this->FilterQuad.Quad->Render();
   return true;
 }

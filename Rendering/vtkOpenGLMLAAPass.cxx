@@ -249,7 +249,10 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
     vtkShaderProgram* program = this->ChangeMaskQuad.Quad->Program;
     this->SetEdgeTextures(program);
     ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    this->ChangeMaskQuad.Quad->Render();
+    {
+      TimedStage stage(renWin, "change mask");
+      this->ChangeMaskQuad.Quad->Render();
+    }
     ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 
     // Pass 1: edges, on the marked pixels only (the quad's depth, 1/2, is less than 1 there and not
@@ -262,7 +265,10 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
     }
     program = this->EdgesQuad.Quad->Program;
     this->SetEdgeUniforms(program);
-    this->EdgesQuad.Quad->Render();
+    {
+      TimedStage stage(renWin, "edges");
+      this->EdgesQuad.Quad->Render();
+    }
 
     // Local contrast adaptation: the edge pixels (those whose mask depth was written) rewrite
     // their edges, keeping those not much weaker than their neighbours.
@@ -277,6 +283,7 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
       }
       program = this->LocalContrastQuad.Quad->Program;
       this->SetEdgeUniforms(program);
+      TimedStage stage(renWin, "local contrast");
       this->LocalContrastQuad.Quad->Render();
     }
   }
@@ -284,9 +291,13 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   // Line lengths by recursive doubling (LineLengths), and the counts of staircase units with
   // diagonal detection, on the same pixels.
   vtkTextureObject* lengths = nullptr;
-  if (this->GetUsesRecursiveDoubling() && !this->CountLines(renWin, lengths))
+  if (this->GetUsesRecursiveDoubling())
   {
-    return false;
+    TimedStage stage(renWin, "line lengths");
+    if (!this->CountLines(renWin, lengths))
+    {
+      return false;
+    }
   }
   const bool staircaseCounts = lengths && this->Options->GetDiagonalDetection();
 
@@ -357,7 +368,10 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
   {
     textures.Bind(program, "staircaseCountsTexture", this->StaircaseCountsTexture);
   }
-  this->WeightsQuad.Quad->Render();
+  {
+    TimedStage stage(renWin, "blending weights");
+    this->WeightsQuad.Quad->Render();
+  }
   ostate->vtkglDepthMask(GL_TRUE);
   return true;
 }
@@ -506,6 +520,7 @@ bool vtkOpenGLMLAAPass::Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int w
   {
     textures.Bind(program, "depthTexture", this->DepthTexture);
   }
+  TimedStage stage(renWin, "neighbourhood blending");
   this->BlendQuad.Quad->Render();
   return true;
 }
@@ -556,6 +571,7 @@ bool vtkOpenGLMLAAPass::Reconstruct(
   ScopedTextures textures;
   textures.Activate(this->ColorTexture);
   this->SetReconstructionUniforms(this->ReconstructionQuad.Quad->Program);
+  TimedStage stage(renWin, "reconstruction");
   this->ReconstructionQuad.Quad->Render();
   return true;
 }
@@ -580,6 +596,7 @@ bool vtkOpenGLMLAAPass::WriteBackReconstruction(
   ScopedTextures textures;
   textures.Activate(this->ColorTexture);
   this->SetReconstructionUniforms(this->WriteBackQuad.Quad->Program);
+  TimedStage stage(renWin, "reconstruction write-back");
   this->WriteBackQuad.Quad->Render();
   return true;
 }

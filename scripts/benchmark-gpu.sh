@@ -17,7 +17,8 @@
 #   --allow-empty-initial-configuration); with no DISPLAY the script starts Xvfb, which renders
 #   with Mesa's llvmpipe on the CPU: the figures are then llvmpipe's, and the script says so.
 # Timing: wall clock, Render() + glFinish per frame, medians; the renderer string printed first
-# says which GPU ran it.
+# says which GPU ran it. Then the mean time of each stage of each pass (--stages: the GPU's own
+# timestamps on a GPU, the steady clock under Xvfb).
 set -euo pipefail
 source_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build_dir="${1:-$source_dir/build}"
@@ -40,6 +41,7 @@ if [ -n "$missing" ]; then
 fi
 
 run=()
+stages=gl
 if [ -z "${DISPLAY:-}" ]; then
   if ! command -v xvfb-run >/dev/null; then
     echo "benchmark-gpu: no DISPLAY and no xvfb-run: start an X server on the GPU and set DISPLAY" >&2
@@ -47,12 +49,13 @@ if [ -z "${DISPLAY:-}" ]; then
   fi
   echo "benchmark-gpu: no DISPLAY: running under Xvfb, which renders with llvmpipe on the CPU"
   run=(xvfb-run -a -s "-screen 0 4096x2304x24")
+  stages=wall
 fi
 
 for size in 1920x1080 3840x2160; do
   for scene in mixed silhouettes lines horizon stripes-45 stripes-0.3; do
     echo "=== $scene at $size"
     "${run[@]}" "$benchmark" --size "$size" --scene "$scene" --frames 100 --rounds 5 \
-      --no-long-lines "${extra[@]}"
+      --no-long-lines --stages "$stages" "${extra[@]}"
   done
 done

@@ -34,6 +34,13 @@
 // with --azimuth 0 every frame is a jittered render of a still accumulation. Reported as
 // overhead(X-temporal) / overhead(X-pass) (the single-frame pass of the same method, same rounds),
 // with the temporal pass's render-target memory.
+// Stages (--stages wall|gl): after the timed rounds, each configuration with one of the project's
+// passes renders a round's frames again with the window's render timings on (vtkRenderTimerLog:
+// each pass times its stages as events, waiting for the GL work at each start and end;
+// BenchmarkStageTimes.h), and the mean time of each stage per frame is listed: by the steady
+// clock (wall, for llvmpipe, whose GL timestamps do not time its rasteriser's work) or by VTK's GL
+// timestamp queries (gl, a GPU's own times). Frames are slower while the timings are on.
+#include "BenchmarkStageTimes.h"
 #include "BenchmarkUtilities.h"
 #include "vtkMLAAScenes.h"
 
@@ -53,6 +60,7 @@
 #include "vtkOpenGLMLAAPass.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderStepsPass.h"
+#include "vtkRenderTimerLog.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
@@ -61,7 +69,9 @@
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace
@@ -153,6 +163,9 @@ void Usage(const char* program)
             << "  --temporal       also time both passes with temporal antialiasing (moving\n"
             << "                   camera: reprojection; --azimuth 0: still accumulation), as\n"
             << "                   overhead / overhead of the same method's single-frame pass\n"
+            << "  --stages CLOCK   then list the mean time of each stage of each pass per frame,\n"
+            << "                   CLOCK wall (steady clock; llvmpipe) or gl (GL timestamp\n"
+            << "                   queries; a GPU)\n"
             << "For the MLAA pass, " << mlaaBenchmark::MLAAOptionsUsage();
 }
 
@@ -175,6 +188,8 @@ int main(int argc, char* argv[])
   bool cpuClock = false;
   bool multisamples = false;
   bool temporal = false;
+  bool stages = false;
+  bool wallStages = true;
   std::string scene = "mixed";
   vtkNew<vtkMLAAOptions> options;
   for (int i = 1; i < argc; ++i)
@@ -218,6 +233,12 @@ int main(int argc, char* argv[])
     {
       temporal = true;
     }
+    else if (arg == "--stages" && hasValue &&
+      (std::string(argv[i + 1]) == "wall" || std::string(argv[i + 1]) == "gl"))
+    {
+      stages = true;
+      wallStages = std::string(argv[++i]) == "wall";
+    }
     else if (arg == "--no-long-lines")
     {
       longLines = false;
@@ -251,6 +272,10 @@ int main(int argc, char* argv[])
   }
   rounds = std::min(rounds, frames);
 
+  if (stages && wallStages)
+  {
+    mlaaBenchmark::UseWallClockRenderTimings();
+  }
   auto window = vtkMLAAScenes::NewOffscreenWindow(width, height);
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
@@ -603,6 +628,67 @@ int main(int argc, char* argv[])
             << " MiB); MLAA-specific targets (edges + blending weights): "
             << mlaaTargets / (1024.0 * 1024.0) << " MiB = " << mlaaTargets / backBuffer
             << " x the back buffer" << std::defaultfloat << std::endl;
+
+  if (stages)
+  {
+    vtkRenderTimerLog* log = window->GetRenderTimer();
+    if (!log->IsSupported())
+    {
+      std::cout << "stages: the render timings are not supported here\n";
+    }
+    else
+    {
+      const int count = std::max(frames / rounds, 2);
+      std::cout << "stages: mean time per frame (ms, "
+                << (wallStages ? "steady clock" : "GL timestamp queries") << ") over " << count
+                << " frames each, render timings on\n";
+      for (auto& c : configurations)
+      {
+        auto* pass = vtkOpenGLAntialiasingPass::SafeDownCast(c.Pass);
+        if (!pass)
+        {
+          continue;
+        }
+        use(c);
+        frame();
+        log->LoggingEnabledOn();
+        std::map<std::string, std::pair<double, int>> totals;
+        int timedFrames = 0;
+        auto collect = [&]() {
+          while (log->FrameReady())
+          {
+            const vtkRenderTimerLog::Frame f = log->PopFirstReadyFrame();
+            for (const auto& event : f.Events)
+            {
+              mlaaBenchmark::AddStageTimes(
+                event, pass->GetClassName(), std::string(), false, totals);
+            }
+            ++timedFrames;
+          }
+        };
+        for (int f = 0; f < count; ++f)
+        {
+          frame();
+          collect();
+        }
+        for (int f = 0; f < 8 && timedFrames < count; ++f)
+        {
+          window->Render(); // marks a new frame, so that the last ones become ready
+          glWindow->WaitForCompletion();
+          collect();
+        }
+        log->LoggingEnabledOff();
+        std::cout << "  " << c.Name << " (" << timedFrames << " frames)\n";
+        for (const auto& stage : totals)
+        {
+          std::cout << "    " << std::left << std::setw(40) << stage.first << std::right
+                    << std::fixed << std::setprecision(2) << std::setw(10)
+                    << stage.second.first / std::max(timedFrames, 1) << std::defaultfloat
+                    << "\n";
+        }
+      }
+    }
+  }
 
   renderer->SetPass(nullptr);
   renderer->UseFXAAOff();
