@@ -552,9 +552,10 @@ private:
     return this->Whole.Contains(x, y) ? this->LeftAt(x, y) : 0;
   }
   // Whether one of the two pixels across the edgel of l's pixel (that pixel and the one at v + 1:
-  // above it, or left of it) is one pixel thin across it: it has an edgel on its far side too. A line with crossing edges on both sides at both ends
-  // (code 4 at both) is read as a thin feature's run only there (vtkMLAAAreaTexture); between
-  // the junctions of wider shapes (a checkerboard's corners, say) it keeps no slope.
+  // above it, or left of it) is one pixel thin across it: it has an edgel on its far side too. A
+  // line with crossing edges on both sides at both ends (code 4 at both) is read as a thin
+  // feature's run only there (vtkMLAAAreaTexture); between the junctions of wider shapes (a
+  // checkerboard's corners, say) it keeps no slope.
   template <bool V>
   bool ThinAcross(const Line<V>& l) const
   {

@@ -113,8 +113,7 @@ bool vtkOpenGLMLAAPass::PrepareMethodTargets(const Frame& frame)
   {
     keep(lengths, doubling, 4, VTK_FLOAT, GL_RGBA16F);
   }
-  keep(this->StaircaseCountsTexture, doubling && this->Options->GetDiagonalDetection(), 2,
-    VTK_UNSIGNED_CHAR, GL_RG8);
+  keep(this->StaircaseCountsTexture, this->GetCountsStaircases(), 2, VTK_UNSIGNED_CHAR, GL_RG8);
   // The reconstructed image (vtkMLAAOptions::Reconstruction), in the colour texture's format.
   if (this->Options->GetReconstruction())
   {
@@ -299,7 +298,7 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
       return false;
     }
   }
-  const bool staircaseCounts = lengths && this->Options->GetDiagonalDetection();
+  const bool staircaseCounts = this->GetCountsStaircases();
 
   // Pass 2: blending weights, on the pixels whose mask depth was written only.
   fbo->AddColorAttachment(0, this->WeightsTexture);
@@ -428,7 +427,7 @@ bool vtkOpenGLMLAAPass::CountLines(vtkOpenGLRenderWindow* renWin, vtkTextureObje
 {
   vtkOpenGLState* ostate = renWin->GetState();
   vtkOpenGLFramebufferObject* fbo = this->WorkFramebuffer;
-  const bool staircases = this->Options->GetDiagonalDetection();
+  const bool staircases = this->GetCountsStaircases();
   // Every texture of the doubling starts at 0: the passes write the edge pixels only, and the
   // jumps land on pixels without an edge too, which must read 0. (The counts of staircase units
   // need no clearing: the weights pass reads those of units only, which are edge pixels.)
@@ -447,8 +446,9 @@ bool vtkOpenGLMLAAPass::CountLines(vtkOpenGLRenderWindow* renWin, vtkTextureObje
     fbo->ActivateDrawBuffers(2);
   }
   if (!this->ReadyQuad(renWin, this->LengthsInitQuad, vtkMLAALineLengthsInitFS,
-        Define("MLAA_STAIRCASE_COUNTS", staircases) +
-          Define("MLAA_STAIRCASE_REACH", this->GetStaircaseCountReach())))
+        staircases ? Define("MLAA_STAIRCASE_COUNTS", true) +
+            Define("MLAA_STAIRCASE_REACH", this->GetStaircaseCountReach())
+                   : std::string()))
   {
     return false;
   }
@@ -482,6 +482,12 @@ bool vtkOpenGLMLAAPass::CountLines(vtkOpenGLRenderWindow* renWin, vtkTextureObje
   }
   lengths = this->LengthsTextures[source];
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLMLAAPass::GetCountsStaircases()
+{
+  return this->GetUsesRecursiveDoubling() && this->Options->GetDiagonalDetection();
 }
 
 //------------------------------------------------------------------------------

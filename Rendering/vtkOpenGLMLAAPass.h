@@ -271,6 +271,9 @@ private:
   // vtkMLAALineLengthsInitFS.glsl); on the pixels of the mask (the MLAA framebuffer is bound
   // with the mask and depth test EQUAL).
   bool CountLines(vtkOpenGLRenderWindow* renWin, vtkTextureObject*& lengths);
+  // Whether the next render counts staircase units (CountLines): recursive doubling with
+  // diagonal detection; StaircaseCountsTexture is kept while it does.
+  bool GetCountsStaircases();
   // The reach of the counts of staircase units for the current maximum distance.
   int GetStaircaseCountReach();
   // Pass 3 (or a debug output) into the target viewport, composited over it with premultiplied

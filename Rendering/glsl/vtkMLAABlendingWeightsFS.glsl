@@ -400,8 +400,8 @@ vec4 countsAt(ivec2 q)
 // towards its second, each up to the reach (0 where q is no unit of that kind).
 ivec2 unitCounts(ivec2 q, bool rising)
 {
-  vec4 counts = countsAt(clamp(q, ivec2(0), ivec2(edgesSize) - 1));
-  return ivec2(round(rising ? counts.rg : counts.ba));
+  vec4 counts = countsAt(clamp(q, ivec2(0), ivec2(edgesSize) - 1)); // whole numbers
+  return ivec2(rising ? counts.rg : counts.ba);
 }
 
 // Number of further units of the staircase through unit q in `direction` (counts' `channel`),
@@ -414,7 +414,7 @@ int followStaircase(ivec2 q, ivec2 direction, int channel, int count, out bool r
   int last = count;
   while (last == MLAA_STAIRCASE_REACH && count < maxDistance)
   {
-    last = int(round(countsAt(q + count * direction)[channel]));
+    last = int(countsAt(q + count * direction)[channel]);
     count += last;
   }
   reachedEnd = count < maxDistance;
