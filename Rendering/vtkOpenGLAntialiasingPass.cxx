@@ -1347,18 +1347,7 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
     const bool reproject = moving && !keep;
     if (reproject)
     {
-      // The reprojecting blend leaves out the pixels whose result is the current frame whatever
-      // the history (see vtkAntialiasingTemporalFS.glsl): the new history starts as a copy of the
-      // current frame, with a count of 1.
-      TimedStage copyStage(renWin, "history copy");
-      h.Framebuffer->AddColorAttachment(2, h.Current);
-      h.Framebuffer->ActivateReadBuffer(2);
-      h.Framebuffer->ActivateDrawBuffer(0);
-      const int box[4] = { 0, width, 0, height };
-      vtkOpenGLFramebufferObject::Blit(box, box, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-      h.Framebuffer->ActivateReadBuffer(0);
-      h.Framebuffer->RemoveColorAttachment(2);
-      h.Framebuffer->ActivateDrawBuffers(2);
+      // Every pixel's count starts at 1 (a moving camera's blend writes 1 where it runs).
       const float one[4] = { 1.0f, 1.0f, 1.0f, 1.0f };
       glClearBufferfv(GL_COLOR, 1, one);
     }
@@ -1373,12 +1362,14 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
     }
     if (reproject)
     {
-      // The pixels the blend writes, marked (depth 1 over a mask cleared to 0) by a pass of their
-      // own that writes no colour: the blend then runs with the quad's depth (1/2) tested LESS,
-      // so that the depth test drops the others before their shader runs. A blend that discards
-      // them still costs rasterisers that shade pixels in lock-step (llvmpipe) the write of every
-      // pixel of the floating-point history (docs/measurements.md, issue 23).
-      TimedStage maskStage(renWin, "pixel mask");
+      // The new history starts as a copy of the current frame, and the pixels the blend changes
+      // are marked (depth 1, the others 0) in the same pass: the reprojecting blend leaves out
+      // the pixels whose result is the current frame whatever the history (see
+      // vtkAntialiasingTemporalFS.glsl), and runs with the quad's depth (1/2) tested LESS, so that
+      // the depth test drops those before their shader runs. A blend that discards them still
+      // costs rasterisers that shade pixels in lock-step (llvmpipe) the write of every pixel of
+      // the floating-point history (docs/measurements.md, issue 23).
+      TimedStage maskStage(renWin, "history copy and mask");
       done = this->MarkBlendedPixels(renWin, h.Current);
     }
     done = done &&
@@ -1469,20 +1460,20 @@ bool vtkOpenGLAntialiasingPass::MarkBlendedPixels(
   {
     return false;
   }
+  // Colour into the history only (its counts were cleared to 1), and depth at every pixel: no
+  // clear of the mask, no discard.
   h.Framebuffer->AddDepthAttachment(h.Mask);
-  ostate->vtkglClearDepth(0.0);
+  h.Framebuffer->ActivateDrawBuffer(0);
   ostate->vtkglDepthMask(GL_TRUE);
-  ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
   ostate->vtkglEnable(GL_DEPTH_TEST);
   ostate->vtkglDepthFunc(GL_ALWAYS);
-  ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   {
     const ScopedTextures textures(h.MaskQuad.Quad->Program,
       { { "currentTexture", current }, { "frameTexture", this->ColorTexture },
         { "depthTexture", this->DepthTexture } });
     h.MaskQuad.Quad->Render();
   }
-  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  h.Framebuffer->ActivateDrawBuffers(2);
   ostate->vtkglDepthMask(GL_FALSE);
   ostate->vtkglDepthFunc(GL_LESS);
   return true;

@@ -433,8 +433,9 @@ private:
   // writes the result (and the delegate's depth) into the target viewport.
   bool AntialiasTemporal(const Frame& frame);
   // The mask of the moving camera's blend (TEMPORAL_MASK in vtkAntialiasingTemporalFS.glsl):
-  // marks the pixels whose blend is not the current frame `current` in the history's depth
-  // attachment, and leaves the depth test on for the blend.
+  // copies the current frame `current` into the history being written (draw buffer 0), marks the
+  // pixels whose blend is not that frame in the history's depth attachment, and leaves the depth
+  // test on for the blend.
   bool MarkBlendedPixels(vtkOpenGLRenderWindow* renWin, vtkTextureObject* current);
   // Renders the delegate into `color` and `depth` through `fbo` (cleared to transparent black
   // first when compositing over the target).

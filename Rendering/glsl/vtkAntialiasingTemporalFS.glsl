@@ -21,11 +21,12 @@
 //                       point that was outside the previous view takes the current frame alone.
 //                       The current frame's weight rises with the distance the history moved,
 //                       from currentWeight at rest to MovingWeight at MovingPixels and more.
-//   TEMPORAL_MASK       (with TEMPORAL_REPROJECT) writes no colour: marks with depth 1, over a
-//                       mask cleared to 0, the pixels the reprojecting blend does not discard
-//                       (flatFrame), so that the blend then runs on them only, the depth test
-//                       dropping the others before their shader runs
-//                       (vtkOpenGLAntialiasingPass::MarkBlendedPixels).
+//   TEMPORAL_MASK       (with TEMPORAL_REPROJECT) copies the current frame into the new
+//                       history at every pixel, and marks with depth 1 the pixels the
+//                       reprojecting blend does not discard (flatFrame), 0 the others, so that
+//                       the blend then runs on them only, the depth test dropping the others
+//                       before their shader runs (vtkOpenGLAntialiasingPass::MarkBlendedPixels).
+//                       One pass for both: every pixel writes the same, with no discard.
 //   TEMPORAL_KEEP_UNCHANGED  actors moved under a still camera (currentTexture is the frame
 //                       antialiased by the method): nothing is reprojected; a pixel whose 3 x 3
 //                       neighbourhood in the method's frame equals the last unjittered render's
@@ -156,13 +157,10 @@ void main()
   ivec2 size = textureSize(depthTexture, 0);
   ivec2 p = ivec2(texCoord * vec2(size));
 #ifdef TEMPORAL_MASK
+  vec4 copied = texelFetch(currentTexture, p, 0);
   vec4 range[2];
-  if (flatFrame(p, size, texelFetch(currentTexture, p, 0), range[0], range[1]))
-  {
-    discard;
-  }
-  gl_FragDepth = 1.0;
-  gl_FragData[0] = vec4(0.0); // not written (colour writes are off)
+  gl_FragDepth = flatFrame(p, size, copied, range[0], range[1]) ? 0.0 : 1.0;
+  gl_FragData[0] = copied;
   return;
 #endif
   float depth = texelFetch(depthTexture, p, 0).r;

@@ -123,8 +123,8 @@ int TestAntialiasingPassStageTimes(int, char*[])
     pass->TemporalOn();
     window->Render();
     renderer->GetActiveCamera()->Azimuth(1.0);
-    expected.insert({ "antialiasing/temporal", "antialiasing/temporal/history copy",
-      "antialiasing/temporal/pixel mask", "antialiasing/temporal/blend",
+    expected.insert({ "antialiasing/temporal", "antialiasing/temporal/history copy and mask",
+      "antialiasing/temporal/blend",
       "antialiasing/temporal output" });
     CheckStages(RenderTimed(window, pass->GetClassName()), expected);
     StopPass(renderer, window);
