@@ -310,6 +310,14 @@ private:
   {
     int e1 = this->CrossingCode(l, -d1);
     int e2 = this->CrossingCode(l, d2 + 1);
+    if (this->JunctionGoesOn(l, e1, -d1, -d1 - 1))
+    {
+      e1 = 0;
+    }
+    if (this->JunctionGoesOn(l, e2, d2 + 1, d2 + 1))
+    {
+      e2 = 0;
+    }
     bool half1 = false, half2 = false;
     if (this->S.Corners && d1 + d2 > 0)
     {
@@ -540,6 +548,24 @@ private:
       return 0;
     }
     return 3 * this->CrossingAt(l, u, 0) + this->CrossingAt(l, u, 1);
+  }
+
+  // Whether the end of l's line whose crossing edgels belong to the pixel at u = crossing, of
+  // crossing-edge code `code`, is a T junction that the line goes on past (issue 20). The area
+  // table reads a crossing edge on one side of an end as a one-pixel step of a staircase (section
+  // 4.3.2), past which the line goes on one row (column) over. Where instead the line's own edge
+  // goes on straight past the end (at u = beyond) and the crossing edge goes on for a second
+  // pixel away from the line, the crossing edge is the side of a region that meets the line (a
+  // band of a colour map, say), and the line has no step there: the end is read as one without
+  // crossing edges. A crossing edge one pixel long keeps the step's reading: it may be the step of
+  // a feature narrower than a pixel (the rim of a shaded surface, whose colour changes along a
+  // silhouette). Edgels outside the image are none. Must match junctionGoesOn in
+  // vtkMLAABlendingWeightsFS.glsl.
+  template <bool V>
+  bool JunctionGoesOn(const Line<V>& l, int code, int crossing, int beyond) const
+  {
+    return (code == 1 || code == 3) && this->AlongInside(l, beyond, 0) &&
+      this->CrossingInside(l, crossing, code == 3 ? -1 : 2);
   }
 
   // Edgels for the diagonal search and ThinAcross: none outside the image.

@@ -364,6 +364,17 @@ bool crossingAt(ivec2 p, bool vertical, int u, int v)
   return (vertical ? e.g : e.r) > 0.5;
 }
 
+// Whether the end of p's line whose crossing edgels belong to the pixel at u = crossing, of
+// crossing-edge code `code`, is a T junction that the line goes on past: crossing edgels on one
+// side, the line's own edgel going on straight past the end (at u = beyond) and the crossing edge
+// going on for a second pixel away from the line. The line has no step there, and the end is read
+// as one without crossing edges (WeightsComputer::JunctionGoesOn, issue 20).
+bool junctionGoesOn(int code, ivec2 p, bool vertical, int crossing, int beyond)
+{
+  return (code == 1 || code == 3) && alongAt(p, vertical, beyond, 0) &&
+    crossingAt(p, vertical, crossing, code == 3 ? -1 : 2);
+}
+
 // Whether one of the two pixels across the edgel of p's line (p and the pixel at v + 1) is one
 // pixel thin across it: it has an edgel on its far side too. A line with code 4 at both ends is
 // read as a thin feature's run only there (vtkMLAAAreaTexture); between the junctions of wider
@@ -684,6 +695,14 @@ vec2 lineWeights(ivec2 p, bool vertical, ivec2 lengths)
 #endif
   e1 = insideCode(e1, p, vertical, -d1);
   e2 = insideCode(e2, p, vertical, d2 + 1);
+  if (junctionGoesOn(e1, p, vertical, -d1, -d1 - 1))
+  {
+    e1 = 0;
+  }
+  if (junctionGoesOn(e2, p, vertical, d2 + 1, d2 + 1))
+  {
+    e2 = 0;
+  }
   bvec2 halved = bvec2(false); // ends of half height (CornerExtrapolation)
 #ifdef MLAA_CORNER_EXTRAPOLATION
   if (d1 + d2 > 0)

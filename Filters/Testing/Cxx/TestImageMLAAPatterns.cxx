@@ -1,7 +1,8 @@
 // SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
 // SPDX-License-Identifier: BSD-3-Clause
 // Exact expected pixels of vtkImageMLAA on small synthetic images: a straight step edge, the
-// L, U and Z patterns of the GPU Pro 2 chapter, thin lines alone and side by side, a line
+// L, U and Z patterns of the GPU Pro 2 chapter, thin lines alone and side by side, T junctions
+// that a line goes on past (no step) and a rim's one-pixel crossing edge (a step), a line
 // longer than the search distance,
 // one-pixel-wide images, and a diagonal staircase (DiagonalDetection), whose effect on the error
 // against exact coverage is measured too. The expected blending weights were worked out by hand from sections
@@ -279,6 +280,48 @@ void ThinLinesSideBySide()
   MLAA_CHECK(Compare(board, RunMLAA(board, MediumOptions())).Count == 0);
 }
 
+void TJunctions()
+{
+  // The side of a plane on a pixel boundary (x < 10 the plane, x >= 10 black), with a band of the
+  // plane's colour map meeting it from the inside (rows y >= 8 darker). The search stops at the
+  // band's border, a crossing edge on one side of the side's line, but the side's own edge goes
+  // on straight past it and the border goes on for more than one pixel: a T junction, not a step
+  // (issue 20). The side's vertical lines take no weight on either side of the junction (the
+  // area table read it as a step before, and ramped the side towards it).
+  auto plane = MakeImage(16, 16, 1);
+  FillImage(plane, [](int x, int y, int, int) { return x < 10 ? (y < 8 ? 240.0 : 120.0) : 0.0; });
+  auto weights = Weights(plane);
+  bool none = true;
+  for (int y = 0; y < 16; ++y)
+  {
+    for (int k : { 2, 3 })
+    {
+      if (GetValue(weights, 10, y, k) != 0.0)
+      {
+        std::cerr << "side pixel (10, " << y << ") weight " << k << ": "
+                  << GetValue(weights, 10, y, k) << ", expected 0" << std::endl;
+        none = false;
+      }
+    }
+  }
+  MLAA_CHECK(none);
+
+  // The same side where only its rim pixels change colour (x = 9, y >= 8): a crossing edge one
+  // pixel long, which may be the step of a feature narrower than a pixel, keeps the chapter's
+  // reading: the side is ramped towards it.
+  auto rim = MakeImage(16, 16, 1);
+  FillImage(rim, [](int x, int y, int, int) {
+    return x < 10 ? (x == 9 && y >= 8 ? 120.0 : 240.0) : 0.0;
+  });
+  auto rimWeights = Weights(rim);
+  double ramp = 0.0;
+  for (int y = 0; y < 16; ++y)
+  {
+    ramp += GetValue(rimWeights, 10, y, 2) + GetValue(rimWeights, 10, y, 3);
+  }
+  MLAA_CHECK(ramp > 0.0);
+}
+
 void LongLine(int searchSteps)
 {
   // A single step at x = 20 in a 64 x 4 image: the line of top edgels on row 0 (x < 20) ends
@@ -444,6 +487,7 @@ int TestImageMLAAPatterns(int, char*[])
   ZShape();
   ThinLine();
   ThinLinesSideBySide();
+  TJunctions();
   for (int steps : { 1, 2, 4, 8, 16 })
   {
     LongLine(steps);
