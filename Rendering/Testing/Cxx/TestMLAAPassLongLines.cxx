@@ -21,7 +21,9 @@
 //   that ends at a corner, horizontal and vertical) and ends of unknown height (the short run
 //   ends at a step), as in TestImageMLAACorners: the pass's blending weights equal the filter's
 //   exactly, searched and counted, at 16 and 128 steps, and differ from those without the option
-//   there.
+//   there;
+// - T junctions on a plane's sides (a band border meeting them from the inside) are no steps: the
+//   pass's weights equal the filter's exactly, searched and counted, and the sides take none.
 #include "vtkAntialiasingRenderTestUtilities.h"
 #include "vtkMLAAScenes.h"
 #include "vtkAntialiasingTestUtilities.h"
@@ -416,11 +418,79 @@ void UnknownHeightEnds()
   }
 }
 
+void TJunctions()
+{
+  // A plane on pixel boundaries (columns 10 to 29, across the window) in two bands, grey below
+  // row 24 and black from it up, on white: its sides go on straight past the band border, a T
+  // junction on each, which is no step (issue 20), and run into the image border at both ends.
+  // The pass's weights equal the filter's exactly, searched and counted, at 16 and 128 steps, and
+  // the sides' pixels take none (TestImageMLAAPatterns has the filter's cases with and without
+  // the rule). No local contrast adaptation: it would drop the band border next to the sides.
+  const int width = 48, height = 48;
+  auto window = vtkMLAAScenes::NewOffscreenWindow(width, height);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> polys;
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetNumberOfComponents(3);
+  for (const auto& band : { std::array<int, 4>{ 10, 29, -8, 23 }, { 10, 29, 24, 55 } })
+  {
+    const vtkIdType first = points->GetNumberOfPoints();
+    points->InsertNextPoint(band[0], band[2], 0.0);
+    points->InsertNextPoint(band[1] + 1.0, band[2], 0.0);
+    points->InsertNextPoint(band[1] + 1.0, band[3] + 1.0, 0.0);
+    points->InsertNextPoint(band[0], band[3] + 1.0, 0.0);
+    const vtkIdType quad[4] = { first, first + 1, first + 2, first + 3 };
+    polys->InsertNextCell(4, quad);
+    const unsigned char grey = band[2] < 24 ? 96 : 0;
+    colors->InsertNextTypedTuple(std::array<unsigned char, 3>{ grey, grey, grey }.data());
+  }
+  vtkNew<vtkPolyData> polyData;
+  polyData->SetPoints(points);
+  polyData->SetPolys(polys);
+  polyData->GetCellData()->SetScalars(colors);
+  ShowFlat(renderer, polyData, 1.0, width, height);
+  auto plain = vtkMLAAScenes::Capture(window);
+  MLAA_CHECK(GetValue(plain, 29, 23) == 96.0 && GetValue(plain, 29, 24) == 0.0 &&
+    GetValue(plain, 30, 23) == 255.0 && GetValue(plain, 9, 24) == 255.0);
+  for (const int searchSteps : { 16, 128 })
+  {
+    vtkNew<vtkMLAAOptions> options;
+    options->SetMaxSearchSteps(searchSteps);
+    options->SetLocalContrastFactor(0.0);
+    options->SetDebugOutput(vtkMLAAOptions::BLENDING_WEIGHTS);
+    auto cpu = RunMLAA(plain, options);
+    for (int y = 0; y < height; ++y)
+    {
+      for (int x : { 10, 30 }) // the pixels that own the sides' left edgels
+      {
+        MLAA_CHECK(GetValue(cpu, x, y, 2) == 0.0 && GetValue(cpu, x, y, 3) == 0.0);
+      }
+    }
+    for (int doubling = 0; doubling < 2; ++doubling)
+    {
+      auto pass = UseMLAA(renderer, options);
+      pass->SetLineLengths(
+        doubling ? vtkOpenGLMLAAPass::RECURSIVE_DOUBLING : vtkOpenGLMLAAPass::SEARCH_LOOP);
+      auto gpu = vtkMLAAScenes::Capture(window, true);
+      StopPass(renderer, window);
+      const Difference d = Compare(cpu, gpu, 0.0);
+      if (!MLAA_CHECK(d.Count == 0))
+      {
+        std::cerr << "T junctions, " << searchSteps << " steps, "
+                  << (doubling ? "doubling" : "search loop") << ": " << d.Pixels
+                  << " pixels of the weights differ from the filter's" << std::endl;
+      }
+    }
+  }
+}
 }
 
 int TestMLAAPassLongLines(int, char*[])
 {
   UnknownHeightEnds();
+  TJunctions();
   OneDegreeSlope();
   DiagonalStaircases();
   SameWeightsOnSharedScenes();
