@@ -47,6 +47,7 @@
 
 #include <array>
 #include <cmath>
+#include <string>
 #include <vector>
 
 using namespace vtkMLAATest;
@@ -341,9 +342,10 @@ void AutomaticAndResources()
   renderer->SetPass(nullptr);
 }
 
-// Dark rectangles on white, one world unit per pixel, given by their pixel ranges (inclusive).
+// Rectangles on white, one world unit per pixel, given by their pixel ranges (inclusive): black,
+// or with `greys`, each the grey level of its rectangle.
 void BuildRectangles(vtkRenderer* renderer, const std::vector<std::array<int, 4>>& rectangles,
-  int width, int height)
+  int width, int height, const std::vector<unsigned char>& greys = {})
 {
   vtkNew<vtkPoints> points;
   vtkNew<vtkCellArray> polys;
@@ -360,7 +362,38 @@ void BuildRectangles(vtkRenderer* renderer, const std::vector<std::array<int, 4>
   vtkNew<vtkPolyData> polyData;
   polyData->SetPoints(points);
   polyData->SetPolys(polys);
+  if (!greys.empty())
+  {
+    vtkNew<vtkUnsignedCharArray> colors;
+    colors->SetNumberOfComponents(3);
+    for (const unsigned char grey : greys)
+    {
+      colors->InsertNextTuple3(grey, grey, grey);
+    }
+    polyData->GetCellData()->SetScalars(colors);
+  }
   ShowFlat(renderer, polyData, 1.0, width, height);
+}
+
+// The pass's blending weights (`options` has the BLENDING_WEIGHTS debug output) equal `cpu`, the
+// filter's, exactly, with the lines searched and with their lengths counted by recursive doubling.
+void CheckPassWeights(vtkRenderer* renderer, vtkRenderWindow* window, vtkMLAAOptions* options,
+  vtkImageData* cpu, const std::string& label)
+{
+  for (int doubling = 0; doubling < 2; ++doubling)
+  {
+    auto pass = UseMLAA(renderer, options);
+    pass->SetLineLengths(
+      doubling ? vtkOpenGLMLAAPass::RECURSIVE_DOUBLING : vtkOpenGLMLAAPass::SEARCH_LOOP);
+    auto gpu = vtkMLAAScenes::Capture(window, true);
+    StopPass(renderer, window);
+    const Difference d = Compare(cpu, gpu, 0.0);
+    if (!MLAA_CHECK(d.Count == 0))
+    {
+      std::cerr << label << ", " << (doubling ? "doubling" : "search loop") << ": " << d.Pixels
+                << " pixels of the weights differ from the filter's" << std::endl;
+    }
+  }
 }
 
 void UnknownHeightEnds()
@@ -401,20 +434,7 @@ void UnknownHeightEnds()
     MLAA_CHECK(GetValue(cpu, 27, 14, 1) != GetValue(cpu, 27, 34, 1));
     MLAA_CHECK(GetValue(cpu, 53, 37, 2) < GetValue(chapter, 53, 37, 2) ||
       GetValue(cpu, 53, 37, 3) < GetValue(chapter, 53, 37, 3));
-    for (int doubling = 0; doubling < 2; ++doubling)
-    {
-      auto pass = UseMLAA(renderer, options);
-      pass->SetLineLengths(
-        doubling ? vtkOpenGLMLAAPass::RECURSIVE_DOUBLING : vtkOpenGLMLAAPass::SEARCH_LOOP);
-      auto gpu = vtkMLAAScenes::Capture(window, true);
-      StopPass(renderer, window);
-      const Difference d = Compare(cpu, gpu, 0.0);
-      if (!MLAA_CHECK(d.Count == 0))
-      {
-        std::cerr << searchSteps << " steps, " << (doubling ? "doubling" : "search loop") << ": "
-                  << d.Pixels << " pixels of the weights differ from the filter's" << std::endl;
-      }
-    }
+    CheckPassWeights(renderer, window, options, cpu, std::to_string(searchSteps) + " steps");
   }
 }
 
@@ -430,27 +450,7 @@ void TJunctions()
   auto window = vtkMLAAScenes::NewOffscreenWindow(width, height);
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkCellArray> polys;
-  vtkNew<vtkUnsignedCharArray> colors;
-  colors->SetNumberOfComponents(3);
-  for (const auto& band : { std::array<int, 4>{ 10, 29, -8, 23 }, { 10, 29, 24, 55 } })
-  {
-    const vtkIdType first = points->GetNumberOfPoints();
-    points->InsertNextPoint(band[0], band[2], 0.0);
-    points->InsertNextPoint(band[1] + 1.0, band[2], 0.0);
-    points->InsertNextPoint(band[1] + 1.0, band[3] + 1.0, 0.0);
-    points->InsertNextPoint(band[0], band[3] + 1.0, 0.0);
-    const vtkIdType quad[4] = { first, first + 1, first + 2, first + 3 };
-    polys->InsertNextCell(4, quad);
-    const unsigned char grey = band[2] < 24 ? 96 : 0;
-    colors->InsertNextTypedTuple(std::array<unsigned char, 3>{ grey, grey, grey }.data());
-  }
-  vtkNew<vtkPolyData> polyData;
-  polyData->SetPoints(points);
-  polyData->SetPolys(polys);
-  polyData->GetCellData()->SetScalars(colors);
-  ShowFlat(renderer, polyData, 1.0, width, height);
+  BuildRectangles(renderer, { { 10, 29, -8, 23 }, { 10, 29, 24, 55 } }, width, height, { 96, 0 });
   auto plain = vtkMLAAScenes::Capture(window);
   MLAA_CHECK(GetValue(plain, 29, 23) == 96.0 && GetValue(plain, 29, 24) == 0.0 &&
     GetValue(plain, 30, 23) == 255.0 && GetValue(plain, 9, 24) == 255.0);
@@ -468,21 +468,8 @@ void TJunctions()
         MLAA_CHECK(GetValue(cpu, x, y, 2) == 0.0 && GetValue(cpu, x, y, 3) == 0.0);
       }
     }
-    for (int doubling = 0; doubling < 2; ++doubling)
-    {
-      auto pass = UseMLAA(renderer, options);
-      pass->SetLineLengths(
-        doubling ? vtkOpenGLMLAAPass::RECURSIVE_DOUBLING : vtkOpenGLMLAAPass::SEARCH_LOOP);
-      auto gpu = vtkMLAAScenes::Capture(window, true);
-      StopPass(renderer, window);
-      const Difference d = Compare(cpu, gpu, 0.0);
-      if (!MLAA_CHECK(d.Count == 0))
-      {
-        std::cerr << "T junctions, " << searchSteps << " steps, "
-                  << (doubling ? "doubling" : "search loop") << ": " << d.Pixels
-                  << " pixels of the weights differ from the filter's" << std::endl;
-      }
-    }
+    CheckPassWeights(
+      renderer, window, options, cpu, "T junctions, " + std::to_string(searchSteps) + " steps");
   }
 }
 }
