@@ -462,7 +462,7 @@ private:
     }
     else
     {
-      end.Unseen = this->CrossingInside(l, crossing, end.Code == 3 ? -1 : 2) != 0;
+      end.Unseen = this->CrossingGoesOn(l, crossing, 0, end.Code);
     }
   }
 
@@ -490,7 +490,7 @@ private:
     {
       return false;
     }
-    return this->CrossingInside(l, crossing, code == 3 ? v - 1 : v + 2) != 0;
+    return this->CrossingGoesOn(l, crossing, v, code);
   }
 
   // The edgels at (x, y) clamped to the available pixels, as a GPU reads a texture with
@@ -565,7 +565,17 @@ private:
   bool JunctionGoesOn(const Line<V>& l, int code, int crossing, int beyond) const
   {
     return (code == 1 || code == 3) && this->AlongInside(l, beyond, 0) &&
-      this->CrossingInside(l, crossing, code == 3 ? -1 : 2);
+      this->CrossingGoesOn(l, crossing, 0, code);
+  }
+
+  // Whether the crossing edge of code `code` (1 or 3: on one side) of the line at row (column) v,
+  // whose edgels belong to the pixel at u = crossing, goes on for a second pixel away from the
+  // line: the side of a shape or a region, not a one-pixel step. The test of a corner (LineEnd,
+  // RunEndsUnseen) and of a T junction (JunctionGoesOn). None outside the image.
+  template <bool V>
+  bool CrossingGoesOn(const Line<V>& l, int crossing, int v, int code) const
+  {
+    return this->CrossingInside(l, crossing, code == 3 ? v - 1 : v + 2) != 0;
   }
 
   // Edgels for the diagonal search and ThinAcross: none outside the image.

@@ -364,6 +364,15 @@ bool crossingAt(ivec2 p, bool vertical, int u, int v)
   return (vertical ? e.g : e.r) > 0.5;
 }
 
+// Whether the crossing edge of code `code` (1 or 3: on one side) of the line at row (column) v,
+// whose edgels belong to the pixel at u = crossing, goes on for a second pixel away from the
+// line: the side of a shape or a region, not a one-pixel step. The test of a corner (lineEnd,
+// runEndsUnseen) and of a T junction (junctionGoesOn); WeightsComputer::CrossingGoesOn.
+bool crossingGoesOn(ivec2 p, bool vertical, int crossing, int v, int code)
+{
+  return crossingAt(p, vertical, crossing, code == 3 ? v - 1 : v + 2);
+}
+
 // Whether the end of p's line whose crossing edgels belong to the pixel at u = crossing, of
 // crossing-edge code `code`, is a T junction that the line goes on past: crossing edgels on one
 // side, the line's own edgel going on straight past the end (at u = beyond) and the crossing edge
@@ -372,7 +381,7 @@ bool crossingAt(ivec2 p, bool vertical, int u, int v)
 bool junctionGoesOn(int code, ivec2 p, bool vertical, int crossing, int beyond)
 {
   return (code == 1 || code == 3) && alongAt(p, vertical, beyond, 0) &&
-    crossingAt(p, vertical, crossing, code == 3 ? -1 : 2);
+    crossingGoesOn(p, vertical, crossing, 0, code);
 }
 
 // Whether one of the two pixels across the edgel of p's line (p and the pixel at v + 1) is one
@@ -614,7 +623,7 @@ bool runEndsUnseen(ivec2 p, bool vertical, int u, int v, int s, int length)
   {
     return false;
   }
-  return crossingAt(p, vertical, crossing, code == 3 ? v - 1 : v + 2);
+  return crossingGoesOn(p, vertical, crossing, v, code);
 }
 
 // The end of p's line in direction s (-1: the first end, +1: the second), `distance` pixels
@@ -634,7 +643,7 @@ ivec3 lineEnd(int code, ivec2 p, bool vertical, int s, int distance)
     int length = runDistance(lineToImage(p, vertical, beyond, next), vertical, s) + 1;
     return ivec3(0, length, runEndsUnseen(p, vertical, beyond, next, s, length) ? 1 : 0);
   }
-  return ivec3(crossingAt(p, vertical, crossing, code == 3 ? -1 : 2) ? 1 : 0, 0, 0);
+  return ivec3(crossingGoesOn(p, vertical, crossing, 0, code) ? 1 : 0, 0, 0);
 }
 #endif
 
