@@ -28,6 +28,8 @@ struct ContrastRow
 {
   Acc* Left;
   Acc* Top;
+  bool* RampLeft; // the boundary lies inside a ramp (EdgeDetector::InsideRamp)
+  bool* RampTop;
 };
 
 // The contrasts of rows and the edgels that local contrast adaptation keeps.
@@ -123,10 +125,53 @@ public:
     }
   }
 
+  // Whether a boundary lies inside a ramp rather than at a step: the boundaries before and after
+  // it along the same axis change the features the same way as it does, by at least half as
+  // much (the projections of their changes on its change d are at least |d| / 2). Sampled
+  // shading, a colour map's gradient or an already antialiased edge, which a step's blend would
+  // only damage. The four pixels in a row across it are x0 and x of rows a0 and a, xb and x1 of
+  // rows b and b1 (planes of `stride` values). a0 or b1 is null where that pixel is outside the
+  // extent: at its border the side that is seen decides alone (the ramp goes on out of sight as
+  // it does inside). A pixel holding NaN has NaN features: no ramp.
+  bool InsideRamp(const Acc* a0, const Acc* a, const Acc* b, const Acc* b1, size_t stride,
+    int x0, int x, int xb, int x1) const
+  {
+    if (!a0 && !b1)
+    {
+      return false;
+    }
+    Acc dd = 0, before = 0, after = 0;
+    for (int k = 0; k < this->F; ++k)
+    {
+      const size_t o = k * stride;
+      const Acc d = b[o + xb] - a[o + x];
+      dd += d * d;
+      before += a0 ? d * (a[o + x] - a0[o + x0]) : Acc(0);
+      after += b1 ? d * (b1[o + x1] - b[o + xb]) : Acc(0);
+    }
+    return (!a0 || Acc(2) * before >= dd) && (!b1 || Acc(2) * after >= dd);
+  }
+
+  // Which edges of row f (contrasts in b) lie inside ramps, from the row itself (left edges) and
+  // the rows below it (e), above it (g) and two above (g2) (top edges), each null where outside
+  // the extent.
+  void Ramps(const Acc* e, const Acc* f, const Acc* g, const Acc* g2, ContrastRow<Acc> b,
+    int w) const
+  {
+    const size_t stride = static_cast<size_t>(w);
+    for (int x = 0; x < w; ++x)
+    {
+      b.RampLeft[x] = b.Left[x] > Acc(0) &&
+        this->InsideRamp(x >= 2 ? f : nullptr, f, f, x + 1 < w ? f : nullptr, stride, x - 2, x - 1,
+          x, x + 1);
+      b.RampTop[x] = b.Top[x] > Acc(0) && this->InsideRamp(e, f, g, g2, stride, x, x, x, x);
+    }
+  }
+
   // The edgels of one row that local contrast adaptation (vtkMLAAOptions::LocalContrastFactor)
   // keeps, from the contrasts of the row (b) and of the rows below and above it: an edge whose
   // contrast, times the factor, is below the contrast of one of the six other boundaries of the
-  // two pixels it separates is dropped.
+  // two pixels it separates is dropped, and so is an edge inside a ramp (Ramps).
   void KeepEdgels(ContrastRow<Acc> below, ContrastRow<Acc> b, ContrastRow<Acc> above,
     unsigned char* edges, int w) const
   {
@@ -157,14 +202,16 @@ public:
       unsigned char* edge = edges + 2 * x;
       edge[0] = (left > Acc(0) &&
                    (factor == Acc(0) ||
-                     factor * left >= std::max({ b.Left[x - 1], b.Left[x + 1], b.Top[x - 1], top,
-                                        below.Top[x - 1], below.Top[x] })))
+                     (!b.RampLeft[x] &&
+                       factor * left >= std::max({ b.Left[x - 1], b.Left[x + 1], b.Top[x - 1],
+                                          top, below.Top[x - 1], below.Top[x] }))))
         ? 255
         : 0;
       edge[1] = (top > Acc(0) &&
                    (factor == Acc(0) ||
-                     factor * top >= std::max({ below.Top[x], above.Top[x], left, b.Left[x + 1],
-                                       above.Left[x], above.Left[x + 1] })))
+                     (!b.RampTop[x] &&
+                       factor * top >= std::max({ below.Top[x], above.Top[x], left,
+                                         b.Left[x + 1], above.Left[x], above.Left[x + 1] }))))
         ? 255
         : 0;
     }
@@ -195,6 +242,7 @@ void DetectEdges(const std::function<void(int, Acc*)>& readRow, int features,
   const int w = r.Width();
   const int h = r.Height();
   const EdgeDetector<Acc> detector(features, settings);
+  const bool adapts = settings.LocalContrastFactor > 0.0;
   vtkSMPTools::For(0, h, RowsPerTask, [&](vtkIdType begin, vtkIdType end) {
     if (progress.Aborted())
     {
@@ -204,12 +252,14 @@ void DetectEdges(const std::function<void(int, Acc*)>& readRow, int features,
     const int rows = static_cast<int>(end - begin) + 2;
     const size_t stride = static_cast<size_t>(w) + 2;
     std::unique_ptr<Acc[]> band(new Acc[2 * stride * rows]);
+    std::unique_ptr<bool[]> ramps(new bool[2 * stride * rows]());
     auto contrastRow = [&](int i) {
-      Acc* left = band.get() + 2 * stride * (i + 1 - begin);
-      return ContrastRow<Acc>{ left + 1, left + stride + 1 };
+      const size_t o = 2 * stride * (i + 1 - begin);
+      Acc* left = band.get() + o;
+      bool* ramp = ramps.get() + o;
+      return ContrastRow<Acc>{ left + 1, left + stride + 1, ramp + 1, ramp + stride + 1 };
     };
-    std::vector<Acc> current(static_cast<size_t>(w) * features);
-    std::vector<Acc> above(current.size());
+    const size_t rowSize = static_cast<size_t>(w) * features;
     const int first = std::max(0, static_cast<int>(begin) - 1);
     const int last = std::min(h - 1, static_cast<int>(end));
     for (int i = static_cast<int>(begin) - 1; i <= static_cast<int>(end); ++i)
@@ -222,18 +272,28 @@ void DetectEdges(const std::function<void(int, Acc*)>& readRow, int features,
         std::fill(b.Top - 1, b.Top + w + 1, Acc(0));
       }
     }
-    readRow(r.Y0 + first, current.data());
+    // The features of rows first - 1 .. last + 2 inside the extent (ramps read two rows past
+    // the contrasts).
+    const int firstRead = std::max(0, first - 1);
+    const int lastRead = std::min(h - 1, last + 2);
+    std::vector<Acc> rowFeatures(rowSize * (lastRead - firstRead + 1));
+    for (int i = firstRead; i <= lastRead; ++i)
+    {
+      readRow(r.Y0 + i, rowFeatures.data() + rowSize * (i - firstRead));
+    }
+    auto featuresOf = [&](int i) -> const Acc* {
+      return i < firstRead || i > lastRead ? nullptr
+                                           : rowFeatures.data() + rowSize * (i - firstRead);
+    };
     for (int i = first; i <= last; ++i)
     {
-      // The top row of the extent has no top edge; the top row of a piece has one that is
-      // never read (the padding covers every read), so it is left out.
-      const bool hasAbove = i + 1 < h;
-      if (hasAbove)
+      // The top row of the extent has no top edge (no row above: null).
+      const ContrastRow<Acc> b = contrastRow(i);
+      detector.Contrasts(featuresOf(i), featuresOf(i + 1), b, w);
+      if (adapts && i >= begin && i < end)
       {
-        readRow(r.Y0 + i + 1, above.data());
+        detector.Ramps(featuresOf(i - 1), featuresOf(i), featuresOf(i + 1), featuresOf(i + 2), b, w);
       }
-      detector.Contrasts(current.data(), hasAbove ? above.data() : nullptr, contrastRow(i), w);
-      std::swap(current, above);
     }
     for (vtkIdType i = begin; i < end; ++i)
     {

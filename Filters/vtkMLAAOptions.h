@@ -24,7 +24,10 @@
  *   cylinder, say) otherwise makes faint edges that cut the silhouette's staircase into short
  *   pieces with the wrong shapes; with the default factor, only edges at least half as
  *   strong as the strongest edge beside them count. A faint edge with no stronger edge beside
- *   it is kept.
+ *   it is kept. Adaptation also drops an edge that lies inside a ramp: where the boundaries
+ *   before and after it, along the same axis, change what is compared the same way, by at least
+ *   half as much (sampled shading, a smooth colour map, an edge that is already antialiased);
+ *   MLAA's blend assumes a step between two regions, and would only damage a ramp.
  * - EdgeDetection (default Lab): what is compared across each pixel boundary.
  *   - Luma: the Rec. 709 luminance 0.2126 R + 0.7152 G + 0.0722 B (the chapter's section 4.2.1;
  *     one- and two-component images use their first component). Cheapest and perceptual.
@@ -189,8 +192,10 @@ public:
   ///@{
   /**
    * Local contrast adaptation: an edge survives only if LocalContrastFactor times its contrast
-   * is at least the contrast of each other boundary of the two pixels it separates. Default 2,
-   * range [0, 100]; 0 keeps every edge above the threshold (the chapter's detection).
+   * is at least the contrast of each other boundary of the two pixels it separates, and if it
+   * does not lie inside a ramp (the boundaries before and after it along the same axis change the
+   * values the same way, by at least half as much). Default 2, range [0, 100]; 0 keeps every edge
+   * above the threshold (the chapter's detection).
    */
   vtkSetClampMacro(LocalContrastFactor, double, 0.0, 100.0);
   vtkGetMacro(LocalContrastFactor, double);

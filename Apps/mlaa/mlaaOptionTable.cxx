@@ -249,7 +249,9 @@ const std::vector<Option> OptionTable = {
     {
       return Text("Local contrast adaptation: an edge is kept only if F times its contrast is at "
                   "least the contrast of every other boundary of its two pixels, so that faint "
-                  "shading next to a strong silhouette does not cut it into pieces; in ",
+                  "shading next to a strong silhouette does not cut it into pieces, and "
+                  "edges inside ramps of shading (the boundaries before and after them change "
+                  "the values the same way, by at least half as much) are dropped; in ",
         range, ", 0 keeps every edge above the threshold. Default: ",
         d.Options->GetLocalContrastFactor(), ".");
     } },

@@ -37,7 +37,8 @@
 // Local contrast adaptation (built with MLAA_LOCAL_CONTRAST defined, run when
 // vtkMLAAOptions::LocalContrastFactor > 0 on the edge pixels only): rewrites the edges of each
 // edge pixel, dropping an edge when the factor times its contrast is below the contrast of one
-// of the six other boundaries of the two pixels it separates. Doing this in a pass of its own
+// of the six other boundaries of the two pixels it separates, or when it lies inside a ramp
+// (insideRamp). Doing this in a pass of its own
 // keeps its extra reads off the pixels without edges (the depth test rejects them before the
 // shader runs), which matters on rasterisers that run both sides of every branch.
 //
@@ -118,6 +119,40 @@ void pixelAt(ivec2 q, ivec2 size, out vec4 color, out vec4 features)
 }
 
 #ifdef MLAA_LOCAL_CONTRAST
+// What edge detection compares of a pixel (colour a, features fa), as a vector: luma, the
+// colour channels, the depth or CIELAB, and alpha where it counts (the CPU filter's features,
+// FeatureReader).
+vec4 comparedOf(vec4 a, vec4 fa)
+{
+#if MLAA_EDGE_DETECTION == 1
+  vec4 v = vec4(a.rgb, 0.0);
+#elif MLAA_EDGE_DETECTION == 2
+  vec4 v = vec4(fa.r, 0.0, 0.0, 0.0);
+#elif MLAA_EDGE_DETECTION == 3
+  vec4 v = vec4(fa.rgb, 0.0);
+#else
+  vec4 v = vec4(dot(a.rgb, lumaWeights), 0.0, 0.0, 0.0);
+#endif
+#ifdef MLAA_USE_ALPHA
+  v.a = a.a;
+#endif
+  return v;
+}
+
+// Whether an edge whose compared values change by d across it lies inside a ramp: the
+// boundaries before and after it along the same axis change them the same way, by at least half
+// as much (the projections of their changes on d are at least |d| / 2). Sampled shading, not a
+// step between two regions (vtkMLAAEdgeDetection.cxx, EdgeDetector::InsideRamp). `seen`: whether
+// the pixels before and after the edge's two are inside the image; at its border the side seen
+// decides alone. `finite`: whether their colours are finite (the edge's own two are, or it would
+// not be one); a pixel seen that is not finite makes no ramp.
+bool insideRamp(vec4 before, vec4 d, vec4 after, bvec2 seen, bvec2 finite)
+{
+  float dd = dot(d, d);
+  return any(seen) && (!seen.x || (finite.x && 2.0 * dot(d, before) >= dd)) &&
+    (!seen.y || (finite.y && 2.0 * dot(d, after) >= dd));
+}
+
 // The contrast between pixels p and q (q = p + (1, 0) or p + (0, 1)), given their colours and
 // features; 0 where either is outside the image, whose border is never an edge.
 float between(ivec2 p, ivec2 q, ivec2 size, vec4 a, vec4 fa, vec4 b, vec4 fb)
@@ -190,6 +225,12 @@ void main()
   float right = p.x < size.x - 1 ? contrastOf(color, features, colorQ, featuresQ) : 0.0;
   float bottom = p.y > 0 ? contrastOf(color, features, colorR, featuresR) : 0.0;
   float around = max(right, bottom);
+  // For the ramp test: the compared values of this pixel and of its right and lower neighbours.
+  vec4 here = comparedOf(color, features);
+  vec4 rightOf = comparedOf(colorQ, featuresQ);
+  vec4 below = comparedOf(colorR, featuresR);
+  bool rightFinite = isFiniteColor(colorQ);
+  bool belowFinite = isFiniteColor(colorR);
   // The pixel above l (left of t) is a neighbour of both l and t.
   vec4 colorLT, featuresLT;
   pixelAt(l + dy, size, colorLT, featuresLT);
@@ -201,7 +242,10 @@ void main()
       max(between(l - dx, l, size, colorQ, featuresQ, colorL, featuresL),
         max(between(l, l + dy, size, colorL, featuresL, colorLT, featuresLT),
           between(l - dy, l, size, colorR, featuresR, colorL, featuresL))));
-    keepLeft = localContrastFactor * left >= strongest;
+    vec4 atL = comparedOf(colorL, featuresL);
+    keepLeft = localContrastFactor * left >= strongest &&
+      !insideRamp(atL - comparedOf(colorQ, featuresQ), here - atL, rightOf - here,
+        bvec2(p.x >= 2, p.x + 1 < size.x), bvec2(isFiniteColor(colorQ), rightFinite));
   }
   if (keepTop)
   {
@@ -211,7 +255,10 @@ void main()
       max(between(t, t + dy, size, colorT, featuresT, colorQ, featuresQ),
         max(between(t - dx, t, size, colorLT, featuresLT, colorT, featuresT),
           between(t, t + dx, size, colorT, featuresT, colorR, featuresR))));
-    keepTop = localContrastFactor * top >= strongest;
+    vec4 atT = comparedOf(colorT, featuresT);
+    keepTop = localContrastFactor * top >= strongest &&
+      !insideRamp(here - below, atT - here, comparedOf(colorQ, featuresQ) - atT,
+        bvec2(p.y >= 1, p.y + 2 < size.y), bvec2(belowFinite, isFiniteColor(colorQ)));
   }
 #else
   if (!keepLeft && !keepTop)

@@ -4,13 +4,15 @@
 // find; depth edges follow a depth image instead of the colours; alpha edges give a silhouette
 // over a transparent background a soft alpha border; the threshold decides how faint an edge may
 // be; zero threshold means any difference; local contrast adaptation drops faint edges next to
-// strong ones only. Lab edges (Biri et al. section 3.2) find red against blue of equal luma,
+// strong ones only, and edges inside ramps of shading. Lab edges (Biri et al. section 3.2) find red against blue of equal luma,
 // which luma edges miss; the conversion gives reference CIELAB values; the contrast is
 // Delta E / 100 (an edge appears just below a reference Delta E and not just above it, with and
 // without alpha).
 #include "vtkAntialiasingTestUtilities.h"
 
 #include "vtkMLAALab.h"
+
+#include <algorithm>
 
 using namespace vtkMLAATest;
 
@@ -210,6 +212,61 @@ void LocalContrast()
   MLAA_CHECK(ChangedPixels(rim, RunMLAA(rim, MediumOptions())) == 0);
 }
 
+// A grey ramp is no edge (issue 20): a shape whose columns rise in grey from 30 to 230, 20 levels
+// a column, under a staircase top (Inside), on black. Its columns' boundaries are above the
+// threshold, and without local contrast adaptation they are lines of edgels that the top's steps
+// cut, blended like any staircase. With it, the boundaries inside the ramp (each between two that
+// change the grey the same way, by at least half as much) are dropped: the edgels at the ramp's
+// ends and the top's stay, and no pixel of the ramp under the top's reach changes. The direction
+// counts: with colour edges, red rising then green rising is no ramp (their changes are
+// orthogonal), grey rising is one.
+void Ramps()
+{
+  // The shape: columns 8 to 18, each up to row 10 + (x - 8) / 3 (a staircase top).
+  auto inRamp = [](int x, int y) { return x >= 8 && x <= 18 && y < 10 + (x - 8) / 3; };
+  auto input = MakeImage(32, 16, 3);
+  FillImage(input, [&](int x, int y, int, int) { return inRamp(x, y) ? 30.0 + 20.0 * (x - 8) : 0.0; });
+  vtkNew<vtkMLAAOptions> options;
+  options->SetEdgeDetectionToLuma();
+  options->SetThreshold(0.05); // a column's 20 levels are 0.078
+  options->SetDebugOutputToEdges();
+  vtkNew<vtkMLAAOptions> off;
+  off->DeepCopy(options);
+  off->SetLocalContrastFactor(0.0);
+  auto edges = RunMLAA(input, options);
+  auto all = RunMLAA(input, off);
+  for (int y = 0; y < 10; ++y)
+  {
+    for (int x = 0; x < 32; ++x)
+    {
+      // Every column boundary of the shape is an edge without adaptation. With it, the one
+      // between black and 30 (the rise before it is 0) and the one from 230 down to black (the
+      // strongest around) stay; the others lie inside the ramp (the last, from 210 to 230, is
+      // also dropped for its contrast next to the drop to black).
+      const bool boundary = x >= 8 && x <= 19;
+      MLAA_CHECK(GetValue(edges, x, y, 0) == (x == 8 || x == 19 ? 255.0 : 0.0));
+      MLAA_CHECK(GetValue(all, x, y, 0) == (boundary ? 255.0 : 0.0));
+    }
+  }
+  // Colour edges: along rows 0 to 3, black, red, red + green, red + green + blue (0.4 each):
+  // each change is orthogonal to the one before, so every boundary is an edge. Along rows 4 to
+  // 7, greys rising by 60 levels (0.235) a column: a ramp, which keeps its two ends only.
+  auto colors = MakeImage(8, 8, 3);
+  FillImage(colors, [](int x, int y, int, int c) {
+    const int step = std::min(std::max(x - 2, 0), 3); // 0 0 0 1 2 3 3 3
+    return y < 4 ? (step > c ? 102.0 : 0.0) : 60.0 * step;
+  });
+  vtkNew<vtkMLAAOptions> color;
+  color->SetEdgeDetectionToColor();
+  color->SetDebugOutputToEdges();
+  auto colorEdges = RunMLAA(colors, color);
+  for (int x = 0; x < 8; ++x)
+  {
+    MLAA_CHECK(GetValue(colorEdges, x, 1, 0) == (x >= 3 && x <= 5 ? 255.0 : 0.0));
+    MLAA_CHECK(GetValue(colorEdges, x, 6, 0) == (x == 3 || x == 5 ? 255.0 : 0.0));
+  }
+}
+
 // Reference CIELAB (L, a, b) of an sRGB colour in [0, 1], in double precision with std::cbrt.
 void ReferenceLab(const double rgb[3], double lab[3])
 {
@@ -388,6 +445,7 @@ int TestImageMLAAEdgeModes(int, char*[])
   Alpha();
   Threshold();
   LocalContrast();
+  Ramps();
   Lab();
   return Result();
 }

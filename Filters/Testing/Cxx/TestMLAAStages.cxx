@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The stages of the CPU MLAA (vtkMLAAStages.h), each on its own: the halo derived from the
 // options, the features (normalisation, luma, planes, NaN), edge detection (threshold, image
-// border, local contrast adaptation), blending weights (an L shape against the area texture's
+// border, local contrast adaptation, edges inside ramps), blending weights (an L shape against the area texture's
 // generator), neighbourhood blending (equation 4.1, dominant direction, straight and
 // premultiplied alpha), the whole slice on the smallest extents, and the buffers that every
 // filter of the process shares.
@@ -162,6 +162,58 @@ void EdgeDetection()
   MLAA_CHECK(row.Left(11, 20) && row.Left(12, 20) && !row.Top(11, 20));
   const EdgesBuffer column = Edges({ { 0 }, { 1 } }, 2.0);
   MLAA_CHECK(column.Top(10, 20) && !column.Left(10, 20) && !column.Top(10, 21));
+}
+
+// Edges inside ramps (issue 20): a boundary whose neighbours along the same axis, before and
+// after it, change the values the same way by at least half as much is sampled shading, not a
+// step: local contrast adaptation drops it; its factor 0 (off) keeps it.
+void Ramps()
+{
+  // A ramp of 0.2 a pixel from 0 to 1 along x, three rows high: the edgels at its two ends (x =
+  // 2 and 6: a flat pixel on one side) are kept, the three inside it dropped. The same along y.
+  const std::vector<float> ramp = { 0.0f, 0.0f, 0.2f, 0.4f, 0.6f, 0.8f, 1.0f, 1.0f };
+  const EdgesBuffer along = Edges({ ramp, ramp, ramp }, 2.0);
+  const EdgesBuffer off = Edges({ ramp, ramp, ramp }, 0.0);
+  std::vector<std::vector<float>> column;
+  for (const float v : ramp)
+  {
+    column.push_back({ v, v });
+  }
+  const EdgesBuffer across = Edges(column, 2.0);
+  for (int i = 0; i < 8; ++i)
+  {
+    const bool end = i == 2 || i == 6;
+    const bool inside = i >= 3 && i <= 5;
+    for (int j = 0; j < 2; ++j)
+    {
+      MLAA_CHECK(along.Left(10 + i, 20 + j) == end);
+      MLAA_CHECK(off.Left(10 + i, 20 + j) == (end || inside));
+      MLAA_CHECK(!along.Top(10 + i, 20 + j));
+      // A top edgel is on the row below its boundary: the rise from row 1 to 2, from 5 to 6.
+      MLAA_CHECK(across.Top(10 + j, 20 + i) == (i == 1 || i == 5));
+      MLAA_CHECK(!across.Left(10 + j, 20 + i));
+    }
+  }
+  // At least half as much: before the edgel at x = 2 the values rise by 0.12 (more than half of
+  // its 0.2: a ramp) or by 0.08 (less: a step).
+  MLAA_CHECK(!Edges({ { 0.0f, 0.12f, 0.32f, 0.52f, 0.52f } }, 2.0).Left(12, 20));
+  MLAA_CHECK(Edges({ { 0.0f, 0.08f, 0.28f, 0.48f, 0.48f } }, 2.0).Left(12, 20));
+  // The same way: a zigzag has no ramp; every boundary is an edge.
+  const EdgesBuffer zigzag = Edges({ { 0.0f, 0.3f, 0.1f, 0.3f, 0.1f, 0.3f } }, 2.0);
+  for (int x = 11; x <= 15; ++x)
+  {
+    MLAA_CHECK(zigzag.Left(x, 20));
+  }
+  // A NaN pixel before the edge: no ramp (x = 2). At the extent's border the side seen decides
+  // alone: the last boundary (x = 3) goes on from the one before it, a ramp; the last of
+  // { 0, 0, 0.2 } follows a flat pair, a step; a two-pixel extent sees neither side, a step.
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const EdgesBuffer open = Edges({ { nan, 0.2f, 0.4f, 0.6f } }, 2.0);
+  MLAA_CHECK(!open.Left(11, 20) && open.Left(12, 20) && !open.Left(13, 20));
+  MLAA_CHECK(Edges({ { 0.0f, 0.0f, 0.2f } }, 2.0).Left(12, 20));
+  MLAA_CHECK(Edges({ { 0.0f, 0.5f } }, 2.0).Left(11, 20));
+  const EdgesBuffer bottom = Edges({ { 0.0f }, { 0.2f }, { 0.4f } }, 2.0);
+  MLAA_CHECK(!bottom.Top(10, 20) && !bottom.Top(10, 21)); // each boundary sees one side rise
 }
 
 void BlendingWeights()
@@ -412,6 +464,7 @@ int TestMLAAStages(int, char*[])
   HaloFromOptions();
   Features();
   EdgeDetection();
+  Ramps();
   BlendingWeights();
   NeighbourhoodBlending();
   SmallestExtents();

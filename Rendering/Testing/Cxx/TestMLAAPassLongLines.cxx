@@ -23,7 +23,9 @@
 //   exactly, searched and counted, at 16 and 128 steps, and differ from those without the option
 //   there;
 // - T junctions on a plane's sides (a band border meeting them from the inside) are no steps: the
-//   pass's weights equal the filter's exactly, searched and counted, and the sides take none.
+//   pass's weights equal the filter's exactly, searched and counted, and the sides take none;
+// - a ramp of greys (columns under a staircase top) has no edges inside it with local contrast
+//   adaptation, in Lab, luma and colour modes: the pass's weights equal the filter's exactly.
 #include "vtkAntialiasingRenderTestUtilities.h"
 #include "vtkMLAAScenes.h"
 #include "vtkAntialiasingTestUtilities.h"
@@ -472,12 +474,69 @@ void TJunctions()
       renderer, window, options, cpu, "T junctions, " + std::to_string(searchSteps) + " steps");
   }
 }
+
+void Ramps()
+{
+  // Columns 8 to 18 rising in grey from 30 to 230, 20 levels a column, each up to row
+  // 10 + (x - 8) / 3, on black. With local contrast adaptation the boundaries inside the ramp
+  // (columns 9 to 18's left edgels) are no edges (issue 20); without it they are. With Lab, luma
+  // and colour edges, the pass's edges and blending weights equal the filter's exactly
+  // (TestMLAAStages and TestImageMLAAEdgeModes have the filter's cases).
+  const int width = 40, height = 24;
+  auto window = vtkMLAAScenes::NewOffscreenWindow(width, height);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  std::vector<std::array<int, 4>> columns;
+  std::vector<unsigned char> greys;
+  for (int x = 8; x <= 18; ++x)
+  {
+    columns.push_back({ x, x, -4, 9 + (x - 8) / 3 });
+    greys.push_back(static_cast<unsigned char>(30 + 20 * (x - 8)));
+  }
+  BuildRectangles(renderer, columns, width, height, greys);
+  renderer->SetBackground(0.0, 0.0, 0.0);
+  auto plain = vtkMLAAScenes::Capture(window);
+  MLAA_CHECK(GetValue(plain, 8, 9) == 30.0 && GetValue(plain, 8, 10) == 0.0 &&
+    GetValue(plain, 18, 0) == 230.0 && GetValue(plain, 18, 12) == 230.0 &&
+    GetValue(plain, 18, 13) == 0.0 && GetValue(plain, 19, 0) == 0.0);
+  for (int mode : { vtkMLAAOptions::LAB, vtkMLAAOptions::LUMA, vtkMLAAOptions::COLOR })
+  {
+    const std::string label = "ramps, edge detection " + std::to_string(mode);
+    vtkNew<vtkMLAAOptions> options;
+    options->SetEdgeDetection(mode);
+    options->SetThreshold(0.05);
+    options->SetDebugOutput(vtkMLAAOptions::EDGES);
+    vtkNew<vtkMLAAOptions> off;
+    off->DeepCopy(options);
+    off->SetLocalContrastFactor(0.0);
+    auto cpu = RunMLAA(plain, options);
+    auto all = RunMLAA(plain, off);
+    for (int y = 0; y < 10; ++y)
+    {
+      for (int x = 9; x <= 17; ++x)
+      {
+        MLAA_CHECK(GetValue(cpu, x, y, 0) == 0.0 && GetValue(all, x, y, 0) == 255.0);
+      }
+    }
+    auto pass = UseMLAA(renderer, options);
+    auto gpu = vtkMLAAScenes::Capture(window, true);
+    StopPass(renderer, window);
+    const Difference d = Compare(cpu, gpu, 0.0);
+    if (!MLAA_CHECK(d.Count == 0))
+    {
+      std::cerr << label << ": " << d.Count << " pixels of edges differ from the filter's\n";
+    }
+    options->SetDebugOutput(vtkMLAAOptions::BLENDING_WEIGHTS);
+    CheckPassWeights(renderer, window, options, RunMLAA(plain, options), label);
+  }
+}
 }
 
 int TestMLAAPassLongLines(int, char*[])
 {
   UnknownHeightEnds();
   TJunctions();
+  Ramps();
   OneDegreeSlope();
   DiagonalStaircases();
   SameWeightsOnSharedScenes();
