@@ -28,8 +28,17 @@ struct ContrastRow
 {
   Acc* Left;
   Acc* Top;
-  bool* RampLeft; // the boundary lies inside a ramp (EdgeDetector::InsideRamp)
-  bool* RampTop;
+};
+
+// The features of four rows around a row r of the extent: r - 1, r, r + 1 and r + 2, each null
+// where outside the extent.
+template <typename Acc>
+struct FeatureRows
+{
+  const Acc* Below;
+  const Acc* Row;
+  const Acc* Above;
+  const Acc* Above2;
 };
 
 // The contrasts of rows and the edgels that local contrast adaptation keeps.
@@ -152,30 +161,16 @@ public:
     return (!a0 || Acc(2) * before >= dd) && (!b1 || Acc(2) * after >= dd);
   }
 
-  // Which edges of row f (contrasts in b) lie inside ramps, from the row itself (left edges) and
-  // the rows below it (e), above it (g) and two above (g2) (top edges), each null where outside
-  // the extent.
-  void Ramps(const Acc* e, const Acc* f, const Acc* g, const Acc* g2, ContrastRow<Acc> b,
-    int w) const
-  {
-    const size_t stride = static_cast<size_t>(w);
-    for (int x = 0; x < w; ++x)
-    {
-      b.RampLeft[x] = b.Left[x] > Acc(0) &&
-        this->InsideRamp(x >= 2 ? f : nullptr, f, f, x + 1 < w ? f : nullptr, stride, x - 2, x - 1,
-          x, x + 1);
-      b.RampTop[x] = b.Top[x] > Acc(0) && this->InsideRamp(e, f, g, g2, stride, x, x, x, x);
-    }
-  }
-
   // The edgels of one row that local contrast adaptation (vtkMLAAOptions::LocalContrastFactor)
   // keeps, from the contrasts of the row (b) and of the rows below and above it: an edge whose
   // contrast, times the factor, is below the contrast of one of the six other boundaries of the
-  // two pixels it separates is dropped, and so is an edge inside a ramp (Ramps).
+  // two pixels it separates is dropped, and so is an edge inside a ramp (InsideRamp, from the
+  // features f around the row).
   void KeepEdgels(ContrastRow<Acc> below, ContrastRow<Acc> b, ContrastRow<Acc> above,
-    unsigned char* edges, int w) const
+    const FeatureRows<Acc>& f, unsigned char* edges, int w) const
   {
     const Acc factor = this->Factor;
+    const size_t stride = static_cast<size_t>(w);
     // Most boundaries are not edges: clear the row, and skip runs of pixels whose contrasts are
     // all +0 (contrasts are never negative or NaN), 16 bytes of each at a time.
     std::fill(edges, edges + 2 * static_cast<size_t>(w), 0);
@@ -200,18 +195,21 @@ public:
         continue;
       }
       unsigned char* edge = edges + 2 * x;
+      // The ramp test last: most edges that reach it are kept.
       edge[0] = (left > Acc(0) &&
                    (factor == Acc(0) ||
-                     (!b.RampLeft[x] &&
-                       factor * left >= std::max({ b.Left[x - 1], b.Left[x + 1], b.Top[x - 1],
-                                          top, below.Top[x - 1], below.Top[x] }))))
+                     (factor * left >= std::max({ b.Left[x - 1], b.Left[x + 1], b.Top[x - 1],
+                                         top, below.Top[x - 1], below.Top[x] }) &&
+                       !this->InsideRamp(x >= 2 ? f.Row : nullptr, f.Row, f.Row,
+                         x + 1 < w ? f.Row : nullptr, stride, x - 2, x - 1, x, x + 1))))
         ? 255
         : 0;
       edge[1] = (top > Acc(0) &&
                    (factor == Acc(0) ||
-                     (!b.RampTop[x] &&
-                       factor * top >= std::max({ below.Top[x], above.Top[x], left,
-                                         b.Left[x + 1], above.Left[x], above.Left[x + 1] }))))
+                     (factor * top >= std::max({ below.Top[x], above.Top[x], left,
+                                        b.Left[x + 1], above.Left[x], above.Left[x + 1] }) &&
+                       !this->InsideRamp(
+                         f.Below, f.Row, f.Above, f.Above2, stride, x, x, x, x))))
         ? 255
         : 0;
     }
@@ -242,7 +240,6 @@ void DetectEdges(const std::function<void(int, Acc*)>& readRow, int features,
   const int w = r.Width();
   const int h = r.Height();
   const EdgeDetector<Acc> detector(features, settings);
-  const bool adapts = settings.LocalContrastFactor > 0.0;
   vtkSMPTools::For(0, h, RowsPerTask, [&](vtkIdType begin, vtkIdType end) {
     if (progress.Aborted())
     {
@@ -252,14 +249,10 @@ void DetectEdges(const std::function<void(int, Acc*)>& readRow, int features,
     const int rows = static_cast<int>(end - begin) + 2;
     const size_t stride = static_cast<size_t>(w) + 2;
     std::unique_ptr<Acc[]> band(new Acc[2 * stride * rows]);
-    std::unique_ptr<bool[]> ramps(new bool[2 * stride * rows]());
     auto contrastRow = [&](int i) {
-      const size_t o = 2 * stride * (i + 1 - begin);
-      Acc* left = band.get() + o;
-      bool* ramp = ramps.get() + o;
-      return ContrastRow<Acc>{ left + 1, left + stride + 1, ramp + 1, ramp + stride + 1 };
+      Acc* left = band.get() + 2 * stride * (i + 1 - begin);
+      return ContrastRow<Acc>{ left + 1, left + stride + 1 };
     };
-    const size_t rowSize = static_cast<size_t>(w) * features;
     const int first = std::max(0, static_cast<int>(begin) - 1);
     const int last = std::min(h - 1, static_cast<int>(end));
     for (int i = static_cast<int>(begin) - 1; i <= static_cast<int>(end); ++i)
@@ -272,34 +265,38 @@ void DetectEdges(const std::function<void(int, Acc*)>& readRow, int features,
         std::fill(b.Top - 1, b.Top + w + 1, Acc(0));
       }
     }
-    // The features of rows first - 1 .. last + 2 inside the extent (ramps read two rows past
-    // the contrasts).
-    const int firstRead = std::max(0, first - 1);
-    const int lastRead = std::min(h - 1, last + 2);
-    std::vector<Acc> rowFeatures(rowSize * (lastRead - firstRead + 1));
-    for (int i = firstRead; i <= lastRead; ++i)
-    {
-      readRow(r.Y0 + i, rowFeatures.data() + rowSize * (i - firstRead));
-    }
+    // The features of four consecutive rows, row i in slot i % 4: the contrasts of row i read
+    // rows i and i + 1, the edgels of row i - 1 then keep read rows i - 2 to i + 1.
+    const size_t rowSize = static_cast<size_t>(w) * features;
+    std::vector<Acc> ring(4 * rowSize);
+    int loaded = first - 1; // the last row read
     auto featuresOf = [&](int i) -> const Acc* {
-      return i < firstRead || i > lastRead ? nullptr
-                                           : rowFeatures.data() + rowSize * (i - firstRead);
-    };
-    for (int i = first; i <= last; ++i)
-    {
-      // The top row of the extent has no top edge (no row above: null).
-      const ContrastRow<Acc> b = contrastRow(i);
-      detector.Contrasts(featuresOf(i), featuresOf(i + 1), b, w);
-      if (adapts && i >= begin && i < end)
+      if (i < 0 || i >= h)
       {
-        detector.Ramps(featuresOf(i - 1), featuresOf(i), featuresOf(i + 1), featuresOf(i + 2), b, w);
+        return nullptr; // outside the extent
       }
-    }
-    for (vtkIdType i = begin; i < end; ++i)
+      for (; loaded < i; ++loaded)
+      {
+        readRow(r.Y0 + loaded + 1, ring.data() + rowSize * ((loaded + 1) % 4));
+      }
+      return ring.data() + rowSize * (i % 4);
+    };
+    for (int i = first; i <= last + 1; ++i)
     {
-      const int row = static_cast<int>(i);
-      detector.KeepEdgels(contrastRow(row - 1), contrastRow(row), contrastRow(row + 1),
-        edges.At(r.X0, r.Y0 + row), w);
+      if (i <= last)
+      {
+        // The top row of the extent has no top edge (no row above: null).
+        const Acc* row = featuresOf(i);
+        detector.Contrasts(row, featuresOf(i + 1), contrastRow(i), w);
+      }
+      const int kept = i - 1; // its contrasts and those of the rows beside it are known
+      if (kept >= begin && kept < end)
+      {
+        const FeatureRows<Acc> around{ featuresOf(kept - 1), featuresOf(kept), featuresOf(kept + 1),
+          featuresOf(kept + 2) };
+        detector.KeepEdgels(contrastRow(kept - 1), contrastRow(kept), contrastRow(kept + 1),
+          around, edges.At(r.X0, r.Y0 + kept), w);
+      }
     }
     progress.RowsDone(end - begin);
   });
