@@ -22,6 +22,7 @@
 #include "vtkSmartPointer.h"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <cmath>
 #include <functional>
@@ -192,6 +193,34 @@ inline vtkSmartPointer<vtkImageData> RunDLAA(vtkImageData* input, vtkDLAAOptions
 inline vtkSmartPointer<vtkImageData> RunMLAA(vtkImageData* input, vtkMLAAOptions* options = nullptr)
 {
   return RunFilter<vtkImageMLAA>(input, options);
+}
+
+// The ramp of the tests of edges inside ramps (issue 20): columns RampFirst to RampLast rising
+// in grey from 30 to 230, 20 levels a column, column x up to row RampTop(x) (a staircase top),
+// on black.
+constexpr int RampFirst = 8;
+constexpr int RampLast = 18;
+inline double RampGrey(int x)
+{
+  return 30.0 + 20.0 * (x - RampFirst);
+}
+inline int RampTop(int x)
+{
+  return 9 + (x - RampFirst) / 3;
+}
+
+// vtkImageMLAA's edges (the EDGES debug output) of `input` with `options`, with its local
+// contrast adaptation ([0]) and without ([1]).
+inline std::array<vtkSmartPointer<vtkImageData>, 2> EdgesWithAndWithoutAdaptation(
+  vtkImageData* input, vtkMLAAOptions* options)
+{
+  vtkNew<vtkMLAAOptions> edges;
+  edges->DeepCopy(options);
+  edges->SetDebugOutput(vtkMLAAOptions::EDGES);
+  vtkNew<vtkMLAAOptions> off;
+  off->DeepCopy(edges);
+  off->SetLocalContrastFactor(0.0);
+  return { RunMLAA(input, edges), RunMLAA(input, off) };
 }
 
 // A named option set of one method. The tests of the behaviour every method shares run each of

@@ -222,19 +222,15 @@ void LocalContrast()
 // orthogonal), grey rising is one.
 void Ramps()
 {
-  // The shape: columns 8 to 18, each up to row 10 + (x - 8) / 3 (a staircase top).
-  auto inRamp = [](int x, int y) { return x >= 8 && x <= 18 && y < 10 + (x - 8) / 3; };
+  // The shape: the utilities' ramp (columns 8 to 18 under a staircase top, greys 30 to 230).
   auto input = MakeImage(32, 16, 3);
-  FillImage(input, [&](int x, int y, int, int) { return inRamp(x, y) ? 30.0 + 20.0 * (x - 8) : 0.0; });
+  FillImage(input, [](int x, int y, int, int) {
+    return x >= RampFirst && x <= RampLast && y <= RampTop(x) ? RampGrey(x) : 0.0;
+  });
   vtkNew<vtkMLAAOptions> options;
   options->SetEdgeDetectionToLuma();
   options->SetThreshold(0.05); // a column's 20 levels are 0.078
-  options->SetDebugOutputToEdges();
-  vtkNew<vtkMLAAOptions> off;
-  off->DeepCopy(options);
-  off->SetLocalContrastFactor(0.0);
-  auto edges = RunMLAA(input, options);
-  auto all = RunMLAA(input, off);
+  const auto edges = EdgesWithAndWithoutAdaptation(input, options);
   for (int y = 0; y < 10; ++y)
   {
     for (int x = 0; x < 32; ++x)
@@ -243,11 +239,13 @@ void Ramps()
       // between black and 30 (the rise before it is 0) and the one from 230 down to black (the
       // strongest around) stay; the others lie inside the ramp (the last, from 210 to 230, is
       // also dropped for its contrast next to the drop to black).
-      const bool boundary = x >= 8 && x <= 19;
-      MLAA_CHECK(GetValue(edges, x, y, 0) == (x == 8 || x == 19 ? 255.0 : 0.0));
-      MLAA_CHECK(GetValue(all, x, y, 0) == (boundary ? 255.0 : 0.0));
+      const bool boundary = x >= RampFirst && x <= RampLast + 1;
+      const bool end = x == RampFirst || x == RampLast + 1;
+      MLAA_CHECK(GetValue(edges[0], x, y, 0) == (end ? 255.0 : 0.0));
+      MLAA_CHECK(GetValue(edges[1], x, y, 0) == (boundary ? 255.0 : 0.0));
     }
   }
+
   // Colour edges: along rows 0 to 3, black, red, red + green, red + green + blue (0.4 each):
   // each change is orthogonal to the one before, so every boundary is an edge. Along rows 4 to
   // 7, greys rising by 60 levels (0.235) a column: a ramp, which keeps its two ends only.

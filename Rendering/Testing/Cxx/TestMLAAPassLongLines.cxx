@@ -477,21 +477,21 @@ void TJunctions()
 
 void Ramps()
 {
-  // Columns 8 to 18 rising in grey from 30 to 230, 20 levels a column, each up to row
-  // 10 + (x - 8) / 3, on black. With local contrast adaptation the boundaries inside the ramp
-  // (columns 9 to 18's left edgels) are no edges (issue 20); without it they are. With Lab, luma
-  // and colour edges, the pass's edges and blending weights equal the filter's exactly
-  // (TestMLAAStages and TestImageMLAAEdgeModes have the filter's cases).
+  // The utilities' ramp (columns 8 to 18 rising in grey from 30 to 230 under a staircase top, on
+  // black). With local contrast adaptation the boundaries inside the ramp (columns 9 to 17's left
+  // edgels) are no edges (issue 20); without it they are. With Lab, luma and colour edges, the
+  // pass's edges and blending weights equal the filter's exactly (TestMLAAStages and
+  // TestImageMLAAEdgeModes have the filter's cases).
   const int width = 40, height = 24;
   auto window = vtkMLAAScenes::NewOffscreenWindow(width, height);
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
   std::vector<std::array<int, 4>> columns;
   std::vector<unsigned char> greys;
-  for (int x = 8; x <= 18; ++x)
+  for (int x = RampFirst; x <= RampLast; ++x)
   {
-    columns.push_back({ x, x, -4, 9 + (x - 8) / 3 });
-    greys.push_back(static_cast<unsigned char>(30 + 20 * (x - 8)));
+    columns.push_back({ x, x, -4, RampTop(x) });
+    greys.push_back(static_cast<unsigned char>(RampGrey(x)));
   }
   BuildRectangles(renderer, columns, width, height, greys);
   renderer->SetBackground(0.0, 0.0, 0.0);
@@ -505,23 +505,19 @@ void Ramps()
     vtkNew<vtkMLAAOptions> options;
     options->SetEdgeDetection(mode);
     options->SetThreshold(0.05);
-    options->SetDebugOutput(vtkMLAAOptions::EDGES);
-    vtkNew<vtkMLAAOptions> off;
-    off->DeepCopy(options);
-    off->SetLocalContrastFactor(0.0);
-    auto cpu = RunMLAA(plain, options);
-    auto all = RunMLAA(plain, off);
+    const auto cpu = EdgesWithAndWithoutAdaptation(plain, options);
     for (int y = 0; y < 10; ++y)
     {
-      for (int x = 9; x <= 17; ++x)
+      for (int x = RampFirst + 1; x < RampLast; ++x)
       {
-        MLAA_CHECK(GetValue(cpu, x, y, 0) == 0.0 && GetValue(all, x, y, 0) == 255.0);
+        MLAA_CHECK(GetValue(cpu[0], x, y, 0) == 0.0 && GetValue(cpu[1], x, y, 0) == 255.0);
       }
     }
+    options->SetDebugOutput(vtkMLAAOptions::EDGES);
     auto pass = UseMLAA(renderer, options);
     auto gpu = vtkMLAAScenes::Capture(window, true);
     StopPass(renderer, window);
-    const Difference d = Compare(cpu, gpu, 0.0);
+    const Difference d = Compare(cpu[0], gpu, 0.0);
     if (!MLAA_CHECK(d.Count == 0))
     {
       std::cerr << label << ": " << d.Count << " pixels of edges differ from the filter's\n";
