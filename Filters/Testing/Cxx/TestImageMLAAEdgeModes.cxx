@@ -4,10 +4,10 @@
 // find; depth edges follow a depth image instead of the colours; alpha edges give a silhouette
 // over a transparent background a soft alpha border; the threshold decides how faint an edge may
 // be; zero threshold means any difference; local contrast adaptation drops faint edges next to
-// strong ones only, and edges inside ramps of shading. Lab edges (Biri et al. section 3.2) find red against blue of equal luma,
-// which luma edges miss; the conversion gives reference CIELAB values; the contrast is
-// Delta E / 100 (an edge appears just below a reference Delta E and not just above it, with and
-// without alpha).
+// strong ones only, and edges inside ramps of shading. Lab edges (Biri et al. section 3.2) find
+// red against blue of equal luma, which luma edges miss; the conversion gives reference CIELAB
+// values; the contrast is Delta E / 100 (an edge appears just below a reference Delta E and not
+// just above it, with and without alpha).
 #include "vtkAntialiasingTestUtilities.h"
 
 #include "vtkMLAALab.h"

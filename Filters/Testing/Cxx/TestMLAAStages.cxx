@@ -2,10 +2,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The stages of the CPU MLAA (vtkMLAAStages.h), each on its own: the halo derived from the
 // options, the features (normalisation, luma, planes, NaN), edge detection (threshold, image
-// border, local contrast adaptation, edges inside ramps), blending weights (an L shape against the area texture's
-// generator), neighbourhood blending (equation 4.1, dominant direction, straight and
-// premultiplied alpha), the whole slice on the smallest extents, and the buffers that every
-// filter of the process shares.
+// border, local contrast adaptation, edges inside ramps), blending weights (an L shape against
+// the area texture's generator), neighbourhood blending (equation 4.1, dominant direction,
+// straight and premultiplied alpha), the whole slice on the smallest extents, and the buffers
+// that every filter of the process shares.
 #include "vtkAntialiasingTestUtilities.h"
 
 #include "vtkMLAAAreaTexture.h"
