@@ -68,9 +68,29 @@ float kept(float d)
   return (d >= threshold && d > 0.0) ? d : 0.0;
 }
 
+// What edge detection compares of pixel p (colour a), as a vector computed once for all the
+// boundaries of the pixel: luma (red), the colour channels (rgb), its depth (red) or CIELAB
+// (rgb), and alpha where it counts (the CPU filter's features, FeatureReader).
+vec4 featuresAt(ivec2 p, vec4 a)
+{
+#if MLAA_EDGE_DETECTION == 1
+  vec4 v = vec4(a.rgb, 0.0);
+#elif MLAA_EDGE_DETECTION == 2
+  vec4 v = vec4(texelFetch(depthTexture, p, 0).r, 0.0, 0.0, 0.0);
+#elif MLAA_EDGE_DETECTION == 3
+  vec4 v = vec4(labFeatures(a.rgb), 0.0);
+#else
+  vec4 v = vec4(dot(a.rgb, lumaWeights), 0.0, 0.0, 0.0);
+#endif
+#ifdef MLAA_USE_ALPHA
+  v.a = a.a;
+#endif
+  return v;
+}
+
 // The contrast across the boundary between two pixels, given their colours a, b and features
-// fa, fb (featuresAt): the largest difference of what edge detection compares (luma, colour
-// channels or depth, and alpha when it counts) that is at least the threshold, else 0. Pixels
+// fa, fb (featuresAt): the largest difference of what edge detection compares that is at least
+// the threshold, else 0; CIELAB's three features count as one, their Euclidean distance. Pixels
 // with a non-finite colour (float buffers) take part in no edge, so they never spread.
 float contrastOf(vec4 a, vec4 fa, vec4 b, vec4 fb)
 {
@@ -78,33 +98,18 @@ float contrastOf(vec4 a, vec4 fa, vec4 b, vec4 fb)
   {
     return 0.0;
   }
+  vec4 d = abs(fa - fb);
 #ifdef MLAA_USE_ALPHA
-  float c = kept(abs(a.a - b.a));
+  float c = kept(d.a);
 #else
   float c = 0.0;
 #endif
 #if MLAA_EDGE_DETECTION == 1
-  vec3 d = abs(a.rgb - b.rgb);
   return max(c, max(kept(d.r), max(kept(d.g), kept(d.b))));
-#elif MLAA_EDGE_DETECTION == 2
-  return max(c, kept(abs(fa.r - fb.r)));
 #elif MLAA_EDGE_DETECTION == 3
-  return max(c, kept(distance(fa.rgb, fb.rgb)));
+  return max(c, kept(length(fa.rgb - fb.rgb)));
 #else
-  return max(c, kept(abs(dot(a.rgb, lumaWeights) - dot(b.rgb, lumaWeights))));
-#endif
-}
-
-// What pixel p (colour a) is compared by besides its colour: its depth (red) in depth mode, its
-// CIELAB features in Lab mode, computed once for all the boundaries of the pixel.
-vec4 featuresAt(ivec2 p, vec4 a)
-{
-#if MLAA_EDGE_DETECTION == 2
-  return texelFetch(depthTexture, p, 0);
-#elif MLAA_EDGE_DETECTION == 3
-  return vec4(labFeatures(a.rgb), 0.0);
-#else
-  return vec4(0.0);
+  return max(c, kept(d.r));
 #endif
 }
 
@@ -119,26 +124,6 @@ void pixelAt(ivec2 q, ivec2 size, out vec4 color, out vec4 features)
 }
 
 #ifdef MLAA_LOCAL_CONTRAST
-// What edge detection compares of a pixel (colour a, features fa), as a vector: luma, the
-// colour channels, the depth or CIELAB, and alpha where it counts (the CPU filter's features,
-// FeatureReader).
-vec4 comparedOf(vec4 a, vec4 fa)
-{
-#if MLAA_EDGE_DETECTION == 1
-  vec4 v = vec4(a.rgb, 0.0);
-#elif MLAA_EDGE_DETECTION == 2
-  vec4 v = vec4(fa.r, 0.0, 0.0, 0.0);
-#elif MLAA_EDGE_DETECTION == 3
-  vec4 v = vec4(fa.rgb, 0.0);
-#else
-  vec4 v = vec4(dot(a.rgb, lumaWeights), 0.0, 0.0, 0.0);
-#endif
-#ifdef MLAA_USE_ALPHA
-  v.a = a.a;
-#endif
-  return v;
-}
-
 // Whether an edge whose compared values change by d across it lies inside a ramp: the
 // boundaries before and after it along the same axis change them the same way, by at least half
 // as much (the projections of their changes on d are at least |d| / 2). Sampled shading, not a
@@ -226,9 +211,9 @@ void main()
   float bottom = p.y > 0 ? contrastOf(color, features, colorR, featuresR) : 0.0;
   float around = max(right, bottom);
   // For the ramp test: the compared values of this pixel and of its right and lower neighbours.
-  vec4 here = comparedOf(color, features);
-  vec4 rightOf = comparedOf(colorQ, featuresQ);
-  vec4 below = comparedOf(colorR, featuresR);
+  vec4 here = features;
+  vec4 rightOf = featuresQ;
+  vec4 below = featuresR;
   bool rightFinite = isFiniteColor(colorQ);
   bool belowFinite = isFiniteColor(colorR);
   // The pixel above l (left of t) is a neighbour of both l and t.
@@ -242,9 +227,9 @@ void main()
       max(between(l - dx, l, size, colorQ, featuresQ, colorL, featuresL),
         max(between(l, l + dy, size, colorL, featuresL, colorLT, featuresLT),
           between(l - dy, l, size, colorR, featuresR, colorL, featuresL))));
-    vec4 atL = comparedOf(colorL, featuresL);
+    vec4 atL = featuresL;
     keepLeft = localContrastFactor * left >= strongest &&
-      !insideRamp(atL - comparedOf(colorQ, featuresQ), here - atL, rightOf - here,
+      !insideRamp(atL - featuresQ, here - atL, rightOf - here,
         bvec2(p.x >= 2, p.x + 1 < size.x), bvec2(isFiniteColor(colorQ), rightFinite));
   }
   if (keepTop)
@@ -255,9 +240,9 @@ void main()
       max(between(t, t + dy, size, colorT, featuresT, colorQ, featuresQ),
         max(between(t - dx, t, size, colorLT, featuresLT, colorT, featuresT),
           between(t, t + dx, size, colorT, featuresT, colorR, featuresR))));
-    vec4 atT = comparedOf(colorT, featuresT);
+    vec4 atT = featuresT;
     keepTop = localContrastFactor * top >= strongest &&
-      !insideRamp(here - below, atT - here, comparedOf(colorQ, featuresQ) - atT,
+      !insideRamp(here - below, atT - here, featuresQ - atT,
         bvec2(p.y >= 1, p.y + 2 < size.y), bvec2(belowFinite, isFiniteColor(colorQ)));
   }
 #else
