@@ -71,15 +71,7 @@ inline void FromRelativeXYZPlanes(Acc* x, Acc* y, Acc* z, int n)
 }
 }
 
-// An AVX2 clone beside the baseline, chosen at load time, where GCC or Clang on x86-64 can make
-// one (not FMA: a fused multiply-add would round differently from the baseline).
-#if defined(__x86_64__) && defined(__GNUC__) && defined(__ELF__) &&                             \
-  (defined(__clang__) ? __clang_major__ >= 14 : __GNUC__ >= 6)
-#define VTKMLAA_TARGET_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define VTKMLAA_TARGET_CLONES
-#endif
-
+// An AVX2 clone beside the baseline (VTKMLAA_TARGET_CLONES, vtkAntialiasingKit.h).
 namespace Lab
 {
 VTKMLAA_TARGET_CLONES void FromRelativeXYZ(float* x, float* y, float* z, int n)

@@ -40,6 +40,20 @@
 #include <thread>
 #include <type_traits>
 
+/**
+ * VTKMLAA_TARGET_CLONES before a (non-template) function definition: an AVX2 clone of it beside
+ * the baseline, chosen at load time, where GCC or Clang on x86-64 can make one; nothing elsewhere.
+ * Not FMA: a fused multiply-add would round differently from the baseline, and the results must
+ * not depend on the processor. For the few loops where wider vectors pay (vtkAntialiasingKit.cxx,
+ * vtkMLAAEdgeDetection.cxx).
+ */
+#if defined(__x86_64__) && defined(__GNUC__) && defined(__ELF__) &&                             \
+  (defined(__clang__) ? __clang_major__ >= 14 : __GNUC__ >= 6)
+#define VTKMLAA_TARGET_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define VTKMLAA_TARGET_CLONES
+#endif
+
 namespace vtkAntialiasingKit
 {
 /** Rows per task of the stages' threaded loops. */
