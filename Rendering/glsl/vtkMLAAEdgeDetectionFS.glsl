@@ -210,8 +210,8 @@ void main()
   float right = p.x < size.x - 1 ? contrastOf(color, features, colorQ, featuresQ) : 0.0;
   float bottom = p.y > 0 ? contrastOf(color, features, colorR, featuresR) : 0.0;
   float around = max(right, bottom);
-  // For the ramp test: the compared values of this pixel and of its right and lower neighbours.
-  vec4 here = features;
+  // For the ramp test: the compared values of the right and lower neighbours, kept because
+  // featuresQ and featuresR are reused for other pixels below.
   vec4 rightOf = featuresQ;
   vec4 below = featuresR;
   bool rightFinite = isFiniteColor(colorQ);
@@ -227,9 +227,8 @@ void main()
       max(between(l - dx, l, size, colorQ, featuresQ, colorL, featuresL),
         max(between(l, l + dy, size, colorL, featuresL, colorLT, featuresLT),
           between(l - dy, l, size, colorR, featuresR, colorL, featuresL))));
-    vec4 atL = featuresL;
     keepLeft = localContrastFactor * left >= strongest &&
-      !insideRamp(atL - featuresQ, here - atL, rightOf - here,
+      !insideRamp(featuresL - featuresQ, features - featuresL, rightOf - features,
         bvec2(p.x >= 2, p.x + 1 < size.x), bvec2(isFiniteColor(colorQ), rightFinite));
   }
   if (keepTop)
@@ -240,9 +239,8 @@ void main()
       max(between(t, t + dy, size, colorT, featuresT, colorQ, featuresQ),
         max(between(t - dx, t, size, colorLT, featuresLT, colorT, featuresT),
           between(t, t + dx, size, colorT, featuresT, colorR, featuresR))));
-    vec4 atT = featuresT;
     keepTop = localContrastFactor * top >= strongest &&
-      !insideRamp(here - below, atT - here, featuresQ - atT,
+      !insideRamp(features - below, featuresT - features, featuresQ - featuresT,
         bvec2(p.y >= 1, p.y + 2 < size.y), bvec2(belowFinite, isFiniteColor(colorQ)));
   }
 #else
