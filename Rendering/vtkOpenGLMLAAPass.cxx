@@ -207,7 +207,7 @@ void vtkOpenGLMLAAPass::SetEdgeUniforms(vtkShaderProgram* program)
 
 //------------------------------------------------------------------------------
 bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
-  vtkOpenGLRenderWindow* renWin, int width, int height, bool useAlpha)
+  vtkOpenGLRenderWindow* renWin, int width, int height, bool useAlpha, bool markBlended)
 {
   vtkOpenGLState* ostate = renWin->GetState();
   vtkOpenGLFramebufferObject* fbo = this->WorkFramebuffer;
@@ -230,7 +230,9 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
       edgeTextures.Activate(this->DepthTexture);
     }
     // Pass 0: the change mask. Cleared edges and a mask at 0; pixels that differ from their left
-    // or upper neighbour write depth 1, the others keep 0.
+    // or upper neighbour write depth 1, the others keep 0 (with `markBlended`, those that differ
+    // from their right or lower neighbour only write 1/4: the blending may change them, and
+    // the edge detection finds nothing there).
     ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
     ostate->vtkglClearDepth(0.0);
     ostate->vtkglDepthMask(GL_TRUE);
@@ -241,7 +243,7 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
     // threshold and Lab's table matter to it.
     if (!this->ReadyQuad(renWin, this->ChangeMaskQuad, vtkMLAAEdgeDetectionFS,
           Define("MLAA_EDGE_DETECTION", this->Options->GetEdgeDetection()) +
-            Define("MLAA_CHANGE_MASK", true)))
+            Define("MLAA_CHANGE_MASK", true) + Define("MLAA_MARK_BLENDED", markBlended)))
     {
       return false;
     }
@@ -502,7 +504,7 @@ int vtkOpenGLMLAAPass::GetStaircaseCountReach()
 
 //------------------------------------------------------------------------------
 bool vtkOpenGLMLAAPass::Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int width,
-  int height, bool composite, bool straightAlpha, bool inPlace)
+  int height, bool composite, bool straightAlpha, bool inPlace, bool throughTexture)
 {
   vtkOpenGLState* ostate = renWin->GetState();
   // Premultiplied "over" onto what lower layers drew (a debug output replaces them); in place,
@@ -519,6 +521,10 @@ bool vtkOpenGLMLAAPass::Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int w
     return false;
   }
   vtkShaderProgram* program = this->BlendQuad.Quad->Program;
+  if (throughTexture)
+  {
+    return this->BlendThroughTexture(renWin, x, y, width, height);
+  }
   ScopedTextures textures(program,
     { { "colorTexture", this->GetSourceTexture() }, { "edgesTexture", this->EdgesTexture },
       { "weightsTexture", this->WeightsTexture } });
@@ -528,6 +534,70 @@ bool vtkOpenGLMLAAPass::Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int w
   }
   TimedStage stage(renWin, "neighbourhood blending");
   this->BlendQuad.Quad->Render();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLMLAAPass::BlendThroughTexture(
+  vtkOpenGLRenderWindow* renWin, int x, int y, int width, int height)
+{
+  // The blending shader discards the pixels without a weight, but rasterisers that shade pixels
+  // in lock-step (llvmpipe) still write, masked, every pixel of the target that the quad covers:
+  // most of the pass's time on llvmpipe. A depth test before the shader runs drops whole groups
+  // instead, and the mask that gives it is ours, not the target's: so the source image is copied
+  // into BlendedTexture, the blending drawn there on the pixels the change mask marked (any pixel
+  // next to an edge differs from the pixel across it), and the result copied into the target.
+  // Same image: the pixels left out are those without a weight, which the blending keeps.
+  vtkOpenGLState* ostate = renWin->GetState();
+  unsigned int targetBinding = 0, targetBuffer = 0;
+  ostate->GetCurrentDrawFramebufferState(targetBinding, targetBuffer);
+  vtkTextureObject* source = this->GetSourceTexture();
+  if (!this->BlendedTexture)
+  {
+    this->BlendedTexture = NewTexture(renWin);
+  }
+  AllocateColorTarget(this->BlendedTexture, width, height, 4, source->GetVTKDataType(), false);
+  TimedStage stage(renWin, "neighbourhood blending");
+  ostate->PushFramebufferBindings();
+  // Copies are clipped by the scissor test.
+  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
+  ostate->vtkglDisable(GL_SCISSOR_TEST);
+  vtkOpenGLFramebufferObject* fbo = this->WorkFramebuffer;
+  fbo->Bind();
+  fbo->AddColorAttachment(0, this->BlendedTexture);
+  fbo->AddColorAttachment(1, source);
+  fbo->ActivateReadBuffer(1);
+  fbo->ActivateDrawBuffer(0);
+  const int box[4] = { 0, width, 0, height };
+  vtkOpenGLFramebufferObject::Blit(box, box, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  fbo->RemoveColorAttachment(1); // (not attached while the blending reads it)
+  fbo->AddDepthAttachment(this->MaskTexture);
+  fbo->StartNonOrtho(width, height);
+  ostate->vtkglViewport(0, 0, width, height);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthMask(GL_FALSE);
+  ostate->vtkglDepthFunc(GL_LESS);
+  {
+    // The quad at depth 0 (not tracked by vtkOpenGLState, so restored at once): the test passes
+    // on every marked pixel (depth 1/4, 1/2 or 1), not on the unmarked ones (0).
+    glDepthRange(0.0, 0.0);
+    vtkShaderProgram* program = this->BlendQuad.Quad->Program;
+    const ScopedTextures textures(program,
+      { { "colorTexture", source }, { "edgesTexture", this->EdgesTexture },
+        { "weightsTexture", this->WeightsTexture } });
+    this->BlendQuad.Quad->Render();
+    glDepthRange(0.0, 1.0);
+  }
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  fbo->RemoveDepthAttachment();
+  fbo->ActivateReadBuffer(0);
+  ostate->vtkglBindFramebuffer(GL_DRAW_FRAMEBUFFER, targetBinding);
+  ostate->vtkglDrawBuffer(targetBuffer);
+  const int target[4] = { x, x + width, y, y + height };
+  vtkOpenGLFramebufferObject::Blit(box, target, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  ostate->PopFramebufferBindings();
   return true;
 }
 
@@ -654,21 +724,31 @@ bool vtkOpenGLMLAAPass::Antialias(const Frame& frame)
   const int x = frame.X, y = frame.Y, width = frame.Width, height = frame.Height;
   const bool composite = frame.Composite, useAlpha = frame.UseAlpha,
              straightAlpha = frame.StraightAlpha, inPlace = frame.InPlace;
+  // In place, the blending is drawn into a texture on the pixels the change mask marked, and the
+  // image copied into the target (BlendThroughTexture), unless a debug image is shown or the
+  // target is multisampled (a copy cannot be written into it).
+  GLint targetSamples = 0;
+  glGetIntegerv(GL_SAMPLE_BUFFERS, &targetSamples);
+  const bool throughTexture = inPlace && targetSamples == 0 &&
+    this->Options->GetDebugOutput() == vtkMLAAOptions::NO_DEBUG_OUTPUT;
   {
     // Topological reconstruction (Biri et al., section 4.3): before edge detection, into
     // ReconstructedTexture, which the later passes read instead of ColorTexture.
     const bool reconstruction = this->Options->GetReconstruction();
     ostate->PushFramebufferBindings();
     bool computed = !reconstruction || this->Reconstruct(renWin, width, height, useAlpha);
-    computed = computed && this->ComputeEdgesAndWeights(renWin, width, height, useAlpha);
+    computed = computed &&
+      this->ComputeEdgesAndWeights(renWin, width, height, useAlpha, throughTexture);
     ostate->PopFramebufferBindings();
-    if (computed && reconstruction && inPlace &&
+    // (Through the texture, the copy takes the reconstructed pixels into the target.)
+    if (computed && reconstruction && inPlace && !throughTexture &&
       this->Options->GetDebugOutput() == vtkMLAAOptions::NO_DEBUG_OUTPUT)
     {
       computed = this->WriteBackReconstruction(renWin, x, y, width, height, useAlpha);
     }
     return computed &&
-      this->Blend(renWin, x, y, width, height, composite, straightAlpha, inPlace);
+      this->Blend(
+        renWin, x, y, width, height, composite, straightAlpha, inPlace, throughTexture);
   }
 }
 
@@ -686,7 +766,7 @@ void vtkOpenGLMLAAPass::ReleaseMethodResources(vtkWindow* w)
          &this->MaskTexture, &this->AreaTexture,
          &this->DiagonalAreaTexture, &this->LengthsTextures[0], &this->LengthsTextures[1],
          &this->StaircaseCountsTexture,
-         &this->ReconstructedTexture, &this->SampleAreaTexture })
+         &this->ReconstructedTexture, &this->SampleAreaTexture, &this->BlendedTexture })
   {
     DeleteObject(*texture, w);
   }
@@ -713,7 +793,8 @@ vtkIdType vtkOpenGLMLAAPass::GetMethodTargetMemorySize()
   const int colorBytes = (this->ColorTexture && this->ColorTexture->GetVTKDataType() == VTK_FLOAT)
     ? 16
     : 4;
-  return TextureBytes(this->ReconstructedTexture, colorBytes) + this->GetMLAATargetMemorySize() +
+  return TextureBytes(this->ReconstructedTexture, colorBytes) +
+    TextureBytes(this->BlendedTexture, colorBytes) + this->GetMLAATargetMemorySize() +
     TextureBytes(this->MaskTexture, 2) +
     TextureBytes(this->AreaTexture, 8) + TextureBytes(this->DiagonalAreaTexture, 12) +
     TextureBytes(this->LengthsTextures[0], 8) + TextureBytes(this->LengthsTextures[1], 8) +

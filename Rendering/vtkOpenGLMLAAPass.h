@@ -263,7 +263,10 @@ private:
   void operator=(const vtkOpenGLMLAAPass&) = delete;
 
   // Passes 1 and 2 into EdgesTexture and WeightsTexture.
-  bool ComputeEdgesAndWeights(vtkOpenGLRenderWindow* renWin, int width, int height, bool useAlpha);
+  // With `markBlended`, the change mask also marks the pixels the blending may change that the
+  // edge detection does not need (BlendThroughTexture).
+  bool ComputeEdgesAndWeights(
+    vtkOpenGLRenderWindow* renWin, int width, int height, bool useAlpha, bool markBlended);
   // The line lengths by recursive doubling into one of LengthsTextures (`lengths`) and, with
   // diagonal detection, in the initialisation pass the counts of the units that follow each
   // staircase unit, up to GetStaircaseCountReach() each way, into StaircaseCountsTexture (from
@@ -279,9 +282,13 @@ private:
   // Pass 3 (or a debug output) into the target viewport, composited over it with premultiplied
   // alpha when `composite`.
   // With `straightAlpha`, colours are premultiplied before blending and divided by alpha after.
-  // `inPlace`: the target holds the delegate's image; only blended pixels are written.
+  // `inPlace`: the target holds the delegate's image; only blended pixels are written, with
+  // `throughTexture` by BlendThroughTexture.
   bool Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int width, int height, bool composite,
-    bool straightAlpha, bool inPlace);
+    bool straightAlpha, bool inPlace, bool throughTexture);
+  // In place: the source image and its blended pixels into BlendedTexture, then into the target
+  // viewport (the blending run on the pixels the change mask marked only).
+  bool BlendThroughTexture(vtkOpenGLRenderWindow* renWin, int x, int y, int width, int height);
   // The images the edge detection programs read (all the change mask reads).
   void SetEdgeTextures(vtkShaderProgram* program);
   // The uniforms of the detection and local contrast programs: the images and the options.
@@ -309,6 +316,7 @@ private:
   vtkTextureObject* LengthsTextures[2] = { nullptr, nullptr }; // RGBA16F, ping-pong
   vtkTextureObject* StaircaseCountsTexture = nullptr; // RG8, with doubling and diagonals
   vtkTextureObject* ReconstructedTexture = nullptr; // with vtkMLAAOptions::Reconstruction only
+  vtkTextureObject* BlendedTexture = nullptr; // in place: BlendThroughTexture's image
   int AreaTextureMaxDistance = 0;
   // With MultiSamples and SampleAreas: the area tables of each sample's offsets, stacked
   // (sample s: rows 2 s T to (2 s + 1) T - 1 for horizontal lines, the next T for vertical

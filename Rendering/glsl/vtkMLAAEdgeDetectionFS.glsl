@@ -15,6 +15,8 @@
 //                         alpha: vtkOpenGLMLAAPass::KeepAlpha, or a composited layer)
 //   MLAA_LOCAL_CONTRAST   defined: the local contrast adaptation pass (below)
 //   MLAA_CHANGE_MASK      defined: the change mask pass (below)
+//   MLAA_MARK_BLENDED     defined (with MLAA_CHANGE_MASK): also mark, with depth 1/4, the pixels
+//                         that differ from their right or lower neighbour only (below)
 //
 // Detection (the default build): writes, for the pixel under this fragment, whether its left
 // boundary (red) and its top boundary (green) are edges. "Top" is the next row up (GL's y + 1,
@@ -32,7 +34,11 @@
 // of a picture is such pixels (backgrounds, flat colour), and the detection's conversions (Lab:
 // three per pixel) are its cost. Rasterisers that shade pixels in lock-step skip a group only
 // when none of its pixels passes the test, which an early depth test decides before shading
-// and a discard in the shader does not (measured: docs/measurements.md, issue 20).
+// and a discard in the shader does not (measured: docs/measurements.md, issue 20). With
+// MLAA_MARK_BLENDED, the pixels that differ from their right or lower neighbour only are marked
+// too, with depth 1/4, which the detection's test (1/2 LESS) leaves out: the blending, drawn with
+// the quad at depth 0 tested LESS, then runs on every pixel next to an edge (a pixel across an
+// edge differs from the pixel on the other side) and on no unmarked one.
 //
 // Local contrast adaptation (built with MLAA_LOCAL_CONTRAST defined, run when
 // vtkMLAAOptions::LocalContrastFactor > 0 on the edge pixels only): rewrites the edges of each
@@ -180,7 +186,19 @@ void main()
   vec4 here = texelFetch(colorTexture, p, 0);
   if (sameAs(p, here, p - ivec2(1, 0), size) && sameAs(p, here, p + ivec2(0, 1), size))
   {
+#ifdef MLAA_MARK_BLENDED
+    // No edge of its own, but the pixel across an edge of its right or lower neighbour: the
+    // blending may change it (a lower mark, which the edge detection's test leaves out).
+    if (sameAs(p, here, p + ivec2(1, 0), size) && sameAs(p, here, p - ivec2(0, 1), size))
+    {
+      discard;
+    }
+    gl_FragDepth = 0.25;
+    gl_FragData[0] = vec4(0.0);
+    return;
+#else
     discard;
+#endif
   }
   gl_FragDepth = 1.0;
   gl_FragData[0] = vec4(0.0); // not written (colour writes are off)

@@ -53,11 +53,12 @@ int TestMLAAPassToneMapping(int, char*[])
   outer->SetDelegatePass(before);
   renderer->SetPass(outer);
   auto mlaaBefore = vtkMLAAScenes::Capture(scene.Window);
-  // The pass copied its target's 32-bit float colour (16 bytes per pixel) and holds edges,
-  // weights, mask and the two area textures (it renders in place: no depth copy).
+  // The pass copied its target's 32-bit float colour (16 bytes per pixel), blends into a
+  // second such image, and holds edges, weights, mask and the two area textures (it renders in
+  // place: no depth copy).
   const vtkIdType pixels = 400 * 300;
   MLAA_CHECK(before->GetTargetMemorySize() ==
-    pixels * (16 + 2 + 4 + 2) + 85 * 85 * 8 + 51 * 51 * 12);
+    pixels * (16 + 16 + 2 + 4 + 2) + 85 * 85 * 8 + 51 * 51 * 12);
   int dims[3];
   toneMapped->GetDimensions(dims);
   int changed = 0, flatChanged = 0;
