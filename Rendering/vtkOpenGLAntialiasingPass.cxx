@@ -1327,6 +1327,7 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
       const int box[4] = { 0, width, 0, height };
       vtkOpenGLFramebufferObject::Blit(box, box, GL_COLOR_BUFFER_BIT, GL_NEAREST);
       local.InPlace = true;
+      local.OwnTarget = h.Framebuffer;
     }
     done = this->Antialias(local);
   }

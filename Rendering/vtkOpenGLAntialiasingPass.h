@@ -290,6 +290,10 @@ protected:
     bool StraightAlpha = false; // the image holds straight alpha (see UsesStraightAlpha)
     bool InPlace = false;       // the target holds the delegate's image: write changed pixels
     bool FloatColor = false;    // ColorTexture is floating point
+    // In place, where the target is a framebuffer of the pass (temporal antialiasing's frame):
+    // it is bound, its colour attachment 0 is the target, and it may take a depth attachment
+    // for a while; null otherwise.
+    vtkOpenGLFramebufferObject* OwnTarget = nullptr;
   };
 
   // /@{

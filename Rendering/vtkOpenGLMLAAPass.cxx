@@ -504,7 +504,8 @@ int vtkOpenGLMLAAPass::GetStaircaseCountReach()
 
 //------------------------------------------------------------------------------
 bool vtkOpenGLMLAAPass::Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int width,
-  int height, bool composite, bool straightAlpha, bool inPlace, bool throughTexture)
+  int height, bool composite, bool straightAlpha, bool inPlace, bool throughTexture,
+  vtkOpenGLFramebufferObject* ownTarget)
 {
   vtkOpenGLState* ostate = renWin->GetState();
   // Premultiplied "over" onto what lower layers drew (a debug output replaces them); in place,
@@ -523,7 +524,7 @@ bool vtkOpenGLMLAAPass::Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int w
   vtkShaderProgram* program = this->BlendQuad.Quad->Program;
   if (throughTexture)
   {
-    return this->BlendThroughTexture(renWin, x, y, width, height);
+    return this->BlendThroughTexture(renWin, x, y, width, height, ownTarget);
   }
   ScopedTextures textures(program,
     { { "colorTexture", this->GetSourceTexture() }, { "edgesTexture", this->EdgesTexture },
@@ -538,8 +539,8 @@ bool vtkOpenGLMLAAPass::Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int w
 }
 
 //------------------------------------------------------------------------------
-bool vtkOpenGLMLAAPass::BlendThroughTexture(
-  vtkOpenGLRenderWindow* renWin, int x, int y, int width, int height)
+bool vtkOpenGLMLAAPass::BlendThroughTexture(vtkOpenGLRenderWindow* renWin, int x, int y,
+  int width, int height, vtkOpenGLFramebufferObject* ownTarget)
 {
   // The blending shader discards the pixels without a weight, but rasterisers that shade pixels
   // in lock-step (llvmpipe) still write, masked, every pixel of the target that the quad covers:
@@ -547,33 +548,42 @@ bool vtkOpenGLMLAAPass::BlendThroughTexture(
   // instead, and the mask that gives it is ours, not the target's: so the source image is copied
   // into BlendedTexture, the blending drawn there on the pixels the change mask marked (any pixel
   // next to an edge differs from the pixel across it), and the result copied into the target.
-  // Same image: the pixels left out are those without a weight, which the blending keeps.
+  // Same image: the pixels left out are those without a weight, which the blending keeps. A
+  // target of the pass's own takes the mask as its depth for the draw instead: no copies.
   vtkOpenGLState* ostate = renWin->GetState();
   unsigned int targetBinding = 0, targetBuffer = 0;
   ostate->GetCurrentDrawFramebufferState(targetBinding, targetBuffer);
   vtkTextureObject* source = this->GetSourceTexture();
-  if (!this->BlendedTexture)
-  {
-    this->BlendedTexture = NewTexture(renWin);
-  }
-  AllocateColorTarget(this->BlendedTexture, width, height, 4, source->GetVTKDataType(), false);
   TimedStage stage(renWin, "neighbourhood blending");
   ostate->PushFramebufferBindings();
   // Copies are clipped by the scissor test.
   vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
   ostate->vtkglDisable(GL_SCISSOR_TEST);
-  vtkOpenGLFramebufferObject* fbo = this->WorkFramebuffer;
-  fbo->Bind();
-  fbo->AddColorAttachment(0, this->BlendedTexture);
-  fbo->AddColorAttachment(1, source);
-  fbo->ActivateReadBuffer(1);
-  fbo->ActivateDrawBuffer(0);
+  vtkOpenGLFramebufferObject* fbo = ownTarget;
   const int box[4] = { 0, width, 0, height };
-  vtkOpenGLFramebufferObject::Blit(box, box, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-  fbo->RemoveColorAttachment(1); // (not attached while the blending reads it)
+  if (!fbo)
+  {
+    if (!this->BlendedTexture)
+    {
+      this->BlendedTexture = NewTexture(renWin);
+    }
+    AllocateColorTarget(this->BlendedTexture, width, height, 4, source->GetVTKDataType(), false);
+    fbo = this->WorkFramebuffer;
+    fbo->Bind();
+    fbo->AddColorAttachment(0, this->BlendedTexture);
+    fbo->AddColorAttachment(1, source);
+    fbo->ActivateReadBuffer(1);
+    fbo->ActivateDrawBuffer(0);
+    vtkOpenGLFramebufferObject::Blit(box, box, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    fbo->RemoveColorAttachment(1); // (not attached while the blending reads it)
+    ostate->vtkglViewport(0, 0, width, height);
+  }
+  else
+  {
+    fbo->Bind();
+    ostate->vtkglViewport(x, y, width, height);
+  }
   fbo->AddDepthAttachment(this->MaskTexture);
-  fbo->StartNonOrtho(width, height);
-  ostate->vtkglViewport(0, 0, width, height);
   ostate->vtkglDisable(GL_BLEND);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   ostate->vtkglEnable(GL_DEPTH_TEST);
@@ -592,11 +602,14 @@ bool vtkOpenGLMLAAPass::BlendThroughTexture(
   }
   ostate->vtkglDisable(GL_DEPTH_TEST);
   fbo->RemoveDepthAttachment();
-  fbo->ActivateReadBuffer(0);
-  ostate->vtkglBindFramebuffer(GL_DRAW_FRAMEBUFFER, targetBinding);
-  ostate->vtkglDrawBuffer(targetBuffer);
-  const int target[4] = { x, x + width, y, y + height };
-  vtkOpenGLFramebufferObject::Blit(box, target, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  if (!ownTarget)
+  {
+    fbo->ActivateReadBuffer(0);
+    ostate->vtkglBindFramebuffer(GL_DRAW_FRAMEBUFFER, targetBinding);
+    ostate->vtkglDrawBuffer(targetBuffer);
+    const int target[4] = { x, x + width, y, y + height };
+    vtkOpenGLFramebufferObject::Blit(box, target, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }
   ostate->PopFramebufferBindings();
   return true;
 }
@@ -747,8 +760,8 @@ bool vtkOpenGLMLAAPass::Antialias(const Frame& frame)
       computed = this->WriteBackReconstruction(renWin, x, y, width, height, useAlpha);
     }
     return computed &&
-      this->Blend(
-        renWin, x, y, width, height, composite, straightAlpha, inPlace, throughTexture);
+      this->Blend(renWin, x, y, width, height, composite, straightAlpha, inPlace, throughTexture,
+        frame.OwnTarget);
   }
 }
 

@@ -285,10 +285,12 @@ private:
   // `inPlace`: the target holds the delegate's image; only blended pixels are written, with
   // `throughTexture` by BlendThroughTexture.
   bool Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int width, int height, bool composite,
-    bool straightAlpha, bool inPlace, bool throughTexture);
+    bool straightAlpha, bool inPlace, bool throughTexture, vtkOpenGLFramebufferObject* ownTarget);
   // In place: the source image and its blended pixels into BlendedTexture, then into the target
-  // viewport (the blending run on the pixels the change mask marked only).
-  bool BlendThroughTexture(vtkOpenGLRenderWindow* renWin, int x, int y, int width, int height);
+  // viewport (the blending run on the pixels the change mask marked only); a target of the
+  // pass's own (Frame::OwnTarget) is blended into directly, with the mask as its depth.
+  bool BlendThroughTexture(vtkOpenGLRenderWindow* renWin, int x, int y, int width, int height,
+    vtkOpenGLFramebufferObject* ownTarget);
   // The images the edge detection programs read (all the change mask reads).
   void SetEdgeTextures(vtkShaderProgram* program);
   // The uniforms of the detection and local contrast programs: the images and the options.
