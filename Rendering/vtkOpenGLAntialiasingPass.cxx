@@ -185,6 +185,19 @@ public:
 
 namespace
 {
+// Draw into the first `count` (1 or 2) colour attachments of the bound framebuffer. VTK 9.1's
+// state cache (vtkOpenGLState::vtkglDrawBuffers) compares the first draw buffer only, so a switch
+// between attachments {0, 1} and {0} alone through vtkOpenGLFramebufferObject::ActivateDrawBuffer
+// is dropped: the temporal mask pass, which writes one output, then left undefined values in the
+// counts (attachment 1), and the still after a motion read them (black 64 x 64 tiles on llvmpipe).
+// The buffers are set here directly; the first one, which the cache keeps, is the same.
+void DrawToAttachments(vtkOpenGLFramebufferObject* fbo, unsigned int count)
+{
+  fbo->ActivateDrawBuffers(count);
+  const GLenum buffers[2] = { GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1 };
+  glDrawBuffers(static_cast<GLsizei>(count), buffers);
+}
+
 // The sub-pixel offset, in [-1/2, 1/2) pixel, of the `index`-th render of a still accumulation
 // (index 0: its first, unjittered render) whose first `frames` renders are to sample the pixel's
 // box as evenly as possible. The points are the two-dimensional Sobol sequence (van der Corput in
@@ -1290,7 +1303,7 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
     h.Framebuffer->Bind();
     h.Framebuffer->AddColorAttachment(0, texture);
     h.Framebuffer->RemoveColorAttachment(1);
-    h.Framebuffer->ActivateDrawBuffer(0);
+    DrawToAttachments(h.Framebuffer, 1);
     h.Framebuffer->StartNonOrtho(width, height);
     ostate->vtkglViewport(0, 0, width, height);
     ostate->vtkglScissor(0, 0, width, height);
@@ -1339,7 +1352,7 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
   {
     bindTarget(h.Histories[next]);
     h.Framebuffer->AddColorAttachment(1, h.Counts[next]); // each pixel's count of frames
-    h.Framebuffer->ActivateDrawBuffers(2);
+    DrawToAttachments(h.Framebuffer, 2);
     ostate->vtkglDisable(GL_BLEND);
     ostate->vtkglDisable(GL_DEPTH_TEST);
     ostate->vtkglDepthMask(GL_FALSE);
@@ -1464,7 +1477,7 @@ bool vtkOpenGLAntialiasingPass::MarkBlendedPixels(
   // Colour into the history only (its counts were cleared to 1), and depth at every pixel: no
   // clear of the mask, no discard.
   h.Framebuffer->AddDepthAttachment(h.Mask);
-  h.Framebuffer->ActivateDrawBuffer(0);
+  DrawToAttachments(h.Framebuffer, 1);
   ostate->vtkglDepthMask(GL_TRUE);
   ostate->vtkglEnable(GL_DEPTH_TEST);
   ostate->vtkglDepthFunc(GL_ALWAYS);
@@ -1474,7 +1487,7 @@ bool vtkOpenGLAntialiasingPass::MarkBlendedPixels(
         { "depthTexture", this->DepthTexture } });
     h.MaskQuad.Quad->Render();
   }
-  h.Framebuffer->ActivateDrawBuffers(2);
+  DrawToAttachments(h.Framebuffer, 2);
   ostate->vtkglDepthMask(GL_FALSE);
   ostate->vtkglDepthFunc(GL_LESS);
   return true;
