@@ -574,6 +574,11 @@ bool vtkOpenGLMLAAPass::BlendThroughTexture(vtkOpenGLRenderWindow* renWin, int x
     fbo->AddColorAttachment(1, source);
     fbo->ActivateReadBuffer(1);
     fbo->ActivateDrawBuffer(0);
+    // Set directly as well: VTK 9.1's state cache drops a switch to fewer draw buffers whose
+    // first ones are unchanged (after the line lengths' two outputs), and a copy writes every
+    // draw buffer, here the source itself.
+    const GLenum first = GL_COLOR_ATTACHMENT0;
+    glDrawBuffers(1, &first);
     vtkOpenGLFramebufferObject::Blit(box, box, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     fbo->RemoveColorAttachment(1); // (not attached while the blending reads it)
     ostate->vtkglViewport(0, 0, width, height);
