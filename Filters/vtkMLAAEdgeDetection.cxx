@@ -21,9 +21,16 @@ void EdgesBuffer::Allocate(const Rect& extent)
 //------------------------------------------------------------------------------
 namespace
 {
+// A difference d kept as a contrast: d where it is at least the threshold and more than nothing
+// (so that a zero threshold means "any difference"), else 0. NaN differences are never kept.
+template <typename Acc>
+inline Acc KeptContrast(Acc d, Acc threshold)
+{
+  return (d >= threshold && d > Acc(0)) ? d : Acc(0);
+}
+
 // The Euclidean distances of n pixels' first three features (planes a0, a1, a2) from those of n
-// other pixels (b0, b1, b2), each kept where it is at least the threshold and more than nothing,
-// else 0 (EdgeDetector::Kept). The square roots are most of the cost of LAB edges; an AVX2 clone
+// other pixels (b0, b1, b2), each kept as a contrast (KeptContrast). The square roots are most of the cost of LAB edges; an AVX2 clone
 // (no fused multiply-add, so the same results) takes eight at a time where the processor has it.
 template <typename Acc>
 void KeptDistances(const Acc* a0, const Acc* a1, const Acc* a2, const Acc* b0, const Acc* b1,
@@ -35,7 +42,7 @@ void KeptDistances(const Acc* a0, const Acc* a1, const Acc* a2, const Acc* b0, c
     const Acc d1 = a1[x] - b1[x];
     const Acc d2 = a2[x] - b2[x];
     const Acc d = std::sqrt(d0 * d0 + d1 * d1 + d2 * d2);
-    out[x] = (d >= threshold && d > Acc(0)) ? d : Acc(0);
+    out[x] = KeptContrast(d, threshold);
   }
 }
 
@@ -83,11 +90,9 @@ public:
   {
   }
 
-  // The contrast across a boundary: the largest difference of a feature that is at least the
-  // threshold (and more than nothing, so that a zero threshold means "any difference"), else 0.
-  // NaN differences are never edges.
+  // The contrast across a boundary of one feature (KeptContrast of the difference).
   Acc Contrast(Acc a, Acc b) const { return this->Kept(std::abs(a - b)); }
-  Acc Kept(Acc d) const { return (d >= this->Threshold && d > Acc(0)) ? d : Acc(0); }
+  Acc Kept(Acc d) const { return KeptContrast(d, this->Threshold); }
 
   // The contrasts of one row of w pixels with features f, and the row above with features g
   // (null where there is no row above: no top edges); features in planes of w values. The

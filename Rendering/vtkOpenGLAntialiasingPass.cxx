@@ -185,19 +185,6 @@ public:
 
 namespace
 {
-// Draw into the first `count` (1 or 2) colour attachments of the bound framebuffer. VTK 9.1's
-// state cache (vtkOpenGLState::vtkglDrawBuffers) compares the first draw buffer only, so a switch
-// between attachments {0, 1} and {0} alone through vtkOpenGLFramebufferObject::ActivateDrawBuffer
-// is dropped: the temporal mask pass, which writes one output, then left undefined values in the
-// counts (attachment 1), and the still after a motion read them (black 64 x 64 tiles on llvmpipe).
-// The buffers are set here directly; the first one, which the cache keeps, is the same.
-void DrawToAttachments(vtkOpenGLFramebufferObject* fbo, unsigned int count)
-{
-  fbo->ActivateDrawBuffers(count);
-  const GLenum buffers[2] = { GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1 };
-  glDrawBuffers(static_cast<GLsizei>(count), buffers);
-}
-
 // The sub-pixel offset, in [-1/2, 1/2) pixel, of the `index`-th render of a still accumulation
 // (index 0: its first, unjittered render) whose first `frames` renders are to sample the pixel's
 // box as evenly as possible. The points are the two-dimensional Sobol sequence (van der Corput in
@@ -1016,7 +1003,7 @@ void vtkOpenGLAntialiasingPass::BeginWorkPass(
   vtkOpenGLFramebufferObject* fbo = this->WorkFramebuffer;
   fbo->Bind();
   fbo->AddColorAttachment(0, texture);
-  fbo->ActivateDrawBuffer(0);
+  DrawToAttachments(fbo, 1);
   fbo->StartNonOrtho(width, height);
   ostate->vtkglViewport(0, 0, width, height);
   ostate->vtkglScissor(0, 0, width, height);

@@ -117,6 +117,22 @@ private:
   bool Open = false;
 };
 
+// Draws into the first `count` (1 or 2) colour attachments of the bound framebuffer `fbo`. VTK
+// 9.1's state cache (vtkOpenGLState::vtkglDrawBuffers) compares only as many entries as are
+// requested, not their number, so through vtkOpenGLFramebufferObject alone a switch from
+// attachments {0, 1} to {0} is dropped (GL keeps drawing into both), and once GL draws into {0}
+// while the cache holds {0, 1}, a switch back to two is dropped as well. The passes' work
+// framebuffers switch between one and two outputs (the temporal history and its counts, the
+// line lengths and the staircase counts), so they set their draw buffers here: through the cache,
+// which keeps its first entry right, and then directly. (Seen as undefined counts in the temporal
+// history, black 64 x 64 tiles on llvmpipe, and as a copy that wrote into its own source.)
+inline void DrawToAttachments(vtkOpenGLFramebufferObject* fbo, unsigned int count)
+{
+  fbo->ActivateDrawBuffers(count);
+  const GLenum buffers[2] = { GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1 };
+  glDrawBuffers(static_cast<GLsizei>(std::min(count, 2u)), buffers);
+}
+
 inline vtkTextureObject* NewTexture(vtkOpenGLRenderWindow* renWin)
 {
   vtkTextureObject* texture = vtkTextureObject::New();

@@ -304,7 +304,7 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
 
   // Pass 2: blending weights, on the pixels whose mask depth was written only.
   fbo->AddColorAttachment(0, this->WeightsTexture);
-  fbo->ActivateDrawBuffer(0);
+  DrawToAttachments(fbo, 1);
   ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
   // A sample set of a multisampled render (SampleAreas): the areas of its sample's offsets.
   const SampleSet& set = this->GetCurrentSampleSet();
@@ -435,7 +435,7 @@ bool vtkOpenGLMLAAPass::CountLines(vtkOpenGLRenderWindow* renWin, vtkTextureObje
   // need no clearing: the weights pass reads those of units only, which are edge pixels.)
   ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
   fbo->AddColorAttachment(0, this->LengthsTextures[0]);
-  fbo->ActivateDrawBuffer(0);
+  DrawToAttachments(fbo, 1);
   ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
   fbo->AddColorAttachment(0, this->LengthsTextures[1]);
   ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
@@ -445,7 +445,7 @@ bool vtkOpenGLMLAAPass::CountLines(vtkOpenGLRenderWindow* renWin, vtkTextureObje
   if (staircases)
   {
     fbo->AddColorAttachment(1, this->StaircaseCountsTexture);
-    fbo->ActivateDrawBuffers(2);
+    DrawToAttachments(fbo, 2);
   }
   if (!this->ReadyQuad(renWin, this->LengthsInitQuad, vtkMLAALineLengthsInitFS,
         staircases ? Define("MLAA_STAIRCASE_COUNTS", true) +
@@ -476,7 +476,7 @@ bool vtkOpenGLMLAAPass::CountLines(vtkOpenGLRenderWindow* renWin, vtkTextureObje
   for (int level = 1; level < maxDistance; level *= 4)
   {
     fbo->AddColorAttachment(0, this->LengthsTextures[1 - source]);
-    fbo->ActivateDrawBuffer(0);
+    DrawToAttachments(fbo, 1);
     const ScopedTextures read(program, { { "lengthsTexture", this->LengthsTextures[source] } });
     program->SetUniformf("level", static_cast<float>(level));
     this->LengthsQuad.Quad->Render();
@@ -507,12 +507,6 @@ bool vtkOpenGLMLAAPass::Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int w
   int height, bool composite, bool straightAlpha, bool inPlace, bool throughTexture,
   vtkOpenGLFramebufferObject* ownTarget)
 {
-  vtkOpenGLState* ostate = renWin->GetState();
-  // Premultiplied "over" onto what lower layers drew (a debug output replaces them); in place,
-  // the target already holds the delegate's image and depth: only the blended pixels are
-  // written, and no depth; otherwise the delegate's depth is copied.
-  SetTargetWriteState(ostate, x, y, width, height,
-    composite && this->Options->GetDebugOutput() == vtkMLAAOptions::NO_DEBUG_OUTPUT, !inPlace);
   const std::string blendDefines =
     Define("MLAA_DEBUG_OUTPUT", this->Options->GetDebugOutput()) +
     Define("MLAA_DOMINANT_DIRECTION", this->Options->GetDominantDirectionBlending()) +
@@ -521,11 +515,17 @@ bool vtkOpenGLMLAAPass::Blend(vtkOpenGLRenderWindow* renWin, int x, int y, int w
   {
     return false;
   }
-  vtkShaderProgram* program = this->BlendQuad.Quad->Program;
   if (throughTexture)
   {
+    // (Sets its own state: it draws into a texture and copies the result.)
     return this->BlendThroughTexture(renWin, x, y, width, height, ownTarget);
   }
+  // Premultiplied "over" onto what lower layers drew (a debug output replaces them); in place,
+  // the target already holds the delegate's image and depth: only the blended pixels are
+  // written, and no depth; otherwise the delegate's depth is copied.
+  SetTargetWriteState(renWin->GetState(), x, y, width, height,
+    composite && this->Options->GetDebugOutput() == vtkMLAAOptions::NO_DEBUG_OUTPUT, !inPlace);
+  vtkShaderProgram* program = this->BlendQuad.Quad->Program;
   ScopedTextures textures(program,
     { { "colorTexture", this->GetSourceTexture() }, { "edgesTexture", this->EdgesTexture },
       { "weightsTexture", this->WeightsTexture } });
@@ -573,12 +573,9 @@ bool vtkOpenGLMLAAPass::BlendThroughTexture(vtkOpenGLRenderWindow* renWin, int x
     fbo->AddColorAttachment(0, this->BlendedTexture);
     fbo->AddColorAttachment(1, source);
     fbo->ActivateReadBuffer(1);
-    fbo->ActivateDrawBuffer(0);
-    // Set directly as well: VTK 9.1's state cache drops a switch to fewer draw buffers whose
-    // first ones are unchanged (after the line lengths' two outputs), and a copy writes every
-    // draw buffer, here the source itself.
-    const GLenum first = GL_COLOR_ATTACHMENT0;
-    glDrawBuffers(1, &first);
+    // (One draw buffer, set past VTK's state cache: a copy writes every draw buffer, and after the
+    // line lengths' two outputs attachment 1 would be the source itself.)
+    DrawToAttachments(fbo, 1);
     vtkOpenGLFramebufferObject::Blit(box, box, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     fbo->RemoveColorAttachment(1); // (not attached while the blending reads it)
     ostate->vtkglViewport(0, 0, width, height);
