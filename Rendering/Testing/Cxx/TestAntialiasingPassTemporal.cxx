@@ -8,6 +8,8 @@
 //   history counts 16 frames (ConvergedFrames), RenderConverged renders until it does, the camera's
 //   parameters are the same after every render as before, and once converged a further render
 //   holds the still (the same image, the camera's modified time unchanged);
+// - translucent geometry (order-independent translucency, dual depth peeling): a still, and a
+//   still after a short orbit, converge to the reference as opaque geometry does;
 // - the box filter: after 16 renders, pixels crossed by the edges of rectangles at sub-pixel
 //   positions hold the share of the pixel covered, within 1/16 (0.03 on average);
 // - a moving actor (a sphere moved across a flat background): after 2 renders, the pixels it left
@@ -150,6 +152,71 @@ void StillConvergence(const PassMethod& method, MessageObserver* messages)
     std::cout << "  RenderConverged: " << renders << " renders, "
               << pass->GetAccumulatedFrames() << " accumulated" << std::endl;
     Check(renders == 8 && pass->GetAccumulatedFrames() == 8, "RenderConverged", __FILE__,
+      __LINE__);
+    StopPass(renderer, window);
+  }
+}
+
+// Translucent geometry under the temporal pass: an opaque sphere behind two translucent ones
+// that overlap it and each other, on white, with order-independent translucency (UseDepthPeeling
+// off) and with dual depth peeling. The delegate's translucent steps draw into the pass's
+// textures at every jittered render; 16 renders of the still scene must come within reach of
+// the supersampled reference (AAR at least 0.93, above the single-frame pass's), as for opaque
+// geometry, and so must a still after a short orbit.
+void TranslucentStill(const PassMethod& method, MessageObserver* messages)
+{
+  for (int peeling = 0; peeling <= 1; ++peeling)
+  {
+    auto window = vtkMLAAScenes::NewOffscreenWindow(Width, Height);
+    vtkNew<vtkRenderer> renderer;
+    window->AddRenderer(renderer);
+    renderer->SetBackground(1.0, 1.0, 1.0);
+    renderer->SetUseDepthPeeling(peeling);
+    const double spheres[3][7] = { { -0.5, 0.0, -0.6, 0.9, 0.3, 0.2, 1.0 },
+      { 0.0, 0.0, 0.0, 0.2, 0.5, 0.9, 0.4 }, { 0.5, 0.1, 0.5, 0.3, 0.8, 0.3, 0.5 } };
+    for (const auto& s : spheres)
+    {
+      vtkNew<vtkSphereSource> source;
+      source->SetCenter(s[0], s[1], s[2]);
+      source->SetRadius(0.5);
+      source->SetThetaResolution(32);
+      source->SetPhiResolution(24);
+      vtkNew<vtkPolyDataMapper> mapper;
+      mapper->SetInputConnection(source->GetOutputPort());
+      vtkNew<vtkActor> actor;
+      actor->SetMapper(mapper);
+      actor->GetProperty()->SetColor(s[3], s[4], s[5]);
+      actor->GetProperty()->SetOpacity(s[6]);
+      renderer->AddActor(actor);
+    }
+    renderer->ResetCamera();
+    renderer->GetActiveCamera()->Azimuth(30);
+    renderer->GetActiveCamera()->Elevation(20);
+    auto plain = vtkMLAAScenes::Capture(window);
+    const std::vector<double> reference = SupersampledReference(window, renderer);
+
+    method.Use(renderer)->AddObserver(vtkCommand::ErrorEvent, messages);
+    const double single = AAR(plain, vtkMLAAScenes::Capture(window), reference);
+    StopPass(renderer, window);
+
+    vtkOpenGLAntialiasingPass* pass = UseTemporal(method, renderer);
+    pass->AddObserver(vtkCommand::ErrorEvent, messages);
+    const double still = AAR(plain, CaptureAfter(window, 16), reference);
+    for (int k = 0; k < 4; ++k)
+    {
+      renderer->GetActiveCamera()->Azimuth(0.5);
+      vtkMLAAScenes::Capture(window);
+    }
+    renderer->GetActiveCamera()->Azimuth(-2.0);
+    pass->RenderConverged(window);
+    const double afterOrbit = AAR(plain, vtkMLAAScenes::Capture(window), reference);
+    std::cout << method.Name << ", translucent spheres ("
+              << (peeling ? "dual depth peeling" : "order-independent translucency")
+              << "): AAR single-frame pass " << single << ", temporal after 16 renders " << still
+              << ", still after an orbit " << afterOrbit << std::endl;
+    Check(still >= 0.93 && still > single, "translucency: a still converges", __FILE__,
+      __LINE__);
+    Check(afterOrbit >= 0.93, "translucency: a still after an orbit converges", __FILE__,
       __LINE__);
     StopPass(renderer, window);
   }
@@ -784,6 +851,7 @@ int TestAntialiasingPassTemporal(int, char*[])
 {
   ForEachPassMethod([](const PassMethod& method, MessageObserver* messages) {
     StillConvergence(method, messages);
+    TranslucentStill(method, messages);
     BoxFilter(method, messages);
     MovingActor(method, messages);
     AnimatedActor(method, messages);
