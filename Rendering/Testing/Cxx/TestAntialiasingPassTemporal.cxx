@@ -62,11 +62,37 @@ namespace
 {
 constexpr int Width = 160, Height = 120;
 
-vtkOpenGLAntialiasingPass* UseTemporal(const PassMethod& method, vtkRenderer* renderer)
+vtkOpenGLAntialiasingPass* UseTemporal(
+  const PassMethod& method, vtkRenderer* renderer, MessageObserver* messages = nullptr)
 {
   vtkOpenGLAntialiasingPass* pass = method.Use(renderer);
   pass->TemporalOn();
+  if (messages)
+  {
+    pass->AddObserver(vtkCommand::ErrorEvent, messages);
+  }
   return pass;
+}
+
+// A still scene's plain render, its supersampled reference, and the AAR of the method's
+// single-frame pass against that reference (the pass is removed again).
+struct SingleFrame
+{
+  vtkSmartPointer<vtkImageData> Plain;
+  std::vector<double> Reference;
+  double Single = 0.0;
+};
+
+SingleFrame MeasureSingleFrame(const PassMethod& method, vtkRenderWindow* window,
+  vtkRenderer* renderer, MessageObserver* messages)
+{
+  SingleFrame s;
+  s.Plain = vtkMLAAScenes::Capture(window);
+  s.Reference = SupersampledReference(window, renderer);
+  method.Use(renderer)->AddObserver(vtkCommand::ErrorEvent, messages);
+  s.Single = AAR(s.Plain, vtkMLAAScenes::Capture(window), s.Reference);
+  StopPass(renderer, window);
+  return s;
 }
 
 // Renders the unchanged scene `renders` times; the last capture.
@@ -113,15 +139,12 @@ void StillConvergence(const PassMethod& method, MessageObserver* messages)
     vtkNew<vtkRenderer> renderer;
     window->AddRenderer(renderer);
     vtkMLAAScenes::Build(scene, renderer);
-    auto plain = vtkMLAAScenes::Capture(window);
-    const std::vector<double> reference = SupersampledReference(window, renderer);
+    const SingleFrame measured = MeasureSingleFrame(method, window, renderer, messages);
+    const vtkSmartPointer<vtkImageData>& plain = measured.Plain;
+    const std::vector<double>& reference = measured.Reference;
+    const double single = measured.Single;
 
-    method.Use(renderer)->AddObserver(vtkCommand::ErrorEvent, messages);
-    const double single = AAR(plain, vtkMLAAScenes::Capture(window), reference);
-    StopPass(renderer, window);
-
-    vtkOpenGLAntialiasingPass* pass = UseTemporal(method, renderer);
-    pass->AddObserver(vtkCommand::ErrorEvent, messages);
+    vtkOpenGLAntialiasingPass* pass = UseTemporal(method, renderer, messages);
     const CameraState before(renderer->GetActiveCamera());
     vtkSmartPointer<vtkImageData> result;
     bool cameraKept = true;
@@ -192,15 +215,12 @@ void TranslucentStill(const PassMethod& method, MessageObserver* messages)
     renderer->ResetCamera();
     renderer->GetActiveCamera()->Azimuth(30);
     renderer->GetActiveCamera()->Elevation(20);
-    auto plain = vtkMLAAScenes::Capture(window);
-    const std::vector<double> reference = SupersampledReference(window, renderer);
+    const SingleFrame measured = MeasureSingleFrame(method, window, renderer, messages);
+    const vtkSmartPointer<vtkImageData>& plain = measured.Plain;
+    const std::vector<double>& reference = measured.Reference;
+    const double single = measured.Single;
 
-    method.Use(renderer)->AddObserver(vtkCommand::ErrorEvent, messages);
-    const double single = AAR(plain, vtkMLAAScenes::Capture(window), reference);
-    StopPass(renderer, window);
-
-    vtkOpenGLAntialiasingPass* pass = UseTemporal(method, renderer);
-    pass->AddObserver(vtkCommand::ErrorEvent, messages);
+    vtkOpenGLAntialiasingPass* pass = UseTemporal(method, renderer, messages);
     const double still = AAR(plain, CaptureAfter(window, 16), reference);
     for (int k = 0; k < 4; ++k)
     {
