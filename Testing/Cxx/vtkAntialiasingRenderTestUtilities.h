@@ -24,12 +24,15 @@
 #include "vtkOpenGLAntialiasingPass.h"
 #include "vtkOpenGLDLAAPass.h"
 #include "vtkOpenGLMLAAPass.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSelection.h"
 #include "vtkSelectionNode.h"
+#include "vtkSphereSource.h"
 #include "vtkWindowToImageFilter.h"
 
 #include <cmath>
@@ -327,6 +330,37 @@ struct TwoViewportWindow
     return Crop(capture, side * ViewportWidth, 0, ViewportWidth, Height);
   }
 };
+
+// A sphere of radius 0.5 at (x, y, z), of colour (r, g, b) and the given opacity.
+inline void AddColoredSphere(vtkRenderer* renderer, double x, double y, double z, double r,
+  double g, double b, double opacity)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(x, y, z);
+  sphere->SetRadius(0.5);
+  sphere->SetThetaResolution(32);
+  sphere->SetPhiResolution(24);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(sphere->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(r, g, b);
+  actor->GetProperty()->SetOpacity(opacity);
+  renderer->AddActor(actor);
+}
+
+// Translucent geometry (issue 21): an opaque sphere behind two translucent ones (opacity 0.4 and
+// 0.5) that overlap it and each other, on white, seen from a little above and aside.
+inline void BuildTranslucentSpheres(vtkRenderer* renderer)
+{
+  renderer->SetBackground(1.0, 1.0, 1.0);
+  AddColoredSphere(renderer, -0.5, 0.0, -0.6, 0.9, 0.3, 0.2, 1.0);
+  AddColoredSphere(renderer, 0.0, 0.0, 0.0, 0.2, 0.5, 0.9, 0.4);
+  AddColoredSphere(renderer, 0.5, 0.1, 0.5, 0.3, 0.8, 0.3, 0.5);
+  renderer->ResetCamera();
+  renderer->GetActiveCamera()->Azimuth(30);
+  renderer->GetActiveCamera()->Elevation(20);
+}
 
 // A one-renderer window with a scene, and the scene's plain (single-sample) render.
 struct SceneWindow

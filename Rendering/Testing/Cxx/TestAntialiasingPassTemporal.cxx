@@ -62,15 +62,13 @@ namespace
 {
 constexpr int Width = 160, Height = 120;
 
+// The method's pass on `renderer` with Temporal on, its errors reported to `messages`.
 vtkOpenGLAntialiasingPass* UseTemporal(
-  const PassMethod& method, vtkRenderer* renderer, MessageObserver* messages = nullptr)
+  const PassMethod& method, vtkRenderer* renderer, MessageObserver* messages)
 {
   vtkOpenGLAntialiasingPass* pass = method.Use(renderer);
   pass->TemporalOn();
-  if (messages)
-  {
-    pass->AddObserver(vtkCommand::ErrorEvent, messages);
-  }
+  pass->AddObserver(vtkCommand::ErrorEvent, messages);
   return pass;
 }
 
@@ -180,9 +178,9 @@ void StillConvergence(const PassMethod& method, MessageObserver* messages)
   }
 }
 
-// Translucent geometry under the temporal pass: an opaque sphere behind two translucent ones
-// that overlap it and each other, on white, with order-independent translucency (UseDepthPeeling
-// off) and with dual depth peeling. The delegate's translucent steps draw into the pass's
+// Translucent geometry under the temporal pass: the spheres of TestAntialiasingPassTranslucency
+// (BuildTranslucentSpheres), with order-independent translucency (UseDepthPeeling off) and with
+// dual depth peeling. The delegate's translucent steps draw into the pass's
 // textures at every jittered render; 16 renders of the still scene must come within reach of
 // the supersampled reference (AAR at least 0.93, above the single-frame pass's), as for opaque
 // geometry, and so must a still after a short orbit.
@@ -193,28 +191,8 @@ void TranslucentStill(const PassMethod& method, MessageObserver* messages)
     auto window = vtkMLAAScenes::NewOffscreenWindow(Width, Height);
     vtkNew<vtkRenderer> renderer;
     window->AddRenderer(renderer);
-    renderer->SetBackground(1.0, 1.0, 1.0);
     renderer->SetUseDepthPeeling(peeling);
-    const double spheres[3][7] = { { -0.5, 0.0, -0.6, 0.9, 0.3, 0.2, 1.0 },
-      { 0.0, 0.0, 0.0, 0.2, 0.5, 0.9, 0.4 }, { 0.5, 0.1, 0.5, 0.3, 0.8, 0.3, 0.5 } };
-    for (const auto& s : spheres)
-    {
-      vtkNew<vtkSphereSource> source;
-      source->SetCenter(s[0], s[1], s[2]);
-      source->SetRadius(0.5);
-      source->SetThetaResolution(32);
-      source->SetPhiResolution(24);
-      vtkNew<vtkPolyDataMapper> mapper;
-      mapper->SetInputConnection(source->GetOutputPort());
-      vtkNew<vtkActor> actor;
-      actor->SetMapper(mapper);
-      actor->GetProperty()->SetColor(s[3], s[4], s[5]);
-      actor->GetProperty()->SetOpacity(s[6]);
-      renderer->AddActor(actor);
-    }
-    renderer->ResetCamera();
-    renderer->GetActiveCamera()->Azimuth(30);
-    renderer->GetActiveCamera()->Elevation(20);
+    BuildTranslucentSpheres(renderer);
     const SingleFrame measured = MeasureSingleFrame(method, window, renderer, messages);
     const vtkSmartPointer<vtkImageData>& plain = measured.Plain;
     const std::vector<double>& reference = measured.Reference;
@@ -227,7 +205,7 @@ void TranslucentStill(const PassMethod& method, MessageObserver* messages)
       renderer->GetActiveCamera()->Azimuth(0.5);
       vtkMLAAScenes::Capture(window);
     }
-    renderer->GetActiveCamera()->Azimuth(-2.0);
+    renderer->GetActiveCamera()->Azimuth(-2.0); // back where the reference was rendered
     pass->RenderConverged(window);
     const double afterOrbit = AAR(plain, vtkMLAAScenes::Capture(window), reference);
     std::cout << method.Name << ", translucent spheres ("
@@ -293,8 +271,7 @@ void BoxFilter(const PassMethod& method, MessageObserver* messages)
       edges.push_back({ false, y + h, x + 3, x + w - 3, top });
     }
   }
-  vtkOpenGLAntialiasingPass* pass = UseTemporal(method, renderer);
-  pass->AddObserver(vtkCommand::ErrorEvent, messages);
+  UseTemporal(method, renderer, messages);
   const vtkSmartPointer<vtkImageData> result = CaptureAfter(window, 16);
   double largest = 0.0, sum = 0.0;
   for (const Edge& e : edges)
@@ -356,8 +333,7 @@ void MovingActor(const PassMethod& method, MessageObserver* messages)
   sphere->SetPosition(-1.0, 0.0, 0.0);
   auto plainOld = vtkMLAAScenes::Capture(window);
 
-  vtkOpenGLAntialiasingPass* pass = UseTemporal(method, renderer);
-  pass->AddObserver(vtkCommand::ErrorEvent, messages);
+  UseTemporal(method, renderer, messages);
   for (int k = 0; k < 8; ++k)
   {
     vtkMLAAScenes::Capture(window);
@@ -520,8 +496,7 @@ void AnimatedActor(const PassMethod& method, MessageObserver* messages)
     return sum;
   };
 
-  vtkOpenGLAntialiasingPass* pass = UseTemporal(method, renderer);
-  pass->AddObserver(vtkCommand::ErrorEvent, messages);
+  vtkOpenGLAntialiasingPass* pass = UseTemporal(method, renderer, messages);
   pass->RenderConverged(window);
   vtkSmartPointer<vtkImageData> previous = vtkMLAAScenes::Capture(window);
   const double converged = leftAAR(previous);
@@ -599,8 +574,7 @@ void CameraOrbit(const PassMethod& method, MessageObserver* messages)
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
   vtkMLAAScenes::Build("silhouettes", renderer);
-  vtkSmartPointer<vtkOpenGLAntialiasingPass> pass = UseTemporal(method, renderer);
-  pass->AddObserver(vtkCommand::ErrorEvent, messages);
+  vtkSmartPointer<vtkOpenGLAntialiasingPass> pass = UseTemporal(method, renderer, messages);
   vtkMLAAScenes::Capture(window);
   vtkMLAAScenes::Capture(window);
   Check(pass->GetAccumulatedFrames() == 2, "still: 2 frames", __FILE__, __LINE__);
@@ -647,8 +621,7 @@ void StillAfterOrbit(const PassMethod& method, MessageObserver* messages)
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
   vtkMLAAScenes::Build("thin", renderer);
-  vtkSmartPointer<vtkOpenGLAntialiasingPass> pass = UseTemporal(method, renderer);
-  pass->AddObserver(vtkCommand::ErrorEvent, messages);
+  vtkSmartPointer<vtkOpenGLAntialiasingPass> pass = UseTemporal(method, renderer, messages);
   Difference worst;
   for (int orbit = 0; orbit < 3; ++orbit)
   {
@@ -688,8 +661,7 @@ void Resets(const PassMethod& method, MessageObserver* messages)
   auto firstRender = [&]() {
     vtkRenderPass* kept = renderer->GetPass();
     kept->Register(nullptr);
-    vtkOpenGLAntialiasingPass* fresh = UseTemporal(method, renderer);
-    fresh->AddObserver(vtkCommand::ErrorEvent, messages);
+    UseTemporal(method, renderer, messages);
     auto image = vtkMLAAScenes::Capture(window);
     StopPass(renderer, window);
     renderer->SetPass(kept);
@@ -706,8 +678,7 @@ void Resets(const PassMethod& method, MessageObserver* messages)
     Check(accumulated == 1 && d.Pixels == 0, what, __FILE__, __LINE__);
   };
 
-  vtkOpenGLAntialiasingPass* pass = UseTemporal(method, renderer);
-  pass->AddObserver(vtkCommand::ErrorEvent, messages);
+  vtkOpenGLAntialiasingPass* pass = UseTemporal(method, renderer, messages);
   for (int k = 0; k < 6; ++k)
   {
     vtkMLAAScenes::Capture(window);
@@ -756,8 +727,7 @@ void Picking(const PassMethod& method, MessageObserver* messages)
   vtkMLAAScenes::Build("silhouettes", renderer);
   window->Render();
   const std::set<vtkIdType> plain = SelectCells(renderer, Width, Height);
-  vtkOpenGLAntialiasingPass* pass = UseTemporal(method, renderer);
-  pass->AddObserver(vtkCommand::ErrorEvent, messages);
+  vtkOpenGLAntialiasingPass* pass = UseTemporal(method, renderer, messages);
   for (int k = 0; k < 4; ++k)
   {
     vtkMLAAScenes::Capture(window);
@@ -786,8 +756,7 @@ void Overlays(const PassMethod& method, MessageObserver* messages)
   vtkMLAAScenes::Build("text", renderer);
   SetVisibility(renderer, false, true);
   auto plain = vtkMLAAScenes::Capture(window);
-  vtkOpenGLAntialiasingPass* pass = UseTemporal(method, renderer);
-  pass->AddObserver(vtkCommand::ErrorEvent, messages);
+  vtkOpenGLAntialiasingPass* pass = UseTemporal(method, renderer, messages);
   vtkIdType worst = 0;
   for (int k = 0; k < 6; ++k)
   {
@@ -820,8 +789,7 @@ void Layers(const PassMethod& method, MessageObserver* messages)
   upper->SetDraw(true);
   auto plain = vtkMLAAScenes::Capture(window);
 
-  vtkOpenGLAntialiasingPass* pass = UseTemporal(method, upper);
-  pass->AddObserver(vtkCommand::ErrorEvent, messages);
+  vtkOpenGLAntialiasingPass* pass = UseTemporal(method, upper, messages);
   const vtkSmartPointer<vtkImageData> result = CaptureAfter(window, 16);
   // Layer 0's pixels where layer 1 draws nothing within 2 pixels.
   vtkIdType kept = 0, changed = 0;

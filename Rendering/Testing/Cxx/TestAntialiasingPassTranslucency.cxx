@@ -55,36 +55,6 @@ using namespace vtkMLAATest;
 
 namespace
 {
-void AddSphere(vtkRenderer* renderer, double x, double y, double z, double r, double g, double b,
-  double opacity)
-{
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetCenter(x, y, z);
-  sphere->SetRadius(0.5);
-  sphere->SetThetaResolution(32);
-  sphere->SetPhiResolution(24);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(sphere->GetOutputPort());
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(r, g, b);
-  actor->GetProperty()->SetOpacity(opacity);
-  renderer->AddActor(actor);
-}
-
-// The scene of the issue: an opaque sphere behind two translucent ones that overlap it and each
-// other, on white.
-void BuildSpheres(vtkRenderer* renderer)
-{
-  renderer->SetBackground(1.0, 1.0, 1.0);
-  AddSphere(renderer, -0.5, 0.0, -0.6, 0.9, 0.3, 0.2, 1.0);
-  AddSphere(renderer, 0.0, 0.0, 0.0, 0.2, 0.5, 0.9, 0.4);
-  AddSphere(renderer, 0.5, 0.1, 0.5, 0.3, 0.8, 0.3, 0.5);
-  renderer->ResetCamera();
-  renderer->GetActiveCamera()->Azimuth(30);
-  renderer->GetActiveCamera()->Elevation(20);
-}
-
 // A volume (the wavelet, ray cast on the GPU) with a translucent sphere through it and an opaque
 // cone beside it, on a dark background; returns the sphere.
 vtkActor* BuildVolumeScene(vtkRenderer* renderer)
@@ -353,7 +323,7 @@ int TestAntialiasingPassTranslucency(int, char*[])
     {
       // Each translucency method in turn on one renderer and pass: chosen at each render.
       Window w;
-      BuildSpheres(w.Renderer);
+      BuildTranslucentSpheres(w.Renderer);
       vtkSmartPointer<vtkOpenGLAntialiasingPass> pass = method.Use(w.Renderer);
       messages->Watch(pass);
       CheckCase(method, w.RenderWindow, w.Renderer, pass, "spheres, order-independent");
@@ -395,7 +365,7 @@ int TestAntialiasingPassTranslucency(int, char*[])
       // The renderer's other depth peeling, where dual depth peeling is unsupported (or, as
       // here, VTK_USE_LEGACY_DEPTH_PEELING is set): the pass follows the renderer's choice.
       Window dual;
-      BuildSpheres(dual.Renderer);
+      BuildTranslucentSpheres(dual.Renderer);
       dual.Renderer->UseDepthPeelingOn();
       auto dualImage = vtkMLAAScenes::Capture(dual.RenderWindow);
       const bool dualSupported =
@@ -403,7 +373,7 @@ int TestAntialiasingPassTranslucency(int, char*[])
       setenv("VTK_USE_LEGACY_DEPTH_PEELING", "1", 1);
       {
         Window w;
-        BuildSpheres(w.Renderer);
+        BuildTranslucentSpheres(w.Renderer);
         w.Renderer->UseDepthPeelingOn();
         // The renderer's own image shows that it peels differently now.
         const vtkIdType differ =
@@ -449,10 +419,10 @@ int TestAntialiasingPassTranslucency(int, char*[])
       window->SetNumberOfLayers(2);
       vtkNew<vtkRenderer> lower;
       lower->SetBackground(0.3, 0.3, 0.35);
-      AddSphere(lower, 0.0, 0.0, -2.5, 0.9, 0.8, 0.2, 1.0);
+      AddColoredSphere(lower, 0.0, 0.0, -2.5, 0.9, 0.8, 0.2, 1.0);
       vtkNew<vtkRenderer> upper;
       upper->SetLayer(1);
-      BuildSpheres(upper);
+      BuildTranslucentSpheres(upper);
       lower->SetActiveCamera(upper->GetActiveCamera());
       window->AddRenderer(lower);
       window->AddRenderer(upper);
@@ -482,7 +452,7 @@ int TestAntialiasingPassTranslucency(int, char*[])
       for (const bool peeling : { false, true })
       {
         Window w;
-        BuildSpheres(w.Renderer);
+        BuildTranslucentSpheres(w.Renderer);
         w.Renderer->SetUseDepthPeeling(peeling);
         auto plain = vtkMLAAScenes::Capture(w.RenderWindow);
         auto depth = ZBuffer(w.RenderWindow);
@@ -505,7 +475,7 @@ int TestAntialiasingPassTranslucency(int, char*[])
     {
       // A translucent step of the user's own is left alone.
       Window w;
-      BuildSpheres(w.Renderer);
+      BuildTranslucentSpheres(w.Renderer);
       auto oit = vtkMLAAScenes::Capture(w.RenderWindow);
       vtkNew<vtkRenderStepsPass> plainSteps;
       vtkNew<UserTranslucentPass> userStep;
