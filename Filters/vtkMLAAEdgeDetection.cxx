@@ -30,8 +30,9 @@ inline Acc KeptContrast(Acc d, Acc threshold)
 }
 
 // The Euclidean distances of n pixels' first three features (planes a0, a1, a2) from those of n
-// other pixels (b0, b1, b2), each kept as a contrast (KeptContrast). The square roots are most of the cost of LAB edges; an AVX2 clone
-// (no fused multiply-add, so the same results) takes eight at a time where the processor has it.
+// other pixels (b0, b1, b2), each kept as a contrast (KeptContrast). The square roots are most of
+// the cost of LAB edges; an AVX2 clone (no fused multiply-add, so the same results) takes eight at
+// a time where the processor has it.
 template <typename Acc>
 void KeptDistances(const Acc* a0, const Acc* a1, const Acc* a2, const Acc* b0, const Acc* b1,
   const Acc* b2, Acc threshold, Acc* out, int n)
