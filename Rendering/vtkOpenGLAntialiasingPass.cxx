@@ -701,8 +701,8 @@ void vtkOpenGLAntialiasingPass::ShaderVariant::Release(vtkWindow* window)
 }
 
 //------------------------------------------------------------------------------
-bool vtkOpenGLAntialiasingPass::ReadyQuad(
-  vtkOpenGLRenderWindow* renWin, ShaderVariant& variant, const char* fs, const std::string& defines)
+bool vtkOpenGLAntialiasingPass::ReadyQuad(vtkOpenGLRenderWindow* renWin, ShaderVariant& variant,
+  const char* fs, const std::string& defines, const char* vs)
 {
   if (variant.Quad && variant.Defines != defines)
   {
@@ -716,7 +716,7 @@ bool vtkOpenGLAntialiasingPass::ReadyQuad(
     std::string source = fs;
     vtkShaderProgram::Substitute(source, "//VTK::Antialiasing::Dec", defines, false);
     this->SubstituteShaderSnippets(source);
-    quad = new vtkOpenGLQuadHelper(renWin, nullptr, source.c_str(), "");
+    quad = new vtkOpenGLQuadHelper(renWin, vs, source.c_str(), "");
     variant.Defines = defines;
   }
   else

@@ -345,9 +345,10 @@ protected:
   };
   // Builds the quad helper of a fragment shader with `defines` in place of
   // //VTK::Antialiasing::Dec (rebuilt when they differ from the last build), or binds the
-  // existing one.
+  // existing one. `vs`: a vertex shader of VTK's screen quad (its attributes ndCoordIn and
+  // texCoordIn) in place of the helper's own.
   bool ReadyQuad(vtkOpenGLRenderWindow* renWin, ShaderVariant& variant, const char* fs,
-    const std::string& defines);
+    const std::string& defines, const char* vs = nullptr);
 
   bool AntialiasOverlays = false;
   bool KeepAlpha = false;

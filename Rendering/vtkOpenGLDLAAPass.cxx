@@ -10,19 +10,35 @@
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
 #include "vtkDLAAFS.h"
 #include "vtkDLAALuma.h"
 #include "vtkDLAAMasksFS.h"
+#include "vtkDLAATilesFS.h"
+#include "vtkDLAATilesVS.h"
 
 #include <algorithm>
 #include <string>
 
-#include "vtk_glew.h" // For GL enums only: every call goes through VTK's classes
+#include "vtk_glew.h" // For glDrawArraysInstanced (VTK has no instanced quad) and GL enums
 
 using namespace vtkOpenGLAntialiasingPassInternals;
+
+namespace
+{
+// Masks a side of a tile of TilesTexture (vtkDLAATilesFS.glsl, vtkDLAATilesVS.glsl and
+// vtkDLAAFS.glsl read 8 too).
+constexpr int TileSize = 8;
+// Tiles a side of a square of the tiled filter draw (vtkDLAATilesVS.glsl): 32 x 32 pixels. On
+// llvmpipe at 1920 x 1080, squares of 1, 2, 4 and 8 tiles gave the DLAA pass 0.67 / 0.62 / 0.58
+// / 0.73 of FXAA's overhead on the mixed scene, 1.68 / 1.41 / 1.38 / 1.42 on the orbit and 4.25 /
+// 3.70 / 2.97 / 3.03 on 45-degree stripes (docs/measurements.md): small squares cost a
+// primitive each, and each split into two triangles shades the pixels along its diagonal twice.
+constexpr int DrawTiles = 4;
+}
 
 vtkStandardNewMacro(vtkOpenGLDLAAPass);
 
@@ -77,8 +93,24 @@ bool vtkOpenGLDLAAPass::PrepareMethodTargets(const Frame& frame)
   // extends 8 pixels beyond each side of the image, where the 17-pixel windows of the pixels
   // near the border read masks computed from clamped colours (vtkDLAAMasksFS.glsl).
   const int padding = this->GetMasksPadding();
-  return AllocateColorTarget(this->MasksTexture, frame.Width + 2 * padding,
-    frame.Height + 2 * padding, 2, VTK_FLOAT, false, GL_RG32F);
+  const int width = frame.Width + 2 * padding;
+  const int height = frame.Height + 2 * padding;
+  bool reallocated =
+    AllocateColorTarget(this->MasksTexture, width, height, 2, VTK_FLOAT, false, GL_RG32F);
+  if (padding > 0)
+  {
+    if (!this->TilesTexture)
+    {
+      this->TilesTexture = NewTexture(frame.Window);
+    }
+    reallocated |= AllocateColorTarget(this->TilesTexture, (width + TileSize - 1) / TileSize,
+      (height + TileSize - 1) / TileSize, 1, VTK_UNSIGNED_CHAR, false);
+  }
+  else
+  {
+    DeleteObject(this->TilesTexture, frame.Window); // (without long edges: not read)
+  }
+  return reallocated;
 }
 
 //------------------------------------------------------------------------------
@@ -105,8 +137,26 @@ bool vtkOpenGLDLAAPass::ComputeMasks(const Frame& frame)
   program->SetUniformf("lambda", static_cast<float>(this->Options->GetLambda()));
   program->SetUniformf("epsilon", static_cast<float>(this->Options->GetEpsilon()));
   program->SetUniformi("padding", padding);
-  TimedStage stage(frame.Window, "edge masks");
-  this->MasksQuad.Quad->Render();
+  {
+    TimedStage stage(frame.Window, "edge masks");
+    this->MasksQuad.Quad->Render();
+  }
+  return padding == 0 || this->ComputeTiles(frame);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLDLAAPass::ComputeTiles(const Frame& frame)
+{
+  this->BeginWorkPass(frame.Window, this->TilesTexture, this->TilesTexture->GetWidth(),
+    this->TilesTexture->GetHeight());
+  if (!this->ReadyQuad(frame.Window, this->TilesQuad, vtkDLAATilesFS, std::string()))
+  {
+    return false;
+  }
+  const ScopedTextures textures(
+    this->TilesQuad.Quad->Program, { { "masksTexture", this->MasksTexture } });
+  TimedStage stage(frame.Window, "mask tiles");
+  this->TilesQuad.Quad->Render();
   return true;
 }
 
@@ -121,20 +171,43 @@ bool vtkOpenGLDLAAPass::Filter(const Frame& frame)
   const std::string defines = Define("DLAA_LUMA", this->Options->GetLumaFunction()) +
     Define("DLAA_LONG_EDGES", this->Options->GetLongEdges()) +
     Define("DLAA_IN_PLACE", frame.InPlace);
-  if (!this->ReadyQuad(frame.Window, this->FilterQuad, vtkDLAAFS, defines))
+  // In place, with long edges, only the squares of pixels that may change are drawn
+  // (vtkDLAATilesVS.glsl): the others keep the delegate's image, which the target holds.
+  // Otherwise every pixel is written.
+  const bool tiled = frame.InPlace && this->Options->GetLongEdges();
+  ShaderVariant& variant = tiled ? this->FilterTilesQuad : this->FilterQuad;
+  if (!this->ReadyQuad(
+        frame.Window, variant, vtkDLAAFS, defines, tiled ? vtkDLAATilesVS : nullptr))
   {
     return false;
   }
-  vtkShaderProgram* program = this->FilterQuad.Quad->Program;
+  vtkShaderProgram* program = variant.Quad->Program;
   ScopedTextures textures(program,
     { { "colorTexture", this->ColorTexture }, { "masksTexture", this->MasksTexture } });
   program->SetUniformi("padding", this->GetMasksPadding());
+  if (this->Options->GetLongEdges())
+  {
+    textures.Bind(program, "tilesTexture", this->TilesTexture);
+  }
   if (!frame.InPlace)
   {
     textures.Bind(program, "depthTexture", this->DepthTexture);
   }
   TimedStage stage(frame.Window, "filter");
-  this->FilterQuad.Quad->Render();
+  if (tiled)
+  {
+    // One instance of the screen quad per square (vtkOpenGLQuadHelper draws one).
+    program->SetUniformi("drawTiles", DrawTiles);
+    const int side = TileSize * DrawTiles;
+    const int squares = ((frame.Width + side - 1) / side) * ((frame.Height + side - 1) / side);
+    variant.Quad->VAO->Bind();
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, squares);
+    variant.Quad->VAO->Release();
+  }
+  else
+  {
+    variant.Quad->Render();
+  }
   return true;
 }
 
@@ -152,14 +225,17 @@ bool vtkOpenGLDLAAPass::Antialias(const Frame& frame)
 void vtkOpenGLDLAAPass::ReleaseMethodResources(vtkWindow* w)
 {
   this->MasksQuad.Release(w);
+  this->TilesQuad.Release(w);
   this->FilterQuad.Release(w);
+  this->FilterTilesQuad.Release(w);
   DeleteObject(this->MasksTexture, w);
+  DeleteObject(this->TilesTexture, w);
 }
 
 //------------------------------------------------------------------------------
 vtkIdType vtkOpenGLDLAAPass::GetDLAATargetMemorySize()
 {
-  return TextureBytes(this->MasksTexture, 8);
+  return TextureBytes(this->MasksTexture, 8) + TextureBytes(this->TilesTexture, 1);
 }
 
 //------------------------------------------------------------------------------

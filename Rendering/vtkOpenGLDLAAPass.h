@@ -71,8 +71,9 @@ public:
   vtkMTimeType GetMTime() override;
 
   /**
-   * Bytes of the DLAA-specific target alone (the RG32F masks texture: 8 bytes per pixel, of an
-   * image 16 pixels wider and higher with LongEdges).
+   * Bytes of the DLAA-specific targets alone: the RG32F masks texture (8 bytes per pixel, of an
+   * image 16 pixels wider and higher with LongEdges) and, with LongEdges, the 8-bit texture of
+   * one byte per tile of 8 x 8 masks.
    */
   vtkIdType GetDLAATargetMemorySize();
 
@@ -95,14 +96,19 @@ private:
 
   // Pixels of MasksTexture beyond each side of the image: 8 with long edges, else 0.
   int GetMasksPadding();
-  // Pass 1 into MasksTexture.
+  // Pass 1 into MasksTexture, and with LongEdges its tiles into TilesTexture.
   bool ComputeMasks(const Frame& frame);
+  // Which tiles of 8 x 8 masks hold a mask other than 0 (vtkDLAATilesFS.glsl).
+  bool ComputeTiles(const Frame& frame);
   // Pass 2 into the target viewport.
   bool Filter(const Frame& frame);
 
   vtkTextureObject* MasksTexture = nullptr;
+  vtkTextureObject* TilesTexture = nullptr;
   ShaderVariant MasksQuad;
-  ShaderVariant FilterQuad;
+  ShaderVariant TilesQuad;
+  ShaderVariant FilterQuad;      // over the whole viewport
+  ShaderVariant FilterTilesQuad; // in place with LongEdges: one quad per tile (vtkDLAATilesVS)
 };
 
 #endif

@@ -31,6 +31,9 @@ in vec2 texCoord;
 uniform sampler2D colorTexture; // the delegate's image
 uniform sampler2D depthTexture; // the delegate's depth (not in place)
 uniform sampler2D masksTexture; // pass 1 output, `padding` pixels larger each side
+#ifdef DLAA_LONG_EDGES
+uniform sampler2D tilesTexture; // which tiles of 8 x 8 masks hold one other than 0
+#endif
 uniform int padding;
 //VTK::DLAA::Luma
 
@@ -87,8 +90,24 @@ void main()
 #ifndef DLAA_IN_PLACE
   gl_FragDepth = texelFetch(depthTexture, p, 0).r;
 #endif
-  vec4 c = texelFetch(colorTexture, p, 0);
   ivec2 pm = p + ivec2(padding); // p in the masks texture
+#ifdef DLAA_LONG_EDGES
+  // The tiles of 8 x 8 masks (vtkDLAATilesFS) that the pixel's windows touch: texels pm.x - 8 to
+  // pm.x + 8 of its row lie in three tiles whatever pm.x, the middle one pm / 8, which holds the
+  // pixel itself; the column likewise. Where all five hold masks of 0 only, the pixel has no
+  // short edge and both long masks are 0: the method leaves it as it is.
+  ivec2 tile = pm / 8;
+  if (texelFetch(tilesTexture, tile, 0).r == 0.0 &&
+    texelFetch(tilesTexture, tile - ivec2(1, 0), 0).r == 0.0 &&
+    texelFetch(tilesTexture, tile + ivec2(1, 0), 0).r == 0.0 &&
+    texelFetch(tilesTexture, tile - ivec2(0, 1), 0).r == 0.0 &&
+    texelFetch(tilesTexture, tile + ivec2(0, 1), 0).r == 0.0)
+  {
+    leave(texelFetch(colorTexture, p, 0));
+    return;
+  }
+#endif
+  vec4 c = texelFetch(colorTexture, p, 0);
   vec4 m = texelFetch(masksTexture, pm, 0);
   if (m.x < 0.0)
   {
@@ -99,18 +118,31 @@ void main()
 #ifdef DLAA_LONG_EDGES
   // The long masks: means of mx along x and of my along y over 17 pixels, and whether a mask
   // they average read a colour that is not finite.
+  // A pixel without a short edge changes only where a long mask is positive, which takes a sum
+  // of 17 masks, each at most 1, above 8.5: once the masks still to be read (9 - i of them)
+  // could not lift either sum above 8, the pixel is left as it is whatever they hold (a colour
+  // that is not finite among them would leave it too). Such pixels near an edge read 9 pairs of
+  // masks instead of 17, with the same result. (The bound is the uniform `padding`, 8 here, so
+  // that the loop is not unrolled and ends once every pixel shaded with this one is done.)
+  bool shortEdge = m.x > 0.0 || m.y > 0.0;
   float sumX = 0.0;
   float sumY = 0.0;
   bool bad = false;
-  for (int i = -8; i <= 8; ++i)
+  bool needed = true;
+  for (int i = -padding; i <= padding; ++i)
   {
+    if (!shortEdge && sumX <= float(i - 1) && sumY <= float(i - 1))
+    {
+      needed = false;
+      break;
+    }
     vec4 mX = texelFetch(masksTexture, pm + ivec2(i, 0), 0);
     vec4 mY = texelFetch(masksTexture, pm + ivec2(0, i), 0);
     sumX += mX.x;
     sumY += mY.y;
     bad = bad || mX.x < 0.0 || mY.x < 0.0;
   }
-  if (bad)
+  if (bad || !needed)
   {
     leave(c);
     return;

@@ -5,8 +5,9 @@
 // - option changes take effect at the next render (Lambda 0 turns it off, LongEdges off and the
 //   green luma change the result, without touching pixels whose 7 x 7 neighbourhood is flat;
 //   SetOptions shares an object, nullptr restores defaults);
-// - its targets are the RGBA8 colour copy and the RGBA16F masks, follow resizes, and
-//   ReleaseGraphicsResources frees them; the result is the same after a release.
+// - its targets are the RGBA8 colour copy, the RG32F masks (8 pixels wider each side with long
+//   edges) and one byte per tile of 8 x 8 masks, follow resizes, and ReleaseGraphicsResources
+//   frees them; the result is the same after a release.
 // No errors are reported on the way.
 #include "vtkAntialiasingRenderTestUtilities.h"
 
@@ -22,14 +23,15 @@ int TestDLAAPass(int, char*[])
   messages->Watch(pass);
   MLAA_CHECK(pass->GetTargetMemorySize() == 0);
   auto defaults = vtkMLAAScenes::Capture(scene.Window);
-  MLAA_CHECK(pass->GetDLAATargetMemorySize() == 316 * 216 * 8);
-  MLAA_CHECK(pass->GetTargetMemorySize() == 316 * 216 * 8 + 300 * 200 * 4);
+  MLAA_CHECK(pass->GetDLAATargetMemorySize() == 316 * 216 * 8 + 40 * 27);
+  MLAA_CHECK(pass->GetTargetMemorySize() == 316 * 216 * 8 + 40 * 27 + 300 * 200 * 4);
 
   pass->GetOptions()->SetLambda(0.0);
   MLAA_CHECK(Compare(scene.Plain, vtkMLAAScenes::Capture(scene.Window), 0.0).Count == 0);
   pass->GetOptions()->SetLambda(3.0);
   pass->GetOptions()->LongEdgesOff();
   auto shortOnly = vtkMLAAScenes::Capture(scene.Window);
+  MLAA_CHECK(pass->GetDLAATargetMemorySize() == 300 * 200 * 8); // no padding, no tiles
   const Difference longEdges = Compare(defaults, shortOnly, 0.0);
   std::cout << "LongEdges off changes " << longEdges.Pixels << " pixels" << std::endl;
   MLAA_CHECK(longEdges.Pixels > 20);
@@ -48,7 +50,7 @@ int TestDLAAPass(int, char*[])
 
   scene.Window->SetSize(321, 243);
   auto resized = vtkMLAAScenes::Capture(scene.Window);
-  MLAA_CHECK(pass->GetDLAATargetMemorySize() == 337 * 259 * 8);
+  MLAA_CHECK(pass->GetDLAATargetMemorySize() == 337 * 259 * 8 + 43 * 33);
   pass->ReleaseGraphicsResources(scene.Window);
   MLAA_CHECK(pass->GetTargetMemorySize() == 0);
   MLAA_CHECK(Compare(resized, vtkMLAAScenes::Capture(scene.Window), 0.0).Count == 0);
