@@ -30,8 +30,12 @@ using namespace vtkOpenGLAntialiasingPassInternals;
 namespace
 {
 // Masks a side of a tile of TilesTexture (vtkDLAATilesFS.glsl, vtkDLAATilesVS.glsl and
-// vtkDLAAFS.glsl read 8 too).
+// vtkDLAAFS.glsl read 8 too). The shaders rely on it being the long edges' radius, which is also
+// the masks' padding: a 17-pixel window then touches exactly three tiles, and the pixels of
+// image tile t lie in tile t + 1 of the masks.
 constexpr int TileSize = 8;
+static_assert(TileSize == vtkDLAAOptions::LongEdgeRadius,
+  "the DLAA shaders' tiles are as wide as the long edges' radius");
 // Tiles a side of a square of the tiled filter draw (vtkDLAATilesVS.glsl): 32 x 32 pixels. On
 // llvmpipe at 1920 x 1080, squares of 1, 2, 4 and 8 tiles gave the DLAA pass 0.67 / 0.62 / 0.58
 // / 0.73 of FXAA's overhead on the mixed scene, 1.68 / 1.41 / 1.38 / 1.42 on the orbit and 4.25 /

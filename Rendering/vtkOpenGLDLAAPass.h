@@ -108,7 +108,8 @@ private:
   ShaderVariant MasksQuad;
   ShaderVariant TilesQuad;
   ShaderVariant FilterQuad;      // over the whole viewport
-  ShaderVariant FilterTilesQuad; // in place with LongEdges: one quad per tile (vtkDLAATilesVS)
+  ShaderVariant FilterTilesQuad; // in place with LongEdges: a quad per square of tiles
+                                 // (vtkDLAATilesVS)
 };
 
 #endif
