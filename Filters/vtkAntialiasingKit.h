@@ -178,15 +178,17 @@ public:
   }
 
   /**
-   * The features of `width` pixels at `p` (components interleaved) into `features`, one plane of
-   * `width` values per feature (feature k of pixel x at features[k * width + x]).
+   * The features of `width` pixels at `p` (components interleaved) into `features`, one plane
+   * per feature, planeStride values apart (feature k of pixel x at features[k * planeStride + x];
+   * 0: width apart).
    */
-  void Row(const T* p, int width, const double* depth, Acc* features) const
+  void Row(const T* p, int width, const double* depth, Acc* features, int planeStride = 0) const
   {
     const int c = this->Layout.Components;
+    const int stride = planeStride > 0 ? planeStride : width;
     if (this->Layout.Mode == vtkMLAAOptions::LAB)
     {
-      this->LabRow(p, width, features);
+      this->LabRow(p, width, features, stride);
       return;
     }
     if (std::is_floating_point<T>::value)
@@ -201,13 +203,13 @@ public:
         }
         if (finite)
         {
-          this->Pixel(p + x * c, depth ? depth + x : nullptr, features + x, width);
+          this->Pixel(p + x * c, depth ? depth + x : nullptr, features + x, stride);
         }
         else
         {
           for (int k = 0; k < this->Layout.Count; ++k)
           {
-            features[k * width + x] = std::numeric_limits<Acc>::quiet_NaN();
+            features[k * stride + x] = std::numeric_limits<Acc>::quiet_NaN();
           }
         }
       }
@@ -226,7 +228,7 @@ public:
     {
       for (int k = 0; k < c; ++k)
       {
-        Acc* plane = features + k * width;
+        Acc* plane = features + static_cast<size_t>(k) * stride;
         for (int x = 0; x < width; ++x)
         {
           plane[x] = this->Normalise(p[x * c + k]);
@@ -236,7 +238,7 @@ public:
     }
     for (int x = 0; x < width; ++x)
     {
-      this->Pixel(p + x * c, depth ? depth + x : nullptr, features + x, width);
+      this->Pixel(p + x * c, depth ? depth + x : nullptr, features + x, stride);
     }
   }
 
@@ -321,10 +323,10 @@ private:
   // LAB features (section 3.2 of Biri et al.): L/100, a/100, b/100 planes, then alpha. Grey
   // images are grey sRGB (R = G = B). Plane by plane: XYZ relative to white (from tables for
   // one-byte types), then f in branch-free loops, which vectorise, then L, a and b.
-  void LabRow(const T* p, int width, Acc* features) const
+  void LabRow(const T* p, int width, Acc* features, int stride) const
   {
     const int c = this->Layout.Components;
-    Acc* planes[3] = { features, features + width, features + 2 * static_cast<size_t>(width) };
+    Acc* planes[3] = { features, features + stride, features + 2 * static_cast<size_t>(stride) };
     const int second = c >= 3 ? 1 : 0; // grey: the one channel is R, G and B
     const int third = c >= 3 ? 2 : 0;
     // A pixel equal to the one before it takes its features: only the first pixel of each run
@@ -421,7 +423,7 @@ private:
     }
     if (this->Layout.HasAlpha)
     {
-      Acc* alpha = features + 3 * static_cast<size_t>(width);
+      Acc* alpha = features + 3 * static_cast<size_t>(stride);
       for (int x = 0; x < width; ++x)
       {
         alpha[x] = this->Normalise(p[x * c + c - 1]);
@@ -441,7 +443,7 @@ private:
         {
           for (int k = 0; k < this->Layout.Count; ++k)
           {
-            features[k * static_cast<size_t>(width) + x] = std::numeric_limits<Acc>::quiet_NaN();
+            features[k * static_cast<size_t>(stride) + x] = std::numeric_limits<Acc>::quiet_NaN();
           }
         }
       }

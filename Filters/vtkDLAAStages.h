@@ -13,12 +13,17 @@
  * - the luminosity of every pixel (slide 43: REC709 or the green channel);
  * - the blend masks mx (horizontal edges, on the band's rows and 8 columns each side) and my
  *   (vertical edges, on the band's columns and 8 rows each side): high-pass, contrast curve,
- *   normalisation by the blur's luminosity (slides 21 to 23, 43);
+ *   normalisation by the blur's luminosity (slides 21 to 23, 43), in chunks of 8 pixels, set
+ *   to 0 without the filters where every pixel a chunk reads has one colour (a flat region);
  * - per output pixel, the short-edge result (slide 23), the long-edge masks (the 17-pixel means
  *   of mx and my, slides 26 to 29), the noise rejection (slide 32) and the luminosity-matching
- *   interpolation with the neighbours across the edge (slides 31, 45 to 47).
+ *   interpolation with the neighbours across the edge (slides 31, 45 to 47), for the pixels
+ *   that have a mask or may have a long edge (counts of the masks other than 0 in their
+ *   windows), eight pixels without either passed over at a time.
+ * The result is the same, bit for bit, as computing every mask and window everywhere.
  * Nothing full-size is allocated besides the output; each thread keeps its buffers (about
- * 5 x (64 + 20) rows of floats) for its next task and update.
+ * (components + 3) x (128 + 20) rows of floats and a few rows of bytes) for its next task and
+ * update.
  *
  * Rows and columns follow VTK's image layout: y grows towards the top of the displayed image,
  * so the neighbour "above" a pixel is the next row (y + 1).
@@ -36,6 +41,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -49,8 +56,11 @@ using vtkAntialiasingKit::Rect;
 constexpr int ShortEdgeRadius = 2;
 /** Pixels each way of the long-edge means (17 pixels). */
 constexpr int LongEdgeRadius = vtkDLAAOptions::LongEdgeRadius;
-/** Output rows per task: each task also reads Halo() rows each side. */
-constexpr int RowsPerTask = 64;
+/**
+ * Output rows per task: each task also reads Halo() rows each side and computes my on
+ * LongEdgeRadius rows each side (64 rows: 12 % slower at 1080p, one thread).
+ */
+constexpr int RowsPerTask = 128;
 
 /** The settings of one slice, from the options, the components and the value range. */
 struct Settings
@@ -135,6 +145,83 @@ inline Acc LuminosityMatch(Acc t, Acc lc, Acc ln)
 }
 
 /**
+ * row[i] += term(i) for i in [0, n), or with `first`, row[i] = 0 + term(i): the sums
+ * 0 + t0 + t1 + ... that the luminosity and the high-pass filters add up, in that order, without
+ * clearing the row first.
+ */
+template <typename Acc, typename Term>
+inline void AddTerms(Acc* row, int n, bool first, Term term)
+{
+  if (first)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      row[i] = Acc(0) + term(i);
+    }
+  }
+  else
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      row[i] += term(i);
+    }
+  }
+}
+
+/**
+ * For the N planes of one row (here) and of the row above it (above), whether each pixel
+ * i in [0, n) equals bit for bit the pixel right of it (right[i], i < n - 1) and the pixel above it
+ * (up[i]) in every plane.
+ */
+template <int N, typename Acc>
+inline void SameNeighbours(
+  const Acc* const* here, const Acc* const* above, int n, unsigned char* __restrict right,
+  unsigned char* __restrict up)
+{
+  using Bits = typename std::conditional<sizeof(Acc) == 4, std::uint32_t, std::uint64_t>::type;
+  auto bits = [](const Acc* p) {
+    Bits u;
+    std::memcpy(&u, p, sizeof(Acc));
+    return u;
+  };
+  const Acc* h[N];
+  const Acc* a[N];
+  for (int k = 0; k < N; ++k)
+  {
+    h[k] = here[k];
+    a[k] = above[k];
+  }
+  for (int i = 0; i < n - 1; ++i)
+  {
+    unsigned char sameRight = 1;
+    unsigned char sameUp = 1;
+    for (int k = 0; k < N; ++k)
+    {
+      const Bits v = bits(h[k] + i);
+      sameRight &= v == bits(h[k] + i + 1) ? 1 : 0;
+      sameUp &= v == bits(a[k] + i) ? 1 : 0;
+    }
+    right[i] = sameRight;
+    up[i] = sameUp;
+  }
+  unsigned char sameUp = 1;
+  for (int k = 0; k < N; ++k)
+  {
+    sameUp &= bits(h[k] + n - 1) == bits(a[k] + n - 1) ? 1 : 0;
+  }
+  up[n - 1] = sameUp;
+  right[n - 1] = 0;
+}
+
+/** Whether the 8 bytes at p are all 1. */
+inline bool AllSet8(const unsigned char* p)
+{
+  std::uint64_t v;
+  std::memcpy(&v, p, 8);
+  return v == 0x0101010101010101ull;
+}
+
+/**
  * DLAA on one slice of an image of type T: `input` points at the first pixel of setup.Input
  * (rows `inputRowStride` values apart), `output` at the first pixel of setup.Output (rows
  * packed). Pixels that the method leaves as they are (no blend, or a non-finite value among
@@ -206,8 +293,7 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
     const size_t myRowsSize = static_cast<size_t>(bandRows + 2 * longRadius) * width;
     const size_t mxSize = static_cast<size_t>(bandRows) * (width + 2 * longRadius);
     static thread_local std::vector<Acc> scratch;
-    const size_t sizes[] = { rowSize * rows, static_cast<size_t>(readWidth) * c, myRowsSize,
-      mxSize, 2 * static_cast<size_t>(width) };
+    const size_t sizes[] = { rowSize * rows, myRowsSize, mxSize };
     size_t needed = 0;
     for (size_t size : sizes)
     {
@@ -224,10 +310,8 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
       return p;
     };
     Acc* const band = take(sizes[0]);
-    Acc* const readBuffer = take(sizes[1]);
-    Acc* const my = take(sizes[2]);
-    Acc* const mx = take(sizes[3]);
-    Acc* const sums = take(sizes[4]);
+    Acc* const my = take(sizes[1]);
+    Acc* const mx = take(sizes[2]);
     auto plane = [&](int j, int k) { return band + rowSize * j + pw * k; };
     auto luma = [&](int j) { return band + rowSize * j + pw * c; };
 
@@ -238,25 +322,19 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
       const int y = std::min(std::max(y0 + j, in.Y0), in.Y1);
       const T* p = input + static_cast<vtkIdType>(y - in.Y0) * inputRowStride +
         static_cast<vtkIdType>(readX0 - in.X0) * c;
-      reader.Row(p, readWidth, nullptr, readBuffer);
+      reader.Row(p, readWidth, nullptr, plane(j, 0) + readOffset, paddedWidth);
       for (int k = 0; k < c; ++k)
       {
         Acc* dst = plane(j, k);
-        const Acc* src = readBuffer + static_cast<size_t>(readWidth) * k;
-        std::fill(dst, dst + readOffset, src[0]);
-        std::copy(src, src + readWidth, dst + readOffset);
-        std::fill(dst + readOffset + readWidth, dst + paddedWidth, src[readWidth - 1]);
+        std::fill(dst, dst + readOffset, dst[readOffset]);
+        std::fill(dst + readOffset + readWidth, dst + paddedWidth, dst[readOffset + readWidth - 1]);
       }
       Acc* l = luma(j);
-      std::fill(l, l + paddedWidth, Acc(0));
       for (int n = 0; n < lumaCount; ++n)
       {
         const Acc* ck = plane(j, lumaChannels[n]);
         const Acc w = lumaWeights[n];
-        for (int i = 0; i < paddedWidth; ++i)
-        {
-          l[i] += w * ck[i];
-        }
+        AddTerms(l, paddedWidth, n == 0, [&](int i) { return w * ck[i]; });
       }
       if (mayHoldNonFinite)
       {
@@ -279,37 +357,60 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
     // rows and longRadius columns each side of the output.
     const int myRows = bandRows + 2 * longRadius; // my row m is band row j = m + halo - longRadius
     const int mxWidth = width + 2 * longRadius; // mx column m is padded column i = m + halo - longRadius
-    for (int m = 0; m < myRows; ++m)
-    {
+    // The numerators of the masks at padded column i of row j: Lambda l(Hx) - Epsilon and
+    // Lambda l(Hy) - Epsilon, l(H) summed as 0 + t0 + t1 + ... (AddTerms).
+    auto xTerm = [](const Acc* ck, int i, Acc w) {
+      return w * std::abs(ck[i - 2] + ck[i - 1] + ck[i + 1] + ck[i + 2] - Acc(4) * ck[i]);
+    };
+    auto yTerm = [](const Acc* d2, const Acc* d1, const Acc* c0, const Acc* u1, const Acc* u2,
+                   int i, Acc w) {
+      return w * std::abs(d2[i] + d1[i] + u1[i] + u2[i] - Acc(4) * c0[i]);
+    };
+    auto myNumerator = [&](int j, int i) {
+      Acc sum = 0;
+      for (int n = 0; n < lumaCount; ++n)
+      {
+        const Acc term = xTerm(plane(j, lumaChannels[n]), i, lumaWeights[n] * Acc(0.25));
+        sum = n == 0 ? Acc(0) + term : sum + term;
+      }
+      return lambda * sum - epsilon;
+    };
+    auto mxNumerator = [&](int j, int i) {
+      Acc sum = 0;
+      for (int n = 0; n < lumaCount; ++n)
+      {
+        const int k = lumaChannels[n];
+        const Acc term = yTerm(plane(j - 2, k), plane(j - 1, k), plane(j, k), plane(j + 1, k),
+          plane(j + 2, k), i, lumaWeights[n] * Acc(0.25));
+        sum = n == 0 ? Acc(0) + term : sum + term;
+      }
+      return lambda * sum - epsilon;
+    };
+    // Columns [a, b) of my row m, and of mx row r.
+    auto myRange = [&](int m, int a, int b) {
       const int j = m + halo - longRadius;
       const Acc* l2 = luma(j - 2) + halo;
       const Acc* l1 = luma(j - 1) + halo;
       const Acc* l0 = luma(j) + halo;
       const Acc* u1 = luma(j + 1) + halo;
       const Acc* u2 = luma(j + 2) + halo;
-      Acc* row = my + static_cast<size_t>(m) * width;
-      std::fill(row, row + width, Acc(0)); // l(Hx), then the mask
+      Acc* row = my + static_cast<size_t>(m) * width; // l(Hx), then the mask
       for (int n = 0; n < lumaCount; ++n)
       {
-        const Acc* ck = plane(j, lumaChannels[n]) + halo;
+        const Acc* ck = plane(j, lumaChannels[n]) + halo + a;
         const Acc w = lumaWeights[n] * Acc(0.25);
-        for (int i = 0; i < width; ++i)
-        {
-          row[i] += w * std::abs(ck[i - 2] + ck[i - 1] + ck[i + 1] + ck[i + 2] - Acc(4) * ck[i]);
-        }
+        AddTerms(row + a, b - a, n == 0, [&](int i) { return xTerm(ck, i, w); });
       }
-      for (int i = 0; i < width; ++i)
+      for (int i = a; i < b; ++i)
       {
         const Acc blur = (l2[i] + l1[i] + u1[i] + u2[i] + Acc(2) * l0[i]) * sixth;
         row[i] = BlendMask(lambda * row[i] - epsilon, blur);
       }
-    }
-    for (int r = 0; r < bandRows; ++r)
-    {
+    };
+    auto mxRange = [&](int r, int a, int b) {
       const int j = r + halo;
-      const int first = halo - longRadius; // padded column of mx column 0
-      Acc* row = mx + static_cast<size_t>(r) * mxWidth;
-      std::fill(row, row + mxWidth, Acc(0)); // l(Hy), then the mask
+      const int first = halo - longRadius + a; // padded column of mx column a
+      Acc* row = mx + static_cast<size_t>(r) * mxWidth + a; // l(Hy), then the mask
       for (int n = 0; n < lumaCount; ++n)
       {
         const int k = lumaChannels[n];
@@ -319,17 +420,116 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
         const Acc* u1 = plane(j + 1, k) + first;
         const Acc* u2 = plane(j + 2, k) + first;
         const Acc w = lumaWeights[n] * Acc(0.25);
-        for (int i = 0; i < mxWidth; ++i)
-        {
-          row[i] += w * std::abs(d2[i] + d1[i] + u1[i] + u2[i] - Acc(4) * c0[i]);
-        }
+        AddTerms(row, b - a, n == 0, [&](int i) { return yTerm(d2, d1, c0, u1, u2, i, w); });
       }
       const Acc* l0 = luma(j) + first;
-      for (int i = 0; i < mxWidth; ++i)
+      for (int i = 0; i < b - a; ++i)
       {
         const Acc blur = (l0[i - 2] + l0[i - 1] + l0[i + 1] + l0[i + 2] + Acc(2) * l0[i]) * sixth;
         row[i] = BlendMask(lambda * row[i] - epsilon, blur);
       }
+    };
+
+    // Flat pixels. Most of a rendered image is regions of one colour, where the high-pass
+    // filters read equal values: the numerator is then the same for every pixel of the region,
+    // and where it is not above 0 (Epsilon > 0 and the usual Lambda: always), the mask is 0
+    // whatever the blur. Pixels equal bit for bit in the channels the luminosity reads give the
+    // same floats, so the masks are computed in chunks of 8 columns, skipped (set to 0) where
+    // every value the chunk's filters read is one colour and its numerator, computed once per
+    // run of such chunks, is not above 0. sameRight[j][i]: pixel i of band row j equals pixel
+    // i + 1; sameAbove[j][i]: it equals pixel i of row j + 1. (Tests of 8 bytes at a time may
+    // read a few bytes past what a chunk needs: they then ask more, never less.)
+    static thread_local std::vector<unsigned char> sameStorage;
+    sameStorage.resize(2 * pw * rows + 16);
+    unsigned char* const sameRight = sameStorage.data();
+    unsigned char* const sameAbove = sameRight + pw * rows;
+    // (The last row of sameAbove and the bytes past the rows may be read, never used.)
+    std::fill(sameAbove + pw * rows, sameAbove + pw * rows + 16, static_cast<unsigned char>(0));
+    for (int j = 0; j < rows; ++j)
+    {
+      const Acc* here[3];
+      const Acc* above[3];
+      for (int n = 0; n < lumaCount; ++n)
+      {
+        here[n] = plane(j, lumaChannels[n]);
+        above[n] = plane(std::min(j + 1, rows - 1), lumaChannels[n]);
+      }
+      unsigned char* right = sameRight + pw * j;
+      unsigned char* up = sameAbove + pw * j;
+      switch (lumaCount)
+      {
+        case 1:
+          SameNeighbours<1>(here, above, paddedWidth, right, up);
+          break;
+        case 2:
+          SameNeighbours<2>(here, above, paddedWidth, right, up);
+          break;
+        default:
+          SameNeighbours<3>(here, above, paddedWidth, right, up);
+          break;
+      }
+    }
+    constexpr int chunk = 8;
+    // Runs the chunks of one row of a mask: compute(a, b) the columns [a, b), flat(x0) whether
+    // chunk x0 is one colour (and one colour with the chunk before when that was flat too),
+    // numerator(x0) its numerator.
+    auto maskRow = [&](Acc* row, int count, auto compute, auto flat, auto numerator) {
+      int pending = 0; // the columns from here to the chunk are still to compute
+      bool zeroRun = false; // the chunk before was flat with a numerator not above 0
+      for (int x0 = 0; x0 < count; x0 += chunk)
+      {
+        const int x1 = std::min(x0 + chunk, count);
+        bool zero = false;
+        if (flat(x0))
+        {
+          zero = zeroRun || !(numerator(x0) > Acc(0));
+        }
+        if (zero)
+        {
+          compute(pending, x0);
+          std::fill(row + x0, row + x1, Acc(0));
+          pending = x1;
+        }
+        zeroRun = zero;
+      }
+      compute(pending, count);
+    };
+    for (int m = 0; m < myRows; ++m)
+    {
+      const int j = m + halo - longRadius;
+      const unsigned char* right = sameRight + pw * j + halo;
+      maskRow(
+        my + static_cast<size_t>(m) * width, width,
+        [&](int a, int b) {
+          if (a < b)
+          {
+            myRange(m, a, b);
+          }
+        },
+        // pixels x0 - 2 .. x0 + 9 (x0 - 2 .. x0 + 8 equal to the next)
+        [&](int x0) { return AllSet8(right + x0 - 2) && AllSet8(right + x0 + 1); },
+        [&](int x0) { return myNumerator(j, halo + x0); });
+    }
+    for (int r = 0; r < bandRows; ++r)
+    {
+      const int j = r + halo;
+      const int first = halo - longRadius;
+      const unsigned char* right = sameRight + pw * j + first;
+      maskRow(
+        mx + static_cast<size_t>(r) * mxWidth, mxWidth,
+        [&](int a, int b) {
+          if (a < b)
+          {
+            mxRange(r, a, b);
+          }
+        },
+        // pixels x0 - 1 .. x0 + 8 of rows j - 2 .. j + 2 (x0 - 1 joins the chunk before)
+        [&](int x0) {
+          const unsigned char* below = sameAbove + pw * (j - 2) + first + x0;
+          return AllSet8(right + x0 - 1) && right[x0 + 7] && AllSet8(below) &&
+            AllSet8(below + pw) && AllSet8(below + 2 * pw) && AllSet8(below + 3 * pw);
+        },
+        [&](int x0) { return mxNumerator(j, first + x0); });
     }
 
     // Pixels that read a non-finite value: those within the cross of radius 2 of one, and with
@@ -381,44 +581,105 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
     }
 
     // The output pixels: a copy of the input row, where the pixels that change are then
-    // written.
+    // written. A long-edge mask is above 0 only where the mean of its 17 blend masks is above
+    // 1/2: since no blend mask exceeds 1, only where at least 9 of them are not 0. Those counts
+    // (integers, exact in any order) are kept along the row (x) and down the columns (y, from
+    // row to row), and the sums, where a count allows a mask, are added up as the GPU pass's
+    // windows are, in the same order for every pixel whatever the band or piece. (A NaN mask
+    // counts as not 0; its sum is NaN and gives no long edge, as before.)
+    // (columns: the width in a local, which the byte stores below cannot alias, so that their
+    // loops vectorise.)
+    const int columns = width;
     std::vector<Acc> result(c);
-    Acc* ax = sums;         // sums of mx over the 17 pixels along x
-    Acc* ay = sums + width; // sums of my over the 17 pixels along y
+    static thread_local std::vector<unsigned char> countStorage;
+    countStorage.resize(4 * static_cast<size_t>(columns) + 2 * LongEdgeRadius + 8);
+    unsigned char* countY = countStorage.data(); // masks of my not 0 in each column's window
+    unsigned char* countX = countY + columns;      // masks of mx not 0 in each row window
+    unsigned char* active = countX + columns;      // 8 more: read 8 at a time
+    unsigned char* nonZeroX = active + columns + 8; // mx not 0, from column -LongEdgeRadius
+    if (s.LongEdges)
+    {
+      std::fill(countY, countY + columns, static_cast<unsigned char>(0));
+      for (int m = 0; m < 2 * LongEdgeRadius; ++m) // the first window but its last row
+      {
+        const Acc* row = my + static_cast<size_t>(m) * columns;
+        for (int x = 0; x < columns; ++x)
+        {
+          countY[x] += row[x] != Acc(0) ? 1 : 0;
+        }
+      }
+    }
+    auto windowSum = [](const Acc* center, ptrdiff_t stride) {
+      Acc sum = 0;
+      for (int d = -LongEdgeRadius; d <= LongEdgeRadius; ++d)
+      {
+        sum += center[d * stride];
+      }
+      return sum;
+    };
+    constexpr int fewestForLongEdge = LongEdgeRadius + 1;
     for (int r = 0; r < bandRows; ++r)
     {
       const int j = r + halo;
       const int y = y0 + j;
       const T* source = input + static_cast<vtkIdType>(y - in.Y0) * inputRowStride +
         static_cast<vtkIdType>(out.X0 - in.X0) * c;
-      T* target = output + (static_cast<size_t>(begin) + r) * width * c;
-      std::copy(source, source + static_cast<size_t>(width) * c, target);
+      T* target = output + (static_cast<size_t>(begin) + r) * columns * c;
+      std::copy(source, source + static_cast<size_t>(columns) * c, target);
       const Acc* mxRow = mx + static_cast<size_t>(r) * mxWidth + longRadius;
-      const Acc* myColumn = my + static_cast<size_t>(r + longRadius) * width;
+      const Acc* myColumn = my + static_cast<size_t>(r + longRadius) * columns;
       const Acc* l0 = luma(j) + halo;
       if (s.LongEdges)
       {
-        // Summed in the same order for every pixel, whatever the band or piece.
-        std::fill(ax, ax + 2 * width, Acc(0));
-        for (int d = -LongEdgeRadius; d <= LongEdgeRadius; ++d)
+        // Column windows: rows r .. r + 2 LongEdgeRadius of my; the one before left out below.
+        const Acc* enter = my + static_cast<size_t>(r + 2 * LongEdgeRadius) * columns;
+        for (int x = 0; x < columns; ++x)
         {
-          const Acc* m = mxRow + d;
-          for (int x = 0; x < width; ++x)
+          countY[x] += enter[x] != Acc(0) ? 1 : 0;
+        }
+        for (int i = 0; i < columns + 2 * LongEdgeRadius; ++i)
+        {
+          nonZeroX[i] = mxRow[i - LongEdgeRadius] != Acc(0) ? 1 : 0;
+        }
+        for (int x = 0; x < columns; ++x)
+        {
+          countX[x] = nonZeroX[x];
+        }
+        for (int d = 1; d <= 2 * LongEdgeRadius; ++d)
+        {
+          const unsigned char* f = nonZeroX + d;
+          for (int x = 0; x < columns; ++x)
           {
-            ax[x] += m[x];
+            countX[x] += f[x];
           }
         }
-        for (int d = -LongEdgeRadius; d <= LongEdgeRadius; ++d)
+        for (int x = 0; x < columns; ++x)
         {
-          const Acc* m = myColumn + static_cast<ptrdiff_t>(d) * width;
-          for (int x = 0; x < width; ++x)
-          {
-            ay[x] += m[x];
-          }
+          active[x] = (mxRow[x] != Acc(0)) | (myColumn[x] != Acc(0)) |
+            (countX[x] >= fewestForLongEdge) | (countY[x] >= fewestForLongEdge);
         }
       }
-      for (int x = 0; x < width; ++x)
+      else
       {
+        for (int x = 0; x < columns; ++x)
+        {
+          active[x] = (mxRow[x] != Acc(0)) | (myColumn[x] != Acc(0));
+        }
+      }
+      std::fill(active + columns, active + columns + 8, static_cast<unsigned char>(0));
+      for (int x = 0; x < columns; ++x)
+      {
+        std::uint64_t eight;
+        std::memcpy(&eight, active + x, 8);
+        if (eight == 0)
+        {
+          x += 7; // none of the 8 pixels changes
+          continue;
+        }
+        if (!active[x])
+        {
+          continue;
+        }
         const Acc mxp = mxRow[x];
         const Acc myp = myColumn[x];
         // The long-edge masks and the noise rejection.
@@ -426,15 +687,20 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
         bool alongX = false;
         if (s.LongEdges)
         {
-          const Acc mX = LongEdgeMask(ax[x] * mean);
-          const Acc mY = LongEdgeMask(ay[x] * mean);
-          if ((mX > Acc(0)) != (mY > Acc(0)))
+          const bool maybeX = countX[x] >= fewestForLongEdge;
+          const bool maybeY = countY[x] >= fewestForLongEdge;
+          if (maybeX || maybeY)
           {
-            alongX = mX > Acc(0);
-            longMask = alongX ? mX : mY;
+            const Acc mX = maybeX ? LongEdgeMask(windowSum(mxRow + x, 1) * mean) : Acc(0);
+            const Acc mY = maybeY ? LongEdgeMask(windowSum(myColumn + x, columns) * mean) : Acc(0);
+            if ((mX > Acc(0)) != (mY > Acc(0)))
+            {
+              alongX = mX > Acc(0);
+              longMask = alongX ? mX : mY;
+            }
           }
         }
-        const bool isFrozen = !frozen.empty() && frozen[static_cast<size_t>(r) * width + x];
+        const bool isFrozen = !frozen.empty() && frozen[static_cast<size_t>(r) * columns + x];
         if (isFrozen || (mxp == Acc(0) && myp == Acc(0) && longMask == Acc(0)))
         {
           continue; // copied
@@ -495,6 +761,14 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
         for (int k = 0; k < c; ++k)
         {
           target[x * c + k] = vtkAntialiasingKit::ConvertBlended<T>(lo + result[k] * range);
+        }
+      }
+      if (s.LongEdges)
+      {
+        const Acc* leave = my + static_cast<size_t>(r) * columns; // the window's first row
+        for (int x = 0; x < columns; ++x)
+        {
+          countY[x] -= leave[x] != Acc(0) ? 1 : 0;
         }
       }
     }
