@@ -2,10 +2,46 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkAntialiasingKit.h"
 
+#include "vtkDataArray.h"
+
+#include <cstdint>
 #include <thread>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 namespace vtkAntialiasingKit
 {
+//------------------------------------------------------------------------------
+void PreferHugePages(void* data, std::size_t bytes)
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  constexpr std::uintptr_t huge = std::uintptr_t(2) << 20;
+  const std::uintptr_t start = reinterpret_cast<std::uintptr_t>(data);
+  const std::uintptr_t begin = (start + huge - 1) & ~(huge - 1);
+  const std::uintptr_t end = (start + bytes) & ~(huge - 1);
+  if (data && end > begin)
+  {
+    // Advice only: where it is refused (no transparent huge pages), the pages stay small.
+    (void)madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+  }
+#else
+  (void)data;
+  (void)bytes;
+#endif
+}
+
+//------------------------------------------------------------------------------
+void PreferHugePages(vtkDataArray* array)
+{
+  if (array && array->GetNumberOfValues() > 0)
+  {
+    PreferHugePages(array->GetVoidPointer(0),
+      static_cast<std::size_t>(array->GetNumberOfValues()) * array->GetDataTypeSize());
+  }
+}
+
 //------------------------------------------------------------------------------
 Progress::Progress(
   std::function<void(double)> report, std::function<bool()> aborted, vtkIdType totalRows)

@@ -289,21 +289,15 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
     const size_t pw = static_cast<size_t>(paddedWidth);
     const size_t rowSize = pw * (c + 1); // c planes of channels, then the luminosity
     // Per-thread buffers, kept from task to task and update to update (pool threads live on),
-    // written before they are read.
+    // written before they are read; sized for the largest band at once (a thread's first band
+    // may be the slice's last, shorter one).
     const size_t myRowsSize = static_cast<size_t>(bandRows + 2 * longRadius) * width;
     const size_t mxSize = static_cast<size_t>(bandRows) * (width + 2 * longRadius);
-    static thread_local std::vector<Acc> scratch;
+    static thread_local vtkAntialiasingKit::ScratchBuffer<Acc> scratch;
     const size_t sizes[] = { rowSize * rows, myRowsSize, mxSize };
-    size_t needed = 0;
-    for (size_t size : sizes)
-    {
-      needed += size;
-    }
-    if (scratch.size() < needed)
-    {
-      scratch.resize(needed);
-    }
-    Acc* next = scratch.data();
+    const size_t largestBand = static_cast<size_t>(std::max(bandRows, std::min(RowsPerTask, out.Height())));
+    scratch.Reserve((rowSize + width + (width + 2 * longRadius)) * (largestBand + 2 * halo));
+    Acc* next = scratch.Get();
     auto take = [&next](size_t size) {
       Acc* p = next;
       next += size;
@@ -439,9 +433,9 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
     // run of such chunks, is not above 0. sameRight[j][i]: pixel i of band row j equals pixel
     // i + 1; sameAbove[j][i]: it equals pixel i of row j + 1. (Tests of 8 bytes at a time may
     // read a few bytes past what a chunk needs: they then ask more, never less.)
-    static thread_local std::vector<unsigned char> sameStorage;
-    sameStorage.resize(2 * pw * rows + 16);
-    unsigned char* const sameRight = sameStorage.data();
+    static thread_local vtkAntialiasingKit::ByteBuffer sameStorage;
+    sameStorage.Reserve(2 * pw * (largestBand + 2 * halo) + 16);
+    unsigned char* const sameRight = sameStorage.Get();
     unsigned char* const sameAbove = sameRight + pw * rows;
     // (The last row of sameAbove and the bytes past the rows may be read, never used.)
     std::fill(sameAbove + pw * rows, sameAbove + pw * rows + 16, static_cast<unsigned char>(0));
@@ -591,9 +585,9 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
     // loops vectorise.)
     const int columns = width;
     std::vector<Acc> result(c);
-    static thread_local std::vector<unsigned char> countStorage;
-    countStorage.resize(4 * static_cast<size_t>(columns) + 2 * LongEdgeRadius + 8);
-    unsigned char* countY = countStorage.data(); // masks of my not 0 in each column's window
+    static thread_local vtkAntialiasingKit::ByteBuffer countStorage;
+    countStorage.Reserve(4 * static_cast<size_t>(columns) + 2 * LongEdgeRadius + 8);
+    unsigned char* countY = countStorage.Get(); // masks of my not 0 in each column's window
     unsigned char* countX = countY + columns;      // masks of mx not 0 in each row window
     unsigned char* active = countX + columns;      // 8 more: read 8 at a time
     unsigned char* nonZeroX = active + columns + 8; // mx not 0, from column -LongEdgeRadius

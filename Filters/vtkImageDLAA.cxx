@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkImageDLAA.h"
 
+#include "vtkAntialiasingKit.h"
 #include "vtkDLAAOptions.h"
 #include "vtkDLAAStages.h"
 #include "vtkDataArray.h"
@@ -71,6 +72,7 @@ int vtkImageDLAA::RequestData(
   const int* whole = request.WholeExtent;
   output->SetExtent(request.OutputExtent);
   output->AllocateScalars(request.ScalarType, request.Components);
+  vtkAntialiasingKit::PreferHugePages(output->GetPointData()->GetScalars()); // (not yet written)
   output->GetPointData()->GetScalars()->SetName(request.Scalars->GetName());
   if (request.EmptyRequest)
   {

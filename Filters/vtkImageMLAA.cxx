@@ -152,6 +152,7 @@ int vtkImageMLAA::RequestData(
     {
       output->AllocateScalars(scalarType, components);
       output->GetPointData()->GetScalars()->SetName(scalars->GetName());
+      vtkAntialiasingKit::PreferHugePages(output->GetPointData()->GetScalars());
     }
   };
   if (request.EmptyRequest)

@@ -3,6 +3,7 @@
 #include "mlaaImageFile.h"
 #include "mlaaCrashReport.h"
 
+#include "vtkAntialiasingKit.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkPointData.h"
@@ -1272,6 +1273,8 @@ static ImageFile ReadImageFileUnguarded(
   file.Image->SetDimensions(spec.width, spec.height, 1);
   file.Image->AllocateScalars(vtkType, spec.nchannels);
   file.Image->GetPointData()->GetScalars()->SetName("Pixels");
+  // A batch reads each file in a process of its own, where every buffer is fresh memory.
+  vtkAntialiasingKit::PreferHugePages(file.Image->GetPointData()->GetScalars());
 
   // The file's top row goes to the image's last row, and so on down: start at the last row
   // and step backwards.
