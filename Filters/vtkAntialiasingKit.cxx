@@ -121,6 +121,43 @@ VTKMLAA_TARGET_CLONES void FromRelativeXYZ(double* x, double* y, double* z, int 
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+template <int C>
+inline void NormaliseChannels(
+  const unsigned char* p, int width, float lo, float inverseRange, float* planes, int stride)
+{
+  for (int x = 0; x < width; ++x)
+  {
+    for (int k = 0; k < C; ++k)
+    {
+      planes[k * stride + x] = (static_cast<float>(p[C * x + k]) - lo) * inverseRange;
+    }
+  }
+}
+}
+
+VTKMLAA_TARGET_CLONES void NormaliseBytes(const unsigned char* p, int width, int components,
+  float lo, float inverseRange, float* planes, int planeStride)
+{
+  switch (components)
+  {
+    case 1:
+      NormaliseChannels<1>(p, width, lo, inverseRange, planes, planeStride);
+      break;
+    case 2:
+      NormaliseChannels<2>(p, width, lo, inverseRange, planes, planeStride);
+      break;
+    case 3:
+      NormaliseChannels<3>(p, width, lo, inverseRange, planes, planeStride);
+      break;
+    default:
+      NormaliseChannels<4>(p, width, lo, inverseRange, planes, planeStride);
+      break;
+  }
+}
+
+//------------------------------------------------------------------------------
 FeatureLayout MakeFeatureLayout(int mode, int components)
 {
   FeatureLayout layout;

@@ -586,11 +586,12 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
     const int columns = width;
     std::vector<Acc> result(c);
     static thread_local vtkAntialiasingKit::ByteBuffer countStorage;
-    countStorage.Reserve(4 * static_cast<size_t>(columns) + 2 * LongEdgeRadius + 8);
+    countStorage.Reserve(5 * static_cast<size_t>(columns) + 4 * LongEdgeRadius + 8);
     unsigned char* countY = countStorage.Get(); // masks of my not 0 in each column's window
     unsigned char* countX = countY + columns;      // masks of mx not 0 in each row window
     unsigned char* active = countX + columns;      // 8 more: read 8 at a time
     unsigned char* nonZeroX = active + columns + 8; // mx not 0, from column -LongEdgeRadius
+    unsigned char* pairSums = nonZeroX + columns + 2 * LongEdgeRadius; // for countX
     if (s.LongEdges)
     {
       std::fill(countY, countY + columns, static_cast<unsigned char>(0));
@@ -635,17 +636,23 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
         {
           nonZeroX[i] = mxRow[i - LongEdgeRadius] != Acc(0) ? 1 : 0;
         }
+        // The windows' counts by doubling: sums of 2, 4, 8 and 16 flags, then the 17th.
+        static_assert(2 * LongEdgeRadius == 16, "a window is 16 + 1 pixels");
+        unsigned char* sums = pairSums;
+        for (int i = 0; i < columns + 15; ++i)
+        {
+          sums[i] = static_cast<unsigned char>(nonZeroX[i] + nonZeroX[i + 1]);
+        }
+        for (int step = 2, last = columns + 13; step <= 8; last -= 2 * step, step *= 2)
+        {
+          for (int i = 0; i < last; ++i) // (sums[i + step] is read before it is written)
+          {
+            sums[i] = static_cast<unsigned char>(sums[i] + sums[i + step]);
+          }
+        }
         for (int x = 0; x < columns; ++x)
         {
-          countX[x] = nonZeroX[x];
-        }
-        for (int d = 1; d <= 2 * LongEdgeRadius; ++d)
-        {
-          const unsigned char* f = nonZeroX + d;
-          for (int x = 0; x < columns; ++x)
-          {
-            countX[x] += f[x];
-          }
+          countX[x] = static_cast<unsigned char>(sums[x] + nonZeroX[x + 16]);
         }
         for (int x = 0; x < columns; ++x)
         {
