@@ -5,6 +5,13 @@
 namespace vtkDLAAStages
 {
 //------------------------------------------------------------------------------
+VTKMLAA_TARGET_CLONES void SameNeighbours(int planes, const float* const* here,
+  const float* const* above, int n, unsigned char* right, unsigned char* up)
+{
+  SameNeighbours<float>(planes, here, above, n, right, up);
+}
+
+//------------------------------------------------------------------------------
 Settings MakeSettings(vtkDLAAOptions* options, int components, double lo, double hi)
 {
   Settings s;

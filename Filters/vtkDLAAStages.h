@@ -213,6 +213,31 @@ inline void SameNeighbours(
   right[n - 1] = 0;
 }
 
+/** SameNeighbours<N> for N = planes (1 to 3). */
+template <typename Acc>
+inline void SameNeighbours(int planes, const Acc* const* here, const Acc* const* above, int n,
+  unsigned char* right, unsigned char* up)
+{
+  switch (planes)
+  {
+    case 1:
+      SameNeighbours<1>(here, above, n, right, up);
+      break;
+    case 2:
+      SameNeighbours<2>(here, above, n, right, up);
+      break;
+    default:
+      SameNeighbours<3>(here, above, n, right, up);
+      break;
+  }
+}
+
+/**
+ * SameNeighbours<N> for float planes (N = 1 to 3), with an AVX2 clone (VTKMLAA_TARGET_CLONES).
+ */
+VTKFILTERSMLAA_EXPORT void SameNeighbours(int planes, const float* const* here,
+  const float* const* above, int n, unsigned char* right, unsigned char* up);
+
 /** Whether the 8 bytes at p are all 1. */
 inline bool AllSet8(const unsigned char* p)
 {
@@ -450,18 +475,7 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
       }
       unsigned char* right = sameRight + pw * j;
       unsigned char* up = sameAbove + pw * j;
-      switch (lumaCount)
-      {
-        case 1:
-          SameNeighbours<1>(here, above, paddedWidth, right, up);
-          break;
-        case 2:
-          SameNeighbours<2>(here, above, paddedWidth, right, up);
-          break;
-        default:
-          SameNeighbours<3>(here, above, paddedWidth, right, up);
-          break;
-      }
+      SameNeighbours(lumaCount, here, above, paddedWidth, right, up);
     }
     constexpr int chunk = 8;
     // Runs the chunks of one row of a mask: compute(a, b) the columns [a, b), flat(x0) whether
