@@ -320,7 +320,8 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
     const size_t mxSize = static_cast<size_t>(bandRows) * (width + 2 * longRadius);
     static thread_local vtkAntialiasingKit::ScratchBuffer<Acc> scratch;
     const size_t sizes[] = { rowSize * rows, myRowsSize, mxSize };
-    const size_t largestBand = static_cast<size_t>(std::max(bandRows, std::min(RowsPerTask, out.Height())));
+    const size_t largestBand =
+      static_cast<size_t>(std::max(bandRows, std::min(RowsPerTask, out.Height())));
     scratch.Reserve((rowSize + width + (width + 2 * longRadius)) * (largestBand + 2 * halo));
     Acc* next = scratch.Get();
     auto take = [&next](size_t size) {
@@ -478,9 +479,9 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
       SameNeighbours(lumaCount, here, above, paddedWidth, right, up);
     }
     constexpr int chunk = 8;
-    // Runs the chunks of one row of a mask: compute(a, b) the columns [a, b), flat(x0) whether
-    // chunk x0 is one colour (and one colour with the chunk before when that was flat too),
-    // numerator(x0) its numerator.
+    // Runs the chunks of one row of a mask: compute(a, b) the columns [a, b) (a < b), flat(x0)
+    // whether chunk x0 is one colour (and one colour with the chunk before when that was flat
+    // too), numerator(x0) its numerator.
     auto maskRow = [&](Acc* row, int count, auto compute, auto flat, auto numerator) {
       int pending = 0; // the columns from here to the chunk are still to compute
       bool zeroRun = false; // the chunk before was flat with a numerator not above 0
@@ -494,13 +495,19 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
         }
         if (zero)
         {
-          compute(pending, x0);
+          if (pending < x0)
+          {
+            compute(pending, x0);
+          }
           std::fill(row + x0, row + x1, Acc(0));
           pending = x1;
         }
         zeroRun = zero;
       }
-      compute(pending, count);
+      if (pending < count)
+      {
+        compute(pending, count);
+      }
     };
     for (int m = 0; m < myRows; ++m)
     {
@@ -508,12 +515,7 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
       const unsigned char* right = sameRight + pw * j + halo;
       maskRow(
         my + static_cast<size_t>(m) * width, width,
-        [&](int a, int b) {
-          if (a < b)
-          {
-            myRange(m, a, b);
-          }
-        },
+        [&](int a, int b) { myRange(m, a, b); },
         // pixels x0 - 2 .. x0 + 9 (x0 - 2 .. x0 + 8 equal to the next)
         [&](int x0) { return AllSet8(right + x0 - 2) && AllSet8(right + x0 + 1); },
         [&](int x0) { return myNumerator(j, halo + x0); });
@@ -525,12 +527,7 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
       const unsigned char* right = sameRight + pw * j + first;
       maskRow(
         mx + static_cast<size_t>(r) * mxWidth, mxWidth,
-        [&](int a, int b) {
-          if (a < b)
-          {
-            mxRange(r, a, b);
-          }
-        },
+        [&](int a, int b) { mxRange(r, a, b); },
         // pixels x0 - 1 .. x0 + 8 of rows j - 2 .. j + 2 (x0 - 1 joins the chunk before)
         [&](int x0) {
           const unsigned char* below = sameAbove + pw * (j - 2) + first + x0;
