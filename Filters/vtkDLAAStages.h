@@ -40,6 +40,7 @@
 #include "vtkSMPTools.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -316,13 +317,17 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
     // Per-thread buffers, kept from task to task and update to update (pool threads live on),
     // written before they are read; sized for the largest band at once (a thread's first band
     // may be the slice's last, shorter one).
-    const size_t myRowsSize = static_cast<size_t>(bandRows + 2 * longRadius) * width;
-    const size_t mxSize = static_cast<size_t>(bandRows) * (width + 2 * longRadius);
+    // Values of the band's planes, my rows and mx rows for a band of n rows.
+    auto bandSizes = [&](int n) {
+      const size_t r = static_cast<size_t>(n);
+      return std::array<size_t, 3>{ rowSize * (r + 2 * halo), (r + 2 * longRadius) * width,
+        r * (width + 2 * longRadius) };
+    };
+    auto total = [](const std::array<size_t, 3>& a) { return a[0] + a[1] + a[2]; };
     static thread_local vtkAntialiasingKit::ScratchBuffer<Acc> scratch;
-    const size_t sizes[] = { rowSize * rows, myRowsSize, mxSize };
-    const size_t largestBand =
-      static_cast<size_t>(std::max(bandRows, std::min(RowsPerTask, out.Height())));
-    scratch.Reserve((rowSize + width + (width + 2 * longRadius)) * (largestBand + 2 * halo));
+    const std::array<size_t, 3> sizes = bandSizes(bandRows);
+    const int largestBand = std::max(bandRows, std::min(RowsPerTask, out.Height()));
+    scratch.Reserve(total(bandSizes(largestBand))); // (largestBand >= bandRows)
     Acc* next = scratch.Get();
     auto take = [&next](size_t size) {
       Acc* p = next;
@@ -460,7 +465,7 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
     // i + 1; sameAbove[j][i]: it equals pixel i of row j + 1. (Tests of 8 bytes at a time may
     // read a few bytes past what a chunk needs: they then ask more, never less.)
     static thread_local vtkAntialiasingKit::ByteBuffer sameStorage;
-    sameStorage.Reserve(2 * pw * (largestBand + 2 * halo) + 16);
+    sameStorage.Reserve(2 * pw * static_cast<size_t>(largestBand + 2 * halo) + 16);
     unsigned char* const sameRight = sameStorage.Get();
     unsigned char* const sameAbove = sameRight + pw * rows;
     // (The last row of sameAbove and the bytes past the rows may be read, never used.)
