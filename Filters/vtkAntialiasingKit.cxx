@@ -3,7 +3,9 @@
 #include "vtkAntialiasingKit.h"
 
 #include "vtkDataArray.h"
+#include "vtkSMPTools.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <thread>
 
@@ -13,6 +15,13 @@
 
 namespace vtkAntialiasingKit
 {
+//------------------------------------------------------------------------------
+int BandRowsPerTask(int rows)
+{
+  const int threads = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
+  return std::max(RowsPerTask, std::min(128, rows / (4 * threads)));
+}
+
 //------------------------------------------------------------------------------
 void PreferHugePages(void* data, std::size_t bytes)
 {

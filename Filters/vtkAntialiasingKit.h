@@ -84,6 +84,14 @@ VTKFILTERSMLAA_EXPORT void NormaliseBytes(const unsigned char* p, int width, int
 /** Rows per task of the stages' threaded loops. */
 constexpr int RowsPerTask = 32;
 
+/**
+ * Rows per task for a stage whose tasks also work on rows beyond their own (halos, scans that
+ * start before the band): tasks of more rows do less of that work again, as long as every
+ * thread has several tasks to balance the load (four each, between RowsPerTask and 128 rows,
+ * for an extent of `rows` rows).
+ */
+VTKFILTERSMLAA_EXPORT int BandRowsPerTask(int rows);
+
 //------------------------------------------------------------------------------
 /** A rectangle of pixels of one slice, bounds included. */
 struct Rect

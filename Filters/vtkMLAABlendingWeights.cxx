@@ -794,8 +794,10 @@ void ComputeBlendingWeights(const EdgesBuffer& edges, const Rect& whole,
   const int edgesWidth = edges.Extent.Width();
   // With run lengths, each task takes a band of rows at least as high as the maximum distance,
   // so that counting a band's column lengths, which reads up to that far beyond it, costs at most
-  // twice what counting them over the whole extent would.
-  const int bandHeight = runs ? std::max(RowsPerTask, maxDistance) : RowsPerTask;
+  // twice what counting them over the whole extent would; higher bands, where there are enough
+  // of them for the threads, cost less again (BandRowsPerTask).
+  const int bandHeight =
+    runs ? std::max(BandRowsPerTask(r.Height()), maxDistance) : RowsPerTask;
   const vtkIdType bands = (r.Height() + bandHeight - 1) / bandHeight;
   vtkSMPTools::For(0, bands, 1, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType band = begin; band < end; ++band)
@@ -855,15 +857,10 @@ void ComputeBlendingWeights(const EdgesBuffer& edges, const Rect& whole,
         // not written.
         for (int x = r.X0; x <= r.X1;)
         {
-          if (x + 16 <= r.X1 + 1)
+          if (x + 16 <= r.X1 + 1 && !AnyByte32(e + 2 * (x - r.X0)))
           {
-            std::uint64_t words[4];
-            std::memcpy(words, e + 2 * (x - r.X0), sizeof(words));
-            if ((words[0] | words[1] | words[2] | words[3]) == 0)
-            {
-              x += 16;
-              continue;
-            }
+            x += 16;
+            continue;
           }
           if (x + 4 <= r.X1 + 1)
           {

@@ -81,6 +81,18 @@ VTKFILTERSMLAA_EXPORT void DetectEdges(const std::function<void(int, Acc*)>& rea
   const EdgeSettings& settings, EdgesBuffer& edges, Progress& progress);
 
 
+// Whether any of the 32 bytes at p (the edgels of 16 pixels) is set: four 8-byte words, read
+// into registers.
+inline bool AnyByte32(const unsigned char* p)
+{
+  std::uint64_t a, b, c, d;
+  std::memcpy(&a, p, 8);
+  std::memcpy(&b, p + 8, 8);
+  std::memcpy(&c, p + 16, 8);
+  std::memcpy(&d, p + 24, 8);
+  return (a | b | c | d) != 0;
+}
+
 // Whether any of the n pixels of an edges row at e has a left edgel (Which = 0) or a top one
 // (Which = 1), eight bytes (four pixels) at a time. The masks select each pixel's first or
 // second byte on little-endian machines (as BlendRow's skip assumes); elsewhere every byte
