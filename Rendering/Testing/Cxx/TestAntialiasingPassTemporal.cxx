@@ -25,6 +25,9 @@
 //   again when the camera stops;
 // - the still after an orbit (three orbits of the thin-structures scene) converges to within
 //   32/255 of a still from a reset history;
+// - a fast camera: under a parallel camera panned 20 pixels in one frame, the history is not read
+//   (the result is exactly the single-frame pass's render of that view), while a 2-pixel pan
+//   still blends it (the result differs from that render);
 // - resets: a resize, a changed actor colour, a changed input and switching Temporal off and on
 //   each give the same image as a new pass's first render (the history is discarded, the jitter
 //   sequence restarts), and so does an actor moving while the camera moves; an actor that only
@@ -648,6 +651,84 @@ void StillAfterOrbit(const PassMethod& method, MessageObserver* messages)
   StopPass(renderer, window);
 }
 
+// A pan of the camera by `pixels` pixels to the right (parallel projection: every point moves
+// by that much on the screen).
+void Pan(vtkCamera* camera, double pixels)
+{
+  const double shift = pixels * 2.0 * camera->GetParallelScale() / Height;
+  double position[3], focal[3];
+  camera->GetPosition(position);
+  camera->GetFocalPoint(focal);
+  camera->SetPosition(position[0] + shift, position[1], position[2]);
+  camera->SetFocalPoint(focal[0] + shift, focal[1], focal[2]);
+}
+
+// A point that moved 16 pixels or more since the last frame takes the current frame alone (its
+// history would be mostly reprojection error), one that moved a few pixels keeps some history.
+// The scene: spheres over a textured panel, a parallel camera; the result after each pan compared
+// with the single-frame pass's render of the same view.
+void FastCamera(const PassMethod& method, MessageObserver* messages)
+{
+  auto window = vtkMLAAScenes::NewOffscreenWindow(Width, Height);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  vtkActor* sphere = nullptr;
+  SphereScene(renderer, sphere);
+  AddSphere(renderer, 1.0, 0.8)->GetProperty()->SetColor(0.3, 0.8, 0.4);
+  vtkNew<vtkImageCanvasSource2D> canvas;
+  canvas->SetScalarTypeToUnsignedChar();
+  canvas->SetNumberOfScalarComponents(3);
+  canvas->SetExtent(0, 63, 0, 63, 0, 0);
+  canvas->SetDrawColor(230, 230, 230);
+  canvas->FillBox(0, 63, 0, 63);
+  canvas->SetDrawColor(30, 30, 30);
+  canvas->FillTriangle(4, 4, 60, 20, 12, 58);
+  vtkNew<vtkTexture> texture;
+  texture->SetInputConnection(canvas->GetOutputPort());
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-6.0, -4.0, -1.0);
+  plane->SetPoint1(6.0, -4.0, -1.0);
+  plane->SetPoint2(-6.0, 4.0, -1.0);
+  vtkNew<vtkPolyDataMapper> planeMapper;
+  planeMapper->SetInputConnection(plane->GetOutputPort());
+  vtkNew<vtkActor> panel;
+  panel->SetMapper(planeMapper);
+  panel->SetTexture(texture);
+  panel->GetProperty()->SetAmbient(1.0);
+  panel->GetProperty()->SetDiffuse(0.0);
+  renderer->AddActor(panel);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->ParallelProjectionOn();
+  camera->SetParallelScale(2.5);
+  const double pans[2] = { 2.0, 20.0 };
+
+  // The single-frame pass's render of each view.
+  std::vector<vtkSmartPointer<vtkImageData>> single;
+  method.Use(renderer)->AddObserver(vtkCommand::ErrorEvent, messages);
+  for (double pixels : pans)
+  {
+    Pan(camera, pixels);
+    single.push_back(vtkMLAAScenes::Capture(window));
+  }
+  StopPass(renderer, window);
+  Pan(camera, -pans[0] - pans[1]);
+
+  vtkSmartPointer<vtkOpenGLAntialiasingPass> pass = UseTemporal(method, renderer, messages);
+  CaptureAfter(window, 4); // a still accumulation, whose history differs from the method's frame
+  Difference d[2];
+  for (int i = 0; i < 2; ++i)
+  {
+    Pan(camera, pans[i]);
+    d[i] = Compare(vtkMLAAScenes::Capture(window), single[i]);
+  }
+  std::cout << method.Name << ", fast camera: after a 2-pixel pan " << d[0].Pixels
+            << " pixels differ from the single-frame pass's render, after a 20-pixel pan "
+            << d[1].Pixels << " (largest difference " << d[1].Max << ")" << std::endl;
+  Check(d[0].Pixels > 20, "a 2-pixel pan blends the history", __FILE__, __LINE__);
+  Check(d[1].Pixels == 0, "a 20-pixel pan takes the current frame alone", __FILE__, __LINE__);
+  StopPass(renderer, window);
+}
+
 void Resets(const PassMethod& method, MessageObserver* messages)
 {
   auto window = vtkMLAAScenes::NewOffscreenWindow(Width, Height);
@@ -845,6 +926,7 @@ int TestAntialiasingPassTemporal(int, char*[])
     AnimatedActor(method, messages);
     CameraOrbit(method, messages);
     StillAfterOrbit(method, messages);
+    FastCamera(method, messages);
     Resets(method, messages);
     Picking(method, messages);
     Overlays(method, messages);
