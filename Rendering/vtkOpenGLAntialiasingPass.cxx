@@ -110,6 +110,9 @@ public:
   std::uint32_t JitterIndex = 0; // the point of StillJitter of the last render
   int Width = 0, Height = 0;
   double ViewProjection[16] = {}; // unjittered, of the last temporal render
+  // Where the camera looked from at that render, homogeneous: its position (w = 1), or, for a
+  // parallel projection, minus its direction of projection (a point at infinity, w = 0).
+  double Eye[4] = {};
   bool Parallel = false;
   std::vector<std::uint64_t> Scene;   // SceneSignature after the last render
   std::vector<std::uint64_t> Content; // the same without the actors' placement
@@ -117,6 +120,11 @@ public:
   // This render's decisions.
   Mode FrameMode = RESET;
   double Reprojection[16] = {}; // current to previous normalised device coordinates, transposed
+  // Current normalised device coordinates to world coordinates relative to the current eye
+  // (translated in double precision, so that large coordinates keep float's precision in the
+  // shader), transposed; and the previous eye in the same frame.
+  double ToPoint[16] = {};
+  double PreviousEye[4] = {};
   bool KeepUnchanged = false;   // actors moved under a still camera: see BeginTemporalFrame
   bool PreviousValid = false;   // Previous holds the last unjittered render of this size
   vtkCamera* JitteredCamera = nullptr;
@@ -1147,6 +1155,18 @@ void vtkOpenGLAntialiasingPass::BeginTemporalFrame(const vtkRenderState* s, cons
   viewProjection->DeepCopy(
     camera->GetCompositeProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1));
   const bool parallel = camera->GetParallelProjection() != 0;
+  double eye[4] = { 0.0, 0.0, 0.0, parallel ? 0.0 : 1.0 };
+  if (parallel)
+  {
+    camera->GetDirectionOfProjection(eye);
+    eye[0] = -eye[0];
+    eye[1] = -eye[1];
+    eye[2] = -eye[2];
+  }
+  else
+  {
+    camera->GetPosition(eye);
+  }
   // Current to previous normalised device coordinates: previous * inverse(current).
   vtkNew<vtkMatrix4x4> inverse;
   vtkMatrix4x4::Invert(viewProjection, inverse);
@@ -1179,6 +1199,24 @@ void vtkOpenGLAntialiasingPass::BeginTemporalFrame(const vtkRenderState* s, cons
     h.JitterIndex = 0; // the still accumulation that may follow starts from this frame
     reprojection->Transpose(); // vtkShaderProgram uploads the elements as GLSL's column order
     std::memcpy(h.Reprojection, reprojection->GetData(), sizeof(h.Reprojection));
+    // How far the direction of view turned at each point (the shader's ViewTurn).
+    vtkNew<vtkMatrix4x4> toPoint;
+    toPoint->DeepCopy(inverse);
+    for (int column = 0; column < 4; ++column)
+    {
+      for (int row = 0; row < 3; ++row)
+      {
+        toPoint->SetElement(row, column,
+          toPoint->GetElement(row, column) - eye[row] * eye[3] * toPoint->GetElement(3, column));
+      }
+    }
+    toPoint->Transpose();
+    std::memcpy(h.ToPoint, toPoint->GetData(), sizeof(h.ToPoint));
+    for (int i = 0; i < 3; ++i)
+    {
+      h.PreviousEye[i] = h.Eye[i] - eye[i] * eye[3] * h.Eye[3];
+    }
+    h.PreviousEye[3] = h.Eye[3];
   }
   else if (h.Accumulated >= this->ConvergedFrames)
   {
@@ -1196,6 +1234,7 @@ void vtkOpenGLAntialiasingPass::BeginTemporalFrame(const vtkRenderState* s, cons
     // A still camera keeps the matrices its accumulation started with, so that changes below
     // StillDisplacement cannot add up.
     std::memcpy(h.ViewProjection, viewProjection->GetData(), sizeof(h.ViewProjection));
+    std::memcpy(h.Eye, eye, sizeof(h.Eye));
   }
   h.Parallel = parallel;
   h.Width = frame.Width;
@@ -1404,6 +1443,19 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
           matrix[i] = static_cast<float>(h.Reprojection[i]);
         }
         program->SetUniformMatrix4x4("reprojection", matrix);
+        for (int i = 0; i < 16; ++i)
+        {
+          matrix[i] = static_cast<float>(h.ToPoint[i]);
+        }
+        program->SetUniformMatrix4x4("toPoint", matrix);
+        const float previousEye[4] = { static_cast<float>(h.PreviousEye[0]),
+          static_cast<float>(h.PreviousEye[1]), static_cast<float>(h.PreviousEye[2]),
+          static_cast<float>(h.PreviousEye[3]) };
+        program->SetUniform4f("previousEye", previousEye);
+        const float currentEye[4] = { static_cast<float>(h.Eye[0] * (1.0 - h.Eye[3])),
+          static_cast<float>(h.Eye[1] * (1.0 - h.Eye[3])),
+          static_cast<float>(h.Eye[2] * (1.0 - h.Eye[3])), static_cast<float>(h.Eye[3]) };
+        program->SetUniform4f("currentEye", currentEye);
       }
       if (keep)
       {

@@ -126,7 +126,9 @@ public:
    *   blended with weight TemporalWeight for the current frame where a pixel's history did not
    *   move, rising to 0.7 where it moved a pixel (each read between pixels blurs the history a
    *   little) and on to 1, the current frame alone, where it moved 16 pixels or more (a history
-   *   that moved far is mostly reprojection error);
+   *   that moved far is mostly reprojection error), or where the direction the point is seen from
+   *   turned 8 degrees or more since the last frame (rising in proportion below that: shading
+   *   and silhouettes change with the view, which reprojection does not follow);
    * - when actors (vtkActor) only move, turn, scale or are shown or hidden, under a still camera,
    *   the frame is not jittered and the history is kept where the method's frame (the pixel's
    *   3 x 3 neighbourhood) is the same as at the last unjittered render (pixels the motion did not reach keep what they accumulated
@@ -159,8 +161,8 @@ public:
    * Weight of the current frame in the blend while the camera moves (the history has 1 minus
    * it), for pixels whose history did not move; it rises linearly to 0.7 (or TemporalWeight if
    * larger) for pixels whose history moved one pixel since the last frame, and on to 1 for those
-   * that moved 16 pixels or more. Smaller is steadier and slower to follow. Default 0.1, clamped
-   * to [0.01, 1].
+   * that moved 16 pixels or more or whose direction of view turned 8 degrees or more. Smaller is
+   * steadier and slower to follow. Default 0.1, clamped to [0.01, 1].
    */
   vtkSetClampMacro(TemporalWeight, double, 0.01, 1.0);
   vtkGetMacro(TemporalWeight, double);

@@ -25,9 +25,10 @@
 //   again when the camera stops;
 // - the still after an orbit (three orbits of the thin-structures scene) converges to within
 //   32/255 of a still from a reset history;
-// - a fast camera: under a parallel camera panned 20 pixels in one frame, the history is not read
-//   (the result is exactly the single-frame pass's render of that view), while a 2-pixel pan
-//   still blends it (the result differs from that render);
+// - a fast camera: a parallel camera panned 20 pixels in one frame, or a perspective camera turned
+//   10 degrees about its focal point, does not read the history (the result is exactly the
+//   single-frame pass's render of that view), while a 2-pixel pan or a half-degree turn still
+//   blends it (the result differs from that render);
 // - resets: a resize, a changed actor colour, a changed input and switching Temporal off and on
 //   each give the same image as a new pass's first render (the history is discarded, the jitter
 //   sequence restarts), and so does an actor moving while the camera moves; an actor that only
@@ -56,6 +57,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <set>
 #include <vector>
 
@@ -663,10 +665,11 @@ void Pan(vtkCamera* camera, double pixels)
   camera->SetFocalPoint(focal[0] + shift, focal[1], focal[2]);
 }
 
-// A point that moved 16 pixels or more since the last frame takes the current frame alone (its
-// history would be mostly reprojection error), one that moved a few pixels keeps some history.
-// The scene: spheres over a textured panel, a parallel camera; the result after each pan compared
-// with the single-frame pass's render of the same view.
+// A point that moved 16 pixels or more since the last frame, or whose direction of view turned 8
+// degrees or more, takes the current frame alone (its history would be mostly reprojection error,
+// or shading and outlines seen from elsewhere); one that moved a few pixels keeps some history.
+// The scene: spheres over a textured panel; the result after each move compared with the
+// single-frame pass's render of the same view.
 void FastCamera(const PassMethod& method, MessageObserver* messages)
 {
   auto window = vtkMLAAScenes::NewOffscreenWindow(Width, Height);
@@ -698,34 +701,47 @@ void FastCamera(const PassMethod& method, MessageObserver* messages)
   panel->GetProperty()->SetDiffuse(0.0);
   renderer->AddActor(panel);
   vtkCamera* camera = renderer->GetActiveCamera();
+
+  // Two moves of the camera from a converged still: the first small, whose result blends the
+  // history (differs from the single-frame pass's render of that view), the second large, whose
+  // result is exactly that render.
+  auto check = [&](const char* what, const std::function<void(int)>& move) {
+    std::vector<vtkSmartPointer<vtkImageData>> single;
+    vtkNew<vtkCamera> saved;
+    saved->DeepCopy(camera);
+    method.Use(renderer)->AddObserver(vtkCommand::ErrorEvent, messages);
+    for (int i = 0; i < 2; ++i)
+    {
+      move(i);
+      single.push_back(vtkMLAAScenes::Capture(window));
+    }
+    StopPass(renderer, window);
+    camera->DeepCopy(saved);
+    vtkSmartPointer<vtkOpenGLAntialiasingPass> pass = UseTemporal(method, renderer, messages);
+    CaptureAfter(window, 4); // a still accumulation, whose history differs from the method's frame
+    Difference d[2];
+    for (int i = 0; i < 2; ++i)
+    {
+      move(i);
+      d[i] = Compare(vtkMLAAScenes::Capture(window), single[i]);
+    }
+    std::cout << method.Name << ", " << what << ": " << d[0].Pixels << " / " << d[1].Pixels
+              << " pixels differ from the single-frame pass's render (largest difference "
+              << d[1].Max << " after the large move)" << std::endl;
+    Check(d[0].Pixels > 20, "a small move blends the history", __FILE__, __LINE__);
+    Check(d[1].Pixels == 0, "a large move takes the current frame alone", __FILE__, __LINE__);
+    StopPass(renderer, window);
+    camera->DeepCopy(saved);
+  };
+  // A parallel camera panned 2, then 20 pixels: every point moves that much on the screen.
   camera->ParallelProjectionOn();
   camera->SetParallelScale(2.5);
-  const double pans[2] = { 2.0, 20.0 };
-
-  // The single-frame pass's render of each view.
-  std::vector<vtkSmartPointer<vtkImageData>> single;
-  method.Use(renderer)->AddObserver(vtkCommand::ErrorEvent, messages);
-  for (double pixels : pans)
-  {
-    Pan(camera, pixels);
-    single.push_back(vtkMLAAScenes::Capture(window));
-  }
-  StopPass(renderer, window);
-  Pan(camera, -pans[0] - pans[1]);
-
-  vtkSmartPointer<vtkOpenGLAntialiasingPass> pass = UseTemporal(method, renderer, messages);
-  CaptureAfter(window, 4); // a still accumulation, whose history differs from the method's frame
-  Difference d[2];
-  for (int i = 0; i < 2; ++i)
-  {
-    Pan(camera, pans[i]);
-    d[i] = Compare(vtkMLAAScenes::Capture(window), single[i]);
-  }
-  std::cout << method.Name << ", fast camera: after a 2-pixel pan " << d[0].Pixels
-            << " pixels differ from the single-frame pass's render, after a 20-pixel pan "
-            << d[1].Pixels << " (largest difference " << d[1].Max << ")" << std::endl;
-  Check(d[0].Pixels > 20, "a 2-pixel pan blends the history", __FILE__, __LINE__);
-  Check(d[1].Pixels == 0, "a 20-pixel pan takes the current frame alone", __FILE__, __LINE__);
+  check("pans of 2 and 20 pixels", [camera](int i) { Pan(camera, i == 0 ? 2.0 : 20.0); });
+  // A perspective camera turned about its focal point by 0.5, then 10 degrees: the view turns by
+  // that much at every point, while points near the focal point move less than 16 pixels.
+  camera->ParallelProjectionOff();
+  check("turns of 0.5 and 10 degrees",
+    [camera](int i) { camera->Azimuth(i == 0 ? 0.5 : 10.0); });
   StopPass(renderer, window);
 }
 
