@@ -316,6 +316,35 @@ vtkSmartPointer<vtkActor> AddSphere(vtkRenderer* renderer, double x, double radi
 }
 
 // A renderer with a flat background, a sphere and a fixed camera.
+// A panel at z = -1 from x0 to x1 and from -halfHeight to halfHeight, unlit, textured with 64 x 64
+// texels of light grey on which `draw` draws in dark grey.
+void AddPanel(vtkRenderer* renderer, double x0, double x1, double halfHeight,
+  const std::function<void(vtkImageCanvasSource2D*)>& draw)
+{
+  vtkNew<vtkImageCanvasSource2D> canvas;
+  canvas->SetScalarTypeToUnsignedChar();
+  canvas->SetNumberOfScalarComponents(3);
+  canvas->SetExtent(0, 63, 0, 63, 0, 0);
+  canvas->SetDrawColor(230, 230, 230);
+  canvas->FillBox(0, 63, 0, 63);
+  canvas->SetDrawColor(30, 30, 30);
+  draw(canvas);
+  vtkNew<vtkTexture> texture;
+  texture->SetInputConnection(canvas->GetOutputPort());
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(x0, -halfHeight, -1.0);
+  plane->SetPoint1(x1, -halfHeight, -1.0);
+  plane->SetPoint2(x0, halfHeight, -1.0);
+  vtkNew<vtkPolyDataMapper> planeMapper;
+  planeMapper->SetInputConnection(plane->GetOutputPort());
+  vtkNew<vtkActor> panel;
+  panel->SetMapper(planeMapper);
+  panel->SetTexture(texture);
+  panel->GetProperty()->SetAmbient(1.0);
+  panel->GetProperty()->SetDiffuse(0.0);
+  renderer->AddActor(panel);
+}
+
 void SphereScene(vtkRenderer* renderer, vtkActor*& sphere)
 {
   renderer->SetBackground(0.1, 0.2, 0.35);
@@ -324,6 +353,15 @@ void SphereScene(vtkRenderer* renderer, vtkActor*& sphere)
   camera->SetPosition(0.0, 0.0, 8.0);
   camera->SetFocalPoint(0.0, 0.0, 0.0);
   camera->SetClippingRange(4.0, 12.0);
+}
+
+// SphereScene with a second, green sphere at x = 1; the first sphere.
+vtkActor* TwoSpheres(vtkRenderer* renderer)
+{
+  vtkActor* sphere = nullptr;
+  SphereScene(renderer, sphere);
+  AddSphere(renderer, 1.0, 0.8)->GetProperty()->SetColor(0.3, 0.8, 0.4);
+  return sphere;
 }
 
 void MovingActor(const PassMethod& method, MessageObserver* messages)
@@ -397,34 +435,15 @@ void AnimatedActor(const PassMethod& method, MessageObserver* messages)
   SphereScene(renderer, moving);
   moving->SetScale(0.6);
   AddSphere(renderer, -1.6, 0.8)->GetProperty()->SetColor(0.3, 0.8, 0.4);
-  vtkNew<vtkImageCanvasSource2D> canvas;
-  canvas->SetScalarTypeToUnsignedChar();
-  canvas->SetNumberOfScalarComponents(3);
-  canvas->SetExtent(0, 63, 0, 63, 0, 0);
-  canvas->SetDrawColor(230, 230, 230);
-  canvas->FillBox(0, 63, 0, 63);
-  canvas->SetDrawColor(30, 30, 30);
-  for (int i = 0; i < 64; i += 8)
-  {
-    for (int j = (i / 8) % 2 * 8; j < 64; j += 16)
+  AddPanel(renderer, 0.4, 3.6, 2.5, [](vtkImageCanvasSource2D* canvas) {
+    for (int i = 0; i < 64; i += 8) // a checkerboard of 8 x 8 squares
     {
-      canvas->FillBox(i, i + 7, j, j + 7);
+      for (int j = (i / 8) % 2 * 8; j < 64; j += 16)
+      {
+        canvas->FillBox(i, i + 7, j, j + 7);
+      }
     }
-  }
-  vtkNew<vtkTexture> texture;
-  texture->SetInputConnection(canvas->GetOutputPort());
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(0.4, -2.5, -1.0);
-  plane->SetPoint1(3.6, -2.5, -1.0);
-  plane->SetPoint2(0.4, 2.5, -1.0);
-  vtkNew<vtkPolyDataMapper> planeMapper;
-  planeMapper->SetInputConnection(plane->GetOutputPort());
-  vtkNew<vtkActor> panel;
-  panel->SetMapper(planeMapper);
-  panel->SetTexture(texture);
-  panel->GetProperty()->SetAmbient(1.0);
-  panel->GetProperty()->SetDiffuse(0.0);
-  renderer->AddActor(panel);
+  });
   constexpr int Frames = 10;
   auto place = [&](int k) { moving->SetPosition(1.6, -1.2 + 0.25 * k, 0.0); };
 
@@ -675,31 +694,9 @@ void FastCamera(const PassMethod& method, MessageObserver* messages)
   auto window = vtkMLAAScenes::NewOffscreenWindow(Width, Height);
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
-  vtkActor* sphere = nullptr;
-  SphereScene(renderer, sphere);
-  AddSphere(renderer, 1.0, 0.8)->GetProperty()->SetColor(0.3, 0.8, 0.4);
-  vtkNew<vtkImageCanvasSource2D> canvas;
-  canvas->SetScalarTypeToUnsignedChar();
-  canvas->SetNumberOfScalarComponents(3);
-  canvas->SetExtent(0, 63, 0, 63, 0, 0);
-  canvas->SetDrawColor(230, 230, 230);
-  canvas->FillBox(0, 63, 0, 63);
-  canvas->SetDrawColor(30, 30, 30);
-  canvas->FillTriangle(4, 4, 60, 20, 12, 58);
-  vtkNew<vtkTexture> texture;
-  texture->SetInputConnection(canvas->GetOutputPort());
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(-6.0, -4.0, -1.0);
-  plane->SetPoint1(6.0, -4.0, -1.0);
-  plane->SetPoint2(-6.0, 4.0, -1.0);
-  vtkNew<vtkPolyDataMapper> planeMapper;
-  planeMapper->SetInputConnection(plane->GetOutputPort());
-  vtkNew<vtkActor> panel;
-  panel->SetMapper(planeMapper);
-  panel->SetTexture(texture);
-  panel->GetProperty()->SetAmbient(1.0);
-  panel->GetProperty()->SetDiffuse(0.0);
-  renderer->AddActor(panel);
+  TwoSpheres(renderer);
+  AddPanel(renderer, -6.0, 6.0, 4.0,
+    [](vtkImageCanvasSource2D* canvas) { canvas->FillTriangle(4, 4, 60, 20, 12, 58); });
   vtkCamera* camera = renderer->GetActiveCamera();
 
   // Two moves of the camera from a converged still: the first small, whose result blends the
@@ -742,7 +739,6 @@ void FastCamera(const PassMethod& method, MessageObserver* messages)
   camera->ParallelProjectionOff();
   check("turns of 0.5 and 10 degrees",
     [camera](int i) { camera->Azimuth(i == 0 ? 0.5 : 10.0); });
-  StopPass(renderer, window);
 }
 
 void Resets(const PassMethod& method, MessageObserver* messages)
@@ -750,9 +746,7 @@ void Resets(const PassMethod& method, MessageObserver* messages)
   auto window = vtkMLAAScenes::NewOffscreenWindow(Width, Height);
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
-  vtkActor* sphere = nullptr;
-  SphereScene(renderer, sphere);
-  AddSphere(renderer, 1.0, 0.8)->GetProperty()->SetColor(0.3, 0.8, 0.4);
+  vtkActor* sphere = TwoSpheres(renderer);
 
   // A new pass's first render, for the current window and scene.
   auto firstRender = [&]() {
