@@ -122,9 +122,10 @@ public:
   double Reprojection[16] = {}; // current to previous normalised device coordinates, transposed
   // Current normalised device coordinates to world coordinates relative to the current eye
   // (translated in double precision, so that large coordinates keep float's precision in the
-  // shader), transposed; and the previous eye in the same frame.
+  // shader), transposed; and the previous and current eyes in the same frame (RelativeEye).
   double ToPoint[16] = {};
   double PreviousEye[4] = {};
+  double CurrentEye[4] = {};
   bool KeepUnchanged = false;   // actors moved under a still camera: see BeginTemporalFrame
   bool PreviousValid = false;   // Previous holds the last unjittered render of this size
   vtkCamera* JitteredCamera = nullptr;
@@ -232,6 +233,18 @@ void StillJitter(std::uint32_t index, int frames, double offset[2])
 // Changes of the camera that move no point by more than this (in pixels) leave it still: a
 // vtkWindowToImageFilter that renders again recomputes the view angle in single precision.
 constexpr double StillDisplacement = 1e-3;
+
+// The homogeneous eye `eye` (a position, w = 1, or a point at infinity, w = 0) in world
+// coordinates translated so that the eye `origin` is at 0 when it is a position (a point at
+// infinity stays where it is).
+void RelativeEye(const double eye[4], const double origin[4], double relative[4])
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    relative[i] = eye[i] - origin[i] * origin[3] * eye[3];
+  }
+  relative[3] = eye[3];
+}
 
 // The largest displacement, in pixels of a width x height viewport, that `reprojection` (current to
 // previous normalised device coordinates, row-major) gives the corners and centre of the view
@@ -1199,24 +1212,19 @@ void vtkOpenGLAntialiasingPass::BeginTemporalFrame(const vtkRenderState* s, cons
     h.JitterIndex = 0; // the still accumulation that may follow starts from this frame
     reprojection->Transpose(); // vtkShaderProgram uploads the elements as GLSL's column order
     std::memcpy(h.Reprojection, reprojection->GetData(), sizeof(h.Reprojection));
-    // How far the direction of view turned at each point (the shader's ViewTurn).
-    vtkNew<vtkMatrix4x4> toPoint;
-    toPoint->DeepCopy(inverse);
-    for (int column = 0; column < 4; ++column)
-    {
-      for (int row = 0; row < 3; ++row)
-      {
-        toPoint->SetElement(row, column,
-          toPoint->GetElement(row, column) - eye[row] * eye[3] * toPoint->GetElement(3, column));
-      }
-    }
-    toPoint->Transpose();
-    std::memcpy(h.ToPoint, toPoint->GetData(), sizeof(h.ToPoint));
+    // How far the direction of view turned at each point (the shader's ViewTurn): the points
+    // and both eyes translated so that the current eye, when it is a position, is at 0.
+    vtkNew<vtkMatrix4x4> toEye;
     for (int i = 0; i < 3; ++i)
     {
-      h.PreviousEye[i] = h.Eye[i] - eye[i] * eye[3] * h.Eye[3];
+      toEye->SetElement(i, 3, -eye[i] * eye[3]);
     }
-    h.PreviousEye[3] = h.Eye[3];
+    vtkNew<vtkMatrix4x4> toPoint;
+    vtkMatrix4x4::Multiply4x4(toEye, inverse, toPoint);
+    toPoint->Transpose();
+    std::memcpy(h.ToPoint, toPoint->GetData(), sizeof(h.ToPoint));
+    RelativeEye(h.Eye, eye, h.PreviousEye);
+    RelativeEye(eye, eye, h.CurrentEye);
   }
   else if (h.Accumulated >= this->ConvergedFrames)
   {
@@ -1437,25 +1445,16 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
       {
         // Not jittered: the clamp's range.
         textures.Bind(program, "frameTexture", this->ColorTexture);
-        float matrix[16];
-        for (int i = 0; i < 16; ++i)
-        {
-          matrix[i] = static_cast<float>(h.Reprojection[i]);
-        }
-        program->SetUniformMatrix4x4("reprojection", matrix);
-        for (int i = 0; i < 16; ++i)
-        {
-          matrix[i] = static_cast<float>(h.ToPoint[i]);
-        }
-        program->SetUniformMatrix4x4("toPoint", matrix);
-        const float previousEye[4] = { static_cast<float>(h.PreviousEye[0]),
-          static_cast<float>(h.PreviousEye[1]), static_cast<float>(h.PreviousEye[2]),
-          static_cast<float>(h.PreviousEye[3]) };
-        program->SetUniform4f("previousEye", previousEye);
-        const float currentEye[4] = { static_cast<float>(h.Eye[0] * (1.0 - h.Eye[3])),
-          static_cast<float>(h.Eye[1] * (1.0 - h.Eye[3])),
-          static_cast<float>(h.Eye[2] * (1.0 - h.Eye[3])), static_cast<float>(h.Eye[3]) };
-        program->SetUniform4f("currentEye", currentEye);
+        // The reprojection and the view's turn (in single precision, as GLSL takes them).
+        float values[16];
+        auto single = [&values](const double* v, int n) {
+          std::copy(v, v + n, values);
+          return values;
+        };
+        program->SetUniformMatrix4x4("reprojection", single(h.Reprojection, 16));
+        program->SetUniformMatrix4x4("toPoint", single(h.ToPoint, 16));
+        program->SetUniform4f("previousEye", single(h.PreviousEye, 4));
+        program->SetUniform4f("currentEye", single(h.CurrentEye, 4));
       }
       if (keep)
       {

@@ -109,12 +109,15 @@ float ViewTurn(vec3 ndc)
   return lengths > 0.0 ? degrees(acos(clamp(dot(now, before) / lengths, -1.0, 1.0))) : 0.0;
 }
 
-// The current frame's weight for a pixel whose history moved `moved` pixels since the last frame.
-float CurrentWeight(float moved)
+// The current frame's weight for a pixel whose history moved `moved` pixels since the last frame
+// and whose direction of view turned `turned` degrees.
+float CurrentWeight(float moved, float turned)
 {
   float weight =
     mix(currentWeight, max(currentWeight, MovingWeight), clamp(moved / MovingPixels, 0.0, 1.0));
-  return mix(weight, 1.0, clamp((moved - MovingPixels) / (HistoryPixels - MovingPixels), 0.0, 1.0));
+  weight =
+    mix(weight, 1.0, clamp((moved - MovingPixels) / (HistoryPixels - MovingPixels), 0.0, 1.0));
+  return mix(weight, 1.0, clamp(turned / HistoryDegrees, 0.0, 1.0));
 }
 
 // The history at `uv` (texture coordinates), interpolated by Catmull-Rom over the 4 x 4 texels
@@ -248,19 +251,20 @@ void main()
   }
   ivec2 nearest = Nearest(p, size, depth);
   vec2 here = (vec2(nearest) + 0.5) / vec2(size);
-  vec4 previous = reprojection * vec4(here * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
-  vec2 uv = (vec2(p) + 0.5) / vec2(size) + (previous.xy / previous.w * 0.5 + 0.5 - here);
+  vec3 ndc = vec3(here * 2.0 - 1.0, depth * 2.0 - 1.0);
+  vec4 previous = reprojection * vec4(ndc, 1.0);
+  vec2 motion = previous.xy / previous.w * 0.5 + 0.5 - here; // in texture coordinates
+  vec2 uv = (vec2(p) + 0.5) / vec2(size) + motion;
   if (previous.w <= 0.0 || any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))))
   {
     gl_FragData[0] = current; // a point outside the previous view: the current frame alone
     return;
   }
-  float weight = CurrentWeight(length((uv - (vec2(p) + 0.5) / vec2(size)) * vec2(size)));
-  weight = mix(weight, 1.0,
-    clamp(ViewTurn(vec3(here * 2.0 - 1.0, depth * 2.0 - 1.0)) / HistoryDegrees, 0.0, 1.0));
+  float weight = CurrentWeight(length(motion * vec2(size)), ViewTurn(ndc));
   if (weight >= 1.0)
   {
-    gl_FragData[0] = current; // moved HistoryPixels or more: the history is not read
+    // Moved HistoryPixels or turned HistoryDegrees or more: the history is not read.
+    gl_FragData[0] = current;
     return;
   }
   vec4 history = clamp(CatmullRom(historyTexture, uv, size), lo, hi);

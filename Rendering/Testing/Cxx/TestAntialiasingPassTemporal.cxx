@@ -315,7 +315,6 @@ vtkSmartPointer<vtkActor> AddSphere(vtkRenderer* renderer, double x, double radi
   return actor;
 }
 
-// A renderer with a flat background, a sphere and a fixed camera.
 // A panel at z = -1 from x0 to x1 and from -halfHeight to halfHeight, unlit, textured with 64 x 64
 // texels of light grey on which `draw` draws in dark grey.
 void AddPanel(vtkRenderer* renderer, double x0, double x1, double halfHeight,
@@ -345,6 +344,7 @@ void AddPanel(vtkRenderer* renderer, double x0, double x1, double halfHeight,
   renderer->AddActor(panel);
 }
 
+// A renderer with a flat background, a sphere and a fixed camera.
 void SphereScene(vtkRenderer* renderer, vtkActor*& sphere)
 {
   renderer->SetBackground(0.1, 0.2, 0.35);
