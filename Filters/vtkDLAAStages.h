@@ -17,7 +17,8 @@
  *   to 0 without the filters where every pixel a chunk reads has one colour (a flat region);
  * - per output pixel, the short-edge result (slide 23), the long-edge masks (the 17-pixel means
  *   of mx and my, slides 26 to 29), the noise rejection (slide 32) and the luminosity-matching
- *   interpolation with the neighbours across the edge (slides 31, 45 to 47), for the pixels
+ *   interpolation with the neighbours across the edge (slides 31, 45 to 47) towards the mean
+ *   luminosity along the edge over the step the pixel is on (StepHalfLength), for the pixels
  *   that have a mask or may have a long edge (counts of the masks other than 0 in their
  *   windows), eight pixels without either passed over at a time.
  * The result is the same, bit for bit, as computing every mask and window everywhere.
@@ -143,6 +144,42 @@ inline Acc LuminosityMatch(Acc t, Acc lc, Acc ln)
   }
   const Acc k = (t - lc) / d;
   return k > Acc(0) && k <= Acc(1) ? k : Acc(-1);
+}
+
+/**
+ * Half the length, from 1 to LongEdgeRadius pixels, of the step of a long edge that a pixel is
+ * on: the distance each way along the edge, the shorter of the two, over which both neighbours
+ * across the edge stay within half their difference in luminosity of what they are at the
+ * pixel. `across(d, side)` is the luminosity of the neighbour on side 0 (below or left) or 1
+ * (above or right) d pixels along the edge. The long-edge step takes the mean luminosity over
+ * that window rather than over all 17 pixels: a window longer than the step spreads the step's
+ * transition over the whole window, which on an edge a few pixels from vertical or horizontal
+ * (steps of 2 to 16 pixels) blurs it across more than the pixels it covers and makes it flicker
+ * as the edge moves (docs/measurements.md). The pass's vtkDLAAFS.glsl computes the same.
+ */
+template <typename Acc, typename Across>
+inline int StepHalfLength(const Across& across)
+{
+  const Acc a = across(0, 0);
+  const Acc b = across(0, 1);
+  const Acc tolerance = Acc(0.5) * std::abs(a - b);
+  auto left = [&](int d) {
+    return std::abs(across(d, 0) - a) > tolerance || std::abs(across(d, 1) - b) > tolerance;
+  };
+  int forward = LongEdgeRadius;
+  int backward = LongEdgeRadius;
+  for (int d = 1; d <= LongEdgeRadius; ++d)
+  {
+    if (forward == LongEdgeRadius && left(d))
+    {
+      forward = d - 1;
+    }
+    if (backward == LongEdgeRadius && left(-d))
+    {
+      backward = d - 1;
+    }
+  }
+  return std::max(1, std::min(forward, backward));
 }
 
 /**
@@ -736,15 +773,18 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
           result[k] = h + (by - h) * (myp * Acc(0.5));
         }
         // The long-edge step: the neighbour across the edge whose interpolation with the pixel
-        // reaches the luminosity of the 17-pixel mean along the edge.
+        // reaches the luminosity of the mean along the edge over the step the pixel is on.
         if (longMask > Acc(0))
         {
           Acc t = 0;
           const Acc* across[2];
           Acc acrossLuma[2];
+          int half = 0;
           if (alongX)
           {
-            for (int d = -LongEdgeRadius; d <= LongEdgeRadius; ++d)
+            half = StepHalfLength<Acc>(
+              [&](int d, int side) { return luma(side ? j + 1 : j - 1)[i + d]; });
+            for (int d = -half; d <= half; ++d)
             {
               t += l0[x + d];
             }
@@ -755,7 +795,9 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
           }
           else
           {
-            for (int d = -LongEdgeRadius; d <= LongEdgeRadius; ++d)
+            half = StepHalfLength<Acc>(
+              [&](int d, int side) { return luma(j + d)[side ? i + 1 : i - 1]; });
+            for (int d = -half; d <= half; ++d)
             {
               t += luma(j + d)[i];
             }
@@ -764,7 +806,7 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
             acrossLuma[0] = l0[x - 1];
             acrossLuma[1] = l0[x + 1];
           }
-          t *= mean;
+          t /= static_cast<Acc>(2 * half + 1);
           const Acc k0 = LuminosityMatch(t, l0[x], acrossLuma[0]);
           const Acc k1 = LuminosityMatch(t, l0[x], acrossLuma[1]);
           const int pick = k0 > Acc(0) && (k1 <= Acc(0) || k0 <= k1) ? 0 : (k1 > Acc(0) ? 1 : -1);

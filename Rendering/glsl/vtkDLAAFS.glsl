@@ -11,8 +11,9 @@
 //   s = lerp(lerp(c, Bx, mx), By, my / 2);
 // with DLAA_LONG_EDGES, Mx = saturate(2 a - 1) for a the mean of mx over p - 8 .. p + 8 along x,
 // My likewise along y; where exactly one of them is positive, the pixel is moved towards one of
-// its two neighbours across the edge until its luminosity is that of the 17-pixel mean colour
-// along the edge (the first neighbour, above or left, on a tie), and mixed into s by that mask.
+// its two neighbours across the edge until its luminosity is that of the mean colour along the
+// edge over p - h .. p + h (the first neighbour, above or left, on a tie), and mixed into s by
+// that mask. h, from 1 to 8, is the length of the step the pixel is on (stepHalfLength).
 // Pixels that read a colour that is not finite are left as they are: those whose 5-pixel cross
 // holds one and, with long edges, those with such a cross within 8 pixels along x or y. Exact
 // texel reads, clamped to the border.
@@ -71,6 +72,36 @@ vec4 towards(vec4 c, vec4 n0, vec4 n1, float t)
     }
   }
   return q;
+}
+
+// Half the length, from 1 to 8 pixels, of the step of a long edge along `along` that the pixel p
+// is on: the distance each way, the shorter of the two, over which both neighbours across the
+// edge (p - across and p + across) stay within half their difference in luminosity of what they
+// are at p. The mean along the edge over a window longer than the step would spread the step's
+// transition over the whole window: on an edge a few pixels from vertical or horizontal (steps of
+// 2 to 16 pixels) that blurs it across more than the pixels it covers, and as the edge moves the
+// steps' windows flicker. (vtkImageDLAA computes the same.)
+int stepHalfLength(ivec2 p, ivec2 along, ivec2 across)
+{
+  float a = luma(colorAt(p - across));
+  float b = luma(colorAt(p + across));
+  float tolerance = 0.5 * abs(a - b);
+  int forward = 8;
+  int backward = 8;
+  for (int i = 1; i <= 8; ++i)
+  {
+    if (forward == 8 && (abs(luma(colorAt(p + i * along - across)) - a) > tolerance ||
+                          abs(luma(colorAt(p + i * along + across)) - b) > tolerance))
+    {
+      forward = i - 1;
+    }
+    if (backward == 8 && (abs(luma(colorAt(p - i * along - across)) - a) > tolerance ||
+                           abs(luma(colorAt(p - i * along + across)) - b) > tolerance))
+    {
+      backward = i - 1;
+    }
+  }
+  return max(1, min(forward, backward));
 }
 
 void leave(vec4 c)
@@ -174,21 +205,29 @@ void main()
   // Long edges, unless both directions have one (noise, texture).
   if (longX > 0.0 && !(longY > 0.0))
   {
+    int h = stepHalfLength(p, ivec2(1, 0), ivec2(0, 1));
     vec4 sum = vec4(0.0);
     for (int i = -8; i <= 8; ++i)
     {
-      sum += colorAt(p + ivec2(i, 0));
+      if (abs(i) <= h)
+      {
+        sum += colorAt(p + ivec2(i, 0));
+      }
     }
-    result = mix(result, towards(c, above, below, luma(sum / 17.0)), longX);
+    result = mix(result, towards(c, above, below, luma(sum / float(2 * h + 1))), longX);
   }
   else if (longY > 0.0 && !(longX > 0.0))
   {
+    int h = stepHalfLength(p, ivec2(0, 1), ivec2(1, 0));
     vec4 sum = vec4(0.0);
     for (int i = -8; i <= 8; ++i)
     {
-      sum += colorAt(p + ivec2(0, i));
+      if (abs(i) <= h)
+      {
+        sum += colorAt(p + ivec2(0, i));
+      }
     }
-    result = mix(result, towards(c, left, right, luma(sum / 17.0)), longY);
+    result = mix(result, towards(c, left, right, luma(sum / float(2 * h + 1))), longY);
   }
 #endif
 

@@ -10,6 +10,8 @@
 #include "vtkImageDLAA.h"
 #include "vtkAntialiasingTestUtilities.h"
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 
 using namespace vtkMLAATest;
@@ -96,12 +98,34 @@ struct Reference
       return;
     }
     const bool alongX = MX > 0;
+    // The mean along the edge over the step the pixel is on: as far each way (the shorter of the
+    // two, 1 to 8 pixels) as both neighbours across the edge keep within half their difference
+    // of their luminosity beside the pixel.
+    auto across = [&](int d, int side) {
+      return alongX ? this->L(x + d, side ? y + 1 : y - 1) : this->L(side ? x + 1 : x - 1, y + d);
+    };
+    const double tolerance = std::abs(across(0, 0) - across(0, 1)) / 2;
+    int reach[2] = { 8, 8 };
+    for (int way = 0; way < 2; ++way)
+    {
+      for (int d = 1; d <= 8; ++d)
+      {
+        const int along = way ? -d : d;
+        if (std::abs(across(along, 0) - across(0, 0)) > tolerance ||
+          std::abs(across(along, 1) - across(0, 1)) > tolerance)
+        {
+          reach[way] = d - 1;
+          break;
+        }
+      }
+    }
+    const int half = std::max(1, std::min(reach[0], reach[1]));
     double t = 0;
-    for (int d = -8; d <= 8; ++d)
+    for (int d = -half; d <= half; ++d)
     {
       t += alongX ? this->L(x + d, y) : this->L(x, y + d);
     }
-    t /= 17;
+    t /= 2 * half + 1;
     const int n[2][2] = { { alongX ? x : x - 1, alongX ? y + 1 : y },
       { alongX ? x : x + 1, alongX ? y - 1 : y } };
     const double lc = this->L(x, y);
