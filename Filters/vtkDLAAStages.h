@@ -163,23 +163,20 @@ inline int StepHalfLength(const Across& across)
   const Acc a = across(0, 0);
   const Acc b = across(0, 1);
   const Acc tolerance = Acc(0.5) * std::abs(a - b);
-  auto left = [&](int d) {
-    return std::abs(across(d, 0) - a) > tolerance || std::abs(across(d, 1) - b) > tolerance;
+  // How far the step reaches in the direction `sign`, at most `limit`.
+  auto reach = [&](int sign, int limit) {
+    for (int d = 1; d <= limit; ++d)
+    {
+      if (std::abs(across(sign * d, 0) - a) > tolerance ||
+        std::abs(across(sign * d, 1) - b) > tolerance)
+      {
+        return d - 1;
+      }
+    }
+    return limit;
   };
-  int forward = LongEdgeRadius;
-  int backward = LongEdgeRadius;
-  for (int d = 1; d <= LongEdgeRadius; ++d)
-  {
-    if (forward == LongEdgeRadius && left(d))
-    {
-      forward = d - 1;
-    }
-    if (backward == LongEdgeRadius && left(-d))
-    {
-      backward = d - 1;
-    }
-  }
-  return std::max(1, std::min(forward, backward));
+  const int forward = reach(1, LongEdgeRadius);
+  return std::max(1, forward == 0 ? 0 : reach(-1, forward));
 }
 
 /**
