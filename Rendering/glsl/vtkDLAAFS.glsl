@@ -87,21 +87,26 @@ int stepHalfLength(ivec2 p, ivec2 along, ivec2 across)
   float b = luma(colorAt(p + across));
   float tolerance = 0.5 * abs(a - b);
   int forward = 8;
-  int backward = 8;
   for (int i = 1; i <= 8; ++i)
   {
-    if (forward == 8 && (abs(luma(colorAt(p + i * along - across)) - a) > tolerance ||
-                          abs(luma(colorAt(p + i * along + across)) - b) > tolerance))
+    if (abs(luma(colorAt(p + i * along - across)) - a) > tolerance ||
+      abs(luma(colorAt(p + i * along + across)) - b) > tolerance)
     {
       forward = i - 1;
-    }
-    if (backward == 8 && (abs(luma(colorAt(p - i * along - across)) - a) > tolerance ||
-                           abs(luma(colorAt(p - i * along + across)) - b) > tolerance))
-    {
-      backward = i - 1;
+      break;
     }
   }
-  return max(1, min(forward, backward));
+  int backward = forward; // the shorter of the two is all that is needed
+  for (int i = 1; i <= forward; ++i)
+  {
+    if (abs(luma(colorAt(p - i * along - across)) - a) > tolerance ||
+      abs(luma(colorAt(p - i * along + across)) - b) > tolerance)
+    {
+      backward = i - 1;
+      break;
+    }
+  }
+  return max(1, backward);
 }
 
 void leave(vec4 c)
@@ -207,12 +212,9 @@ void main()
   {
     int h = stepHalfLength(p, ivec2(1, 0), ivec2(0, 1));
     vec4 sum = vec4(0.0);
-    for (int i = -8; i <= 8; ++i)
+    for (int i = -h; i <= h; ++i)
     {
-      if (abs(i) <= h)
-      {
-        sum += colorAt(p + ivec2(i, 0));
-      }
+      sum += colorAt(p + ivec2(i, 0));
     }
     result = mix(result, towards(c, above, below, luma(sum / float(2 * h + 1))), longX);
   }
@@ -220,12 +222,9 @@ void main()
   {
     int h = stepHalfLength(p, ivec2(0, 1), ivec2(1, 0));
     vec4 sum = vec4(0.0);
-    for (int i = -8; i <= 8; ++i)
+    for (int i = -h; i <= h; ++i)
     {
-      if (abs(i) <= h)
-      {
-        sum += colorAt(p + ivec2(0, i));
-      }
+      sum += colorAt(p + ivec2(0, i));
     }
     result = mix(result, towards(c, left, right, luma(sum / float(2 * h + 1))), longY);
   }
