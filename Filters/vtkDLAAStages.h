@@ -47,6 +47,7 @@
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace vtkDLAAStages
@@ -147,36 +148,64 @@ inline Acc LuminosityMatch(Acc t, Acc lc, Acc ln)
 }
 
 /**
- * Half the length, from 1 to LongEdgeRadius pixels, of the step of a long edge that a pixel is
- * on: the distance each way along the edge, the shorter of the two, over which both neighbours
- * across the edge stay within half their difference in luminosity of what they are at the
- * pixel. `across(d, side)` is the luminosity of the neighbour on side 0 (below or left) or 1
- * (above or right) d pixels along the edge. The long-edge step takes the mean luminosity over
- * that window rather than over all 17 pixels: a window longer than the step spreads the step's
- * transition over the whole window, which on an edge a few pixels from vertical or horizontal
- * (steps of 2 to 16 pixels) blurs it across more than the pixels it covers and makes it flicker
- * as the edge moves (docs/measurements.md). The pass's vtkDLAAFS.glsl computes the same.
+ * How far the step of a long edge that a pixel is on reaches from it in the direction `sign`
+ * (1 or -1) along the edge, at most `limit` pixels. `at(d, k)` is the luminosity d pixels along
+ * the edge from the pixel and k (-1, 0 or 1) across it: below or left for -1, the pixel's own row
+ * or column for 0. The step goes on as far as both neighbours across the edge keep their
+ * luminosity, within half their difference; where the pixel has one of them on its side of the
+ * edge (within that tolerance) and the other not, it may also go on once through the place where
+ * the pixel's row (or column) and the other neighbour swap luminosities, which is where a line
+ * one pixel wide moves into the pixel's row: without it, the pixels beside such a line would see
+ * its step end at the very place where the line reaches them. The pass's vtkDLAAFS.glsl
+ * computes the same.
  */
-template <typename Acc, typename Across>
-inline int StepHalfLength(const Across& across)
+template <typename Acc, typename Luma>
+inline int StepReach(const Luma& at, int sign, int limit)
 {
-  const Acc a = across(0, 0);
-  const Acc b = across(0, 1);
-  const Acc tolerance = Acc(0.5) * std::abs(a - b);
-  // How far the step reaches in the direction `sign`, at most `limit`.
-  auto reach = [&](int sign, int limit) {
-    for (int d = 1; d <= limit; ++d)
+  Acc e0 = at(0, -1);
+  Acc e1 = at(0, 0);
+  Acc e2 = at(0, 1);
+  const Acc tolerance = Acc(0.5) * std::abs(e0 - e2);
+  auto near = [tolerance](Acc x, Acc y) { return std::abs(x - y) <= tolerance; };
+  bool swap = near(e0, e1) != near(e2, e1);
+  for (int d = 1; d <= limit; ++d)
+  {
+    const Acc m0 = at(sign * d, -1);
+    const Acc m1 = at(sign * d, 0);
+    const Acc m2 = at(sign * d, 1);
+    if (near(m0, e0) && near(m2, e2))
     {
-      if (std::abs(across(sign * d, 0) - a) > tolerance ||
-        std::abs(across(sign * d, 1) - b) > tolerance)
-      {
-        return d - 1;
-      }
+      continue;
     }
-    return limit;
-  };
-  const int forward = reach(1, LongEdgeRadius);
-  return std::max(1, forward == 0 ? 0 : reach(-1, forward));
+    if (swap && near(m0, e1) && near(m1, e0) && near(m2, e2))
+    {
+      swap = false;
+      std::swap(e0, e1);
+      continue;
+    }
+    if (swap && near(m2, e1) && near(m1, e2) && near(m0, e0))
+    {
+      swap = false;
+      std::swap(e2, e1);
+      continue;
+    }
+    return d - 1;
+  }
+  return limit;
+}
+
+/**
+ * Half the length, from 1 to LongEdgeRadius pixels, of the window along the edge over which the
+ * long-edge step takes its mean luminosity: the shorter of the two reaches of the step the pixel
+ * is on (StepReach). A window longer than the step spreads the step's transition over the whole
+ * window, which on an edge a few pixels from vertical or horizontal (steps of 2 to 16 pixels)
+ * blurs it across more than the pixels it covers and makes it flicker as the edge moves
+ * (docs/measurements.md).
+ */
+template <typename Acc, typename Luma>
+inline int StepHalfLength(const Luma& at)
+{
+  return std::max(1, StepReach<Acc>(at, -1, StepReach<Acc>(at, 1, LongEdgeRadius)));
 }
 
 /**
@@ -779,8 +808,7 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
           int half = 0;
           if (alongX)
           {
-            half = StepHalfLength<Acc>(
-              [&](int d, int side) { return luma(side ? j + 1 : j - 1)[i + d]; });
+            half = StepHalfLength<Acc>([&](int d, int k) { return luma(j + k)[i + d]; });
             for (int d = -half; d <= half; ++d)
             {
               t += l0[x + d];
@@ -792,8 +820,7 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
           }
           else
           {
-            half = StepHalfLength<Acc>(
-              [&](int d, int side) { return luma(j + d)[side ? i + 1 : i - 1]; });
+            half = StepHalfLength<Acc>([&](int d, int k) { return luma(j + d)[i + k]; });
             for (int d = -half; d <= half; ++d)
             {
               t += luma(j + d)[i];

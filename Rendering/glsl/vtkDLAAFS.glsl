@@ -74,39 +74,65 @@ vec4 towards(vec4 c, vec4 n0, vec4 n1, float t)
   return q;
 }
 
-// Half the length, from 1 to 8 pixels, of the step of a long edge along `along` that the pixel p
-// is on: the distance each way, the shorter of the two, over which both neighbours across the
-// edge (p - across and p + across) stay within half their difference in luminosity of what they
-// are at p. The mean along the edge over a window longer than the step would spread the step's
-// transition over the whole window: on an edge a few pixels from vertical or horizontal (steps of
-// 2 to 16 pixels) that blurs it across more than the pixels it covers, and as the edge moves the
-// steps' windows flicker. (vtkImageDLAA computes the same.)
+// How far the step of a long edge that the pixel p is on reaches from p in the direction
+// `along`, at most `limit` pixels: as far as the two neighbours across the edge (p - across and
+// p + across) keep their luminosity, within half their difference. One exception: where the
+// pixel has one of them on its side of the edge (within that tolerance) and the other not, the
+// step may go on once through the place where the pixel's row (or column) and the other
+// neighbour's swap luminosities, which is where a line one pixel wide moves into the pixel's row:
+// without it, the pixels beside such a line would see its step end at the very place where the
+// line reaches them. vtkDLAAStages::StepReach computes the same.
+bool near(float x, float y, float tolerance)
+{
+  return abs(x - y) <= tolerance;
+}
+
+int stepReach(ivec2 p, ivec2 along, ivec2 across, int limit)
+{
+  float e0 = luma(colorAt(p - across));
+  float e1 = luma(colorAt(p));
+  float e2 = luma(colorAt(p + across));
+  float tolerance = 0.5 * abs(e0 - e2);
+  bool swap = near(e0, e1, tolerance) != near(e2, e1, tolerance);
+  for (int i = 1; i <= limit; ++i)
+  {
+    ivec2 q = p + i * along;
+    float m0 = luma(colorAt(q - across));
+    float m1 = luma(colorAt(q));
+    float m2 = luma(colorAt(q + across));
+    if (near(m0, e0, tolerance) && near(m2, e2, tolerance))
+    {
+      continue;
+    }
+    if (swap && near(m0, e1, tolerance) && near(m1, e0, tolerance) && near(m2, e2, tolerance))
+    {
+      swap = false;
+      float t = e0;
+      e0 = e1;
+      e1 = t;
+      continue;
+    }
+    if (swap && near(m2, e1, tolerance) && near(m1, e2, tolerance) && near(m0, e0, tolerance))
+    {
+      swap = false;
+      float t = e2;
+      e2 = e1;
+      e1 = t;
+      continue;
+    }
+    return i - 1;
+  }
+  return limit;
+}
+
+// Half the length, from 1 to 8 pixels, of the window along the edge over which the long-edge
+// step takes its mean: the shorter of the step's two reaches from p. The mean along the edge over
+// a window longer than the step would spread the step's transition over the whole window: on an
+// edge a few pixels from vertical or horizontal (steps of 2 to 16 pixels) that blurs it across
+// more than the pixels it covers, and as the edge moves the steps' windows flicker.
 int stepHalfLength(ivec2 p, ivec2 along, ivec2 across)
 {
-  float a = luma(colorAt(p - across));
-  float b = luma(colorAt(p + across));
-  float tolerance = 0.5 * abs(a - b);
-  int forward = 8;
-  for (int i = 1; i <= 8; ++i)
-  {
-    if (abs(luma(colorAt(p + i * along - across)) - a) > tolerance ||
-      abs(luma(colorAt(p + i * along + across)) - b) > tolerance)
-    {
-      forward = i - 1;
-      break;
-    }
-  }
-  int backward = forward; // the shorter of the two is all that is needed
-  for (int i = 1; i <= forward; ++i)
-  {
-    if (abs(luma(colorAt(p - i * along - across)) - a) > tolerance ||
-      abs(luma(colorAt(p - i * along + across)) - b) > tolerance)
-    {
-      backward = i - 1;
-      break;
-    }
-  }
-  return max(1, backward);
+  return max(1, stepReach(p, -along, across, stepReach(p, along, across, 8)));
 }
 
 void leave(vec4 c)

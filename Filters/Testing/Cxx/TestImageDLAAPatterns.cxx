@@ -186,6 +186,46 @@ void GreenLuminosity()
 }
 }
 
+// A dark line one pixel wide on white, one row higher every 6 pixels (dark where y = 6 + x / 6):
+// its steps are shorter than the long-edge window, so the long-edge step takes its mean over the
+// step the pixel is on, not over 17 pixels.
+// - A line pixel 2 pixels into its run sees both neighbours across the line stay white for 2
+//   pixels each way and change beyond: its window is 5 dark pixels and it stays black (over 17
+//   pixels it would take the luminosity of 11 white pixels in 17: 108 where the run starts at
+//   x = 18).
+// - The white pixels beside the line's run on the row below, 3 before the line moves into
+//   their row and 2 after it leaves (x = 15 and 26 for the run at 18 .. 23), see the line below
+//   them (or above them) end where it moves into their row: the step goes on through that place
+//   (once), so their windows hold pixels of the run and they darken, as a slanted line's coverage
+//   does. Were the step to end there, they would keep their white (255).
+void ShortStepsOfAThinLine()
+{
+  auto image = MakeImage(80, 20, 3);
+  FillImage(image, [](int x, int y, int, int) { return Grey(y != 6 + x / 6); });
+  auto output = RunDLAA(image);
+  for (int m = 3; m <= 9; ++m)
+  {
+    const int start = 6 * m; // the run on row 6 + m: x = start .. start + 5
+    const int y = 6 + m;
+    for (int k = 0; k < 3; ++k)
+    {
+      if (!MLAA_CHECK(GetValue(output, start + 2, y, k) == 0))
+      {
+        std::cerr << "line pixel (" << start + 2 << ", " << y
+                  << "): " << GetValue(output, start + 2, y, k) << ", expected 0" << std::endl;
+      }
+      for (int x : { start - 3, start + 8 })
+      {
+        if (!MLAA_CHECK(GetValue(output, x, y, k) < 255))
+        {
+          std::cerr << "white pixel beside the run (" << x << ", " << y << ") unchanged"
+                    << std::endl;
+        }
+      }
+    }
+  }
+}
+
 int TestImageDLAAPatterns(int, char*[])
 {
   StraightEdgesAreUnchanged();
@@ -194,5 +234,6 @@ int TestImageDLAAPatterns(int, char*[])
   NoColourBleeding();
   FlatAndFaintNoise();
   GreenLuminosity();
+  ShortStepsOfAThinLine();
   return Result();
 }
