@@ -33,12 +33,22 @@
  *    the border, the masks of the positions beyond it are computed by the formulas of step 1
  *    at those positions, from clamped colour reads (not the border pixel's masks). Where
  *    both Mx and My are positive (noise, texture: slide 32) nothing more is done. Otherwise, for
- *    Mx > 0: the 17-pixel mean colour along x (p - 8 .. p + 8) is only a target luminosity t,
- *    never a colour (a distant colour would bleed); the pixel is moved towards the neighbour
- *    above (u) or below (d) until its luminosity is t: with k = (t - l(c)) / (l(n) - l(c)) for
+ *    Mx > 0: the mean colour along x over the step the pixel is on (p - h .. p + h, below) is
+ *    only a target luminosity t, never a colour (a distant colour would bleed); the pixel is
+ *    moved towards the neighbour above (u) or below (d) until its luminosity is t: with
+ *    k = (t - l(c)) / (l(n) - l(c)) for
  *    n = u and n = d, the first of u, d whose k lies in (0, 1] (the smaller k if both do) gives
  *    q = lerp(c, n, k), else q = c; and the result is lerp(s, q, Mx). For My > 0 the same along
  *    y with the left and right neighbours.
+ *    The window's half-length h (1 to 8) is how far the step reaches, the shorter of its two
+ *    reaches from p along the edge (for Mx, along x, with u and d the neighbours across): it goes
+ *    on while both u and d keep their luminosity within half of |l(u) - l(d)| (the tolerance),
+ *    and, where exactly one of u, d is within the tolerance of c, it may go on once through a
+ *    place where the pixel's row and the other neighbour swap luminosities (a line one pixel
+ *    wide moving into the pixel's row); h = max(1, shorter reach). The talk's 17-pixel mean is
+ *    this window for steps of 17 pixels and more; on shorter steps (edges a few pixels off
+ *    horizontal or vertical) a longer window would spread each step's transition across more
+ *    than the pixels it covers, and make it flicker in motion (docs/measurements.md).
  * Flat regions (every response 0) and faint noise (Lambda * response <= Epsilon) are left
  * exactly as they are. Pixels whose neighbourhood holds NaN or infinity are left as they are.
  * Details both back ends follow: "above" is the next row (y + 1, up on screen in VTK images and

@@ -9,8 +9,8 @@
  * 5-pixel blur along x where a high-pass filter across it finds a horizontal edge and along y
  * for a vertical one (slides 21 to 24), and on long edges, found as runs of such responses
  * (slides 26 to 29), an interpolation with the neighbour across the edge that gives the pixel
- * the luminosity of a 17-pixel mean along it, so that no distant colour bleeds in (slides 30,
- * 31, 45 to 47). Where both directions respond strongly (noise, texture) only the short-edge
+ * the luminosity of the mean along it over the step the pixel is on (at most 17 pixels), so
+ * that no distant colour bleeds in (slides 30, 31, 45 to 47). Where both directions respond strongly (noise, texture) only the short-edge
  * blur is applied (slide 32). Unlike MLAA it recognises no patterns, so a staircase that moves
  * by a fraction of a pixel changes the result by a fraction: steadier in motion, softer on still
  * images. The method is written down, for this filter and the GPU pass vtkOpenGLDLAAPass alike,

@@ -15,8 +15,9 @@
  *    texture extends 8 pixels beyond each side of the image, where masks are computed from
  *    colours clamped to the border (vtkDLAAMasksFS.glsl);
  * 2. the short-edge blur and, with LongEdges, the long-edge masks (exact 17-tap means of the
- *    masks), the noise rejection and the move of the pixel towards the luminosity of the
- *    17-pixel mean colour, written into the renderer's viewport (vtkDLAAFS.glsl). In place,
+ *    masks), the noise rejection and the move of the pixel towards the luminosity of the mean
+ *    colour along the edge over the step the pixel is on (at most 17 pixels), written into the
+ *    renderer's viewport (vtkDLAAFS.glsl). In place,
  *    only the pixels the method changes are written.
  * LongEdges and the luminosity function select compile-time variants of the shaders; Epsilon and
  * Lambda are uniforms. Share one vtkDLAAOptions object with vtkImageDLAA with SetOptions; the

@@ -60,7 +60,8 @@ void OnePixelStep()
 // each edge every mx is 1 (a horizontal high-pass of 0.5 over a blur of 0 or 1), so the long
 // mask is 1; the vertical masks respond at the steps only, so the long vertical mask is 0. On
 // the row of the step at X, a pixel x in X - 8 .. X + 7 has n = x - X + 9 bright pixels in its
-// 17-pixel window, t = n / 17, and moves to the neighbour across the edge (below for a dark
+// 17-pixel window (the steps, 20 pixels, are longer than the window: the neighbours across the
+// edge keep their colours 8 pixels each way), t = n / 17, and moves to the neighbour across the edge (below for a dark
 // pixel, above for a bright one) until its luminosity is t: 255 n / 17 = 15 n. Everything else
 // is unchanged (t equals the pixel's own luminosity).
 int LongEdgeExpected(int x, int y, bool& ramp)
