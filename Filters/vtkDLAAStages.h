@@ -177,16 +177,18 @@ inline int StepReach(const Luma& at, int sign, int limit)
     {
       continue;
     }
-    if (swap && near(m0, e1) && near(m1, e0) && near(m2, e2))
+    // The neighbour on one side and the pixel's row swapped, the other side's kept.
+    auto swapped = [&](Acc& side, Acc other, Acc mSide, Acc mOther) {
+      if (near(mSide, e1) && near(m1, side) && near(mOther, other))
+      {
+        std::swap(side, e1);
+        return true;
+      }
+      return false;
+    };
+    if (swap && (swapped(e0, e2, m0, m2) || swapped(e2, e0, m2, m0)))
     {
       swap = false;
-      std::swap(e0, e1);
-      continue;
-    }
-    if (swap && near(m2, e1) && near(m1, e2) && near(m0, e0))
-    {
-      swap = false;
-      std::swap(e2, e1);
       continue;
     }
     return d - 1;

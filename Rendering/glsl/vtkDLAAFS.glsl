@@ -87,6 +87,22 @@ bool near(float x, float y, float tolerance)
   return abs(x - y) <= tolerance;
 }
 
+// Whether the luminosities m (this side's neighbour, the pixel's row, the other side's) are those
+// the step had, e, with this side's neighbour and the pixel's row swapped; if so, e takes them.
+bool swapped(inout float side, inout float middle, float other, float mSide, float mMiddle,
+  float mOther, float tolerance)
+{
+  if (near(mSide, middle, tolerance) && near(mMiddle, side, tolerance) &&
+    near(mOther, other, tolerance))
+  {
+    float t = side;
+    side = middle;
+    middle = t;
+    return true;
+  }
+  return false;
+}
+
 int stepReach(ivec2 p, ivec2 along, ivec2 across, int limit)
 {
   float e0 = luma(colorAt(p - across));
@@ -104,20 +120,10 @@ int stepReach(ivec2 p, ivec2 along, ivec2 across, int limit)
     {
       continue;
     }
-    if (swap && near(m0, e1, tolerance) && near(m1, e0, tolerance) && near(m2, e2, tolerance))
+    if (swap &&
+      (swapped(e0, e1, e2, m0, m1, m2, tolerance) || swapped(e2, e1, e0, m2, m1, m0, tolerance)))
     {
       swap = false;
-      float t = e0;
-      e0 = e1;
-      e1 = t;
-      continue;
-    }
-    if (swap && near(m2, e1, tolerance) && near(m1, e2, tolerance) && near(m0, e0, tolerance))
-    {
-      swap = false;
-      float t = e2;
-      e2 = e1;
-      e1 = t;
       continue;
     }
     return i - 1;
