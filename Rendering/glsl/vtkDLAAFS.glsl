@@ -13,7 +13,7 @@
 // My likewise along y; where exactly one of them is positive, the pixel is moved towards one of
 // its two neighbours across the edge until its luminosity is that of the mean colour along the
 // edge over p - h .. p + h (the first neighbour, above or left, on a tie), and mixed into s by
-// that mask. h, from 1 to 8, is the length of the step the pixel is on (stepHalfLength).
+// that mask. h, from 1 to 8, is half the length of the step the pixel is on (stepHalfLength).
 // Pixels that read a colour that is not finite are left as they are: those whose 5-pixel cross
 // holds one and, with long edges, those with such a cross within 8 pixels along x or y. Exact
 // texel reads, clamped to the border.
@@ -79,7 +79,7 @@ vec4 towards(vec4 c, vec4 n0, vec4 n1, float t)
 // p + across) keep their luminosity, within half their difference. One exception: where the
 // pixel has one of them on its side of the edge (within that tolerance) and the other not, the
 // step may go on once through the place where the pixel's row (or column) and the other
-// neighbour's swap luminosities, which is where a line one pixel wide moves into the pixel's row:
+// neighbour swap luminosities, which is where a line one pixel wide moves into the pixel's row:
 // without it, the pixels beside such a line would see its step end at the very place where the
 // line reaches them. vtkDLAAStages::StepReach computes the same.
 bool near(float x, float y, float tolerance)
