@@ -98,6 +98,7 @@ public:
 
   vtkTextureObject* Current = nullptr;               // this frame, antialiased
   vtkTextureObject* Previous = nullptr; // the last unjittered render's frame, antialiased
+  vtkTextureObject* Motion = nullptr;   // the method's motion frame (HasMotionFrame)
   vtkTextureObject* Histories[2] = { nullptr, nullptr }; // RGBA32F, read and written in turn
   vtkTextureObject* Counts[2] = { nullptr, nullptr }; // R32F: frames each pixel's history holds
   vtkTextureObject* Mask = nullptr; // depth: the pixels a moving camera's blend writes (1)
@@ -135,6 +136,7 @@ public:
   {
     DeleteObject(this->Current, w);
     DeleteObject(this->Previous, w);
+    DeleteObject(this->Motion, w);
     DeleteObject(this->Histories[0], w);
     DeleteObject(this->Histories[1], w);
     DeleteObject(this->Counts[0], w);
@@ -152,14 +154,14 @@ public:
   vtkIdType TargetBytes(int colorBytes) const
   {
     return TextureBytes(this->Current, colorBytes) + TextureBytes(this->Previous, colorBytes) +
-      TextureBytes(this->Histories[0], 16) + TextureBytes(this->Histories[1], 16) +
-      TextureBytes(this->Counts[0], 4) + TextureBytes(this->Counts[1], 4) +
-      TextureBytes(this->Mask, 2);
+      TextureBytes(this->Motion, colorBytes) + TextureBytes(this->Histories[0], 16) +
+      TextureBytes(this->Histories[1], 16) + TextureBytes(this->Counts[0], 4) +
+      TextureBytes(this->Counts[1], 4) + TextureBytes(this->Mask, 2);
   }
   bool HoldsResources() const
   {
-    return this->Current || this->Previous || this->Histories[0] || this->Histories[1] ||
-      this->Counts[0] || this->Counts[1] || this->Mask || this->Framebuffer;
+    return this->Current || this->Previous || this->Motion || this->Histories[0] ||
+      this->Histories[1] || this->Counts[0] || this->Counts[1] || this->Mask || this->Framebuffer;
   }
 };
 
@@ -1332,6 +1334,18 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
     }
   }
   AllocateDepthTarget(h.Mask, width, height, vtkTextureObject::Fixed16);
+  // The method's motion frame (written at every frame that reads it).
+  const bool motionFrame = h.FrameMode == TemporalHistory::MOVING && !h.KeepUnchanged &&
+    this->HasMotionFrame();
+  if (motionFrame)
+  {
+    if (!h.Motion)
+    {
+      h.Motion = NewTexture(renWin);
+    }
+    AllocateColorTarget(
+      h.Motion, width, height, 4, frame.FloatColor ? VTK_FLOAT : VTK_UNSIGNED_CHAR, false);
+  }
 
   auto bindTarget = [&](vtkTextureObject* texture) {
     h.Framebuffer->Bind();
@@ -1357,6 +1371,13 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
     local.X = 0;
     local.Y = 0;
     bindTarget(h.Current);
+    if (motionFrame)
+    {
+      // The motion frame beside it, cleared or copied with it.
+      h.Framebuffer->AddColorAttachment(1, h.Motion);
+      DrawToAttachments(h.Framebuffer, 2);
+      local.MotionFrame = true;
+    }
     if (frame.Composite)
     {
       // Transparent black first: a composited image is written with premultiplied "over", which
@@ -1376,7 +1397,7 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
       local.InPlace = true;
       local.OwnTarget = h.Framebuffer;
     }
-    done = this->Antialias(local);
+    done = this->Antialias(local); // (bindTarget below detaches the motion frame)
   }
 
   // The blend into the other history.
@@ -1422,7 +1443,8 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
     }
     done = done &&
       this->ReadyQuad(renWin, h.BlendQuad, vtkAntialiasingTemporalFS,
-        Define("TEMPORAL_REPROJECT", reproject) + Define("TEMPORAL_KEEP_UNCHANGED", keep));
+        Define("TEMPORAL_REPROJECT", reproject) + Define("TEMPORAL_KEEP_UNCHANGED", keep) +
+          Define("TEMPORAL_MOTION_FRAME", reproject && motionFrame));
     if (done)
     {
       // While the scene is still, the frames averaged are the jittered renders themselves: their
@@ -1445,6 +1467,10 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
       {
         // Not jittered: the clamp's range.
         textures.Bind(program, "frameTexture", this->ColorTexture);
+        if (motionFrame)
+        {
+          textures.Bind(program, "motionTexture", h.Motion);
+        }
         // The reprojection and the view's turn (in single precision, as GLSL takes them).
         float values[16];
         auto single = [&values](const double* v, int n) {

@@ -128,7 +128,10 @@ public:
    *   little) and on to 1, the current frame alone, where it moved 16 pixels or more (a history
    *   that moved far is mostly reprojection error), or where the direction the point is seen from
    *   turned 8 degrees or more since the last frame (rising in proportion below that: shading
-   *   and silhouettes change with the view, which reprojection does not follow);
+   *   and silhouettes change with the view, which reprojection does not follow); where the
+   *   history moved a pixel or more and is read, a method with a motion frame (DLAA: its frame
+   *   without the short-edge blur) is blended with that frame instead, the history smoothing
+   *   the edges' staircases itself;
    * - when actors (vtkActor) only move, turn, scale or are shown or hidden, under a still camera,
    *   the frame is not jittered and the history is kept where the method's frame (the pixel's
    *   3 x 3 neighbourhood) is the same as at the last unjittered render (pixels the motion did not reach keep what they accumulated
@@ -298,6 +301,10 @@ protected:
     // it is bound, its colour attachment 0 is the target, and it may take a depth attachment
     // for a while; null otherwise.
     vtkOpenGLFramebufferObject* OwnTarget = nullptr;
+    // Temporal antialiasing with a moving camera, for a method with a motion frame
+    // (HasMotionFrame): the target has a second draw buffer (1), holding the delegate's image
+    // too when in place, into which the method writes its motion frame.
+    bool MotionFrame = false;
   };
 
   // /@{
@@ -308,6 +315,11 @@ protected:
   virtual bool UsesStraightAlpha() { return false; }
   // Whether the deferred overlays are drawn over the result (not over a debug image, say).
   virtual bool DrawsDeferredOverlays() { return true; }
+  // Whether the method writes a motion frame (Frame::MotionFrame) for temporal antialiasing:
+  // its result without the filtering that a history reprojected from pixels moving a pixel or
+  // more a frame does by itself, which the blend takes where the history moved that far
+  // (vtkAntialiasingTemporalFS.glsl). DLAA's is its frame without the short-edge blur.
+  virtual bool HasMotionFrame() { return false; }
   // Creates or resizes the subclass's targets; returns true when one was allocated afresh (the
   // framebuffer objects are then rebuilt).
   virtual bool PrepareMethodTargets(const Frame& frame) = 0;

@@ -174,7 +174,7 @@ bool vtkOpenGLDLAAPass::Filter(const Frame& frame)
     !frame.InPlace);
   const std::string defines = Define("DLAA_LUMA", this->Options->GetLumaFunction()) +
     Define("DLAA_LONG_EDGES", this->Options->GetLongEdges()) +
-    Define("DLAA_IN_PLACE", frame.InPlace);
+    Define("DLAA_IN_PLACE", frame.InPlace) + Define("DLAA_MOTION_FRAME", frame.MotionFrame);
   // In place, with long edges, only the squares of pixels that may change are drawn
   // (vtkDLAATilesVS.glsl): the others keep the delegate's image, which the target holds.
   // Otherwise every pixel is written.

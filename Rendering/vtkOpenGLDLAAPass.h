@@ -90,6 +90,8 @@ protected:
   void ReleaseMethodResources(vtkWindow* w) override;
   vtkIdType GetMethodTargetMemorySize() override;
   void SubstituteShaderSnippets(std::string& source) override;
+  // Temporal antialiasing's motion frame: the frame with long edges only (no short-edge blur).
+  bool HasMotionFrame() override { return true; }
 
 private:
   vtkOpenGLDLAAPass(const vtkOpenGLDLAAPass&) = delete;

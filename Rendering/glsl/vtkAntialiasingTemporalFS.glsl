@@ -24,6 +24,10 @@
 //                       (the current frame alone) at HistoryPixels and more; and it rises with
 //                       the angle the direction of view turned at the point, to 1 at
 //                       HistoryDegrees.
+//   TEMPORAL_MOTION_FRAME  (with TEMPORAL_REPROJECT) the method wrote a motion frame
+//                       (motionTexture; vtkOpenGLAntialiasingPass::HasMotionFrame): where the
+//                       history is read and moved a pixel or more, the blend takes it instead of
+//                       the method's frame (MotionFrameShare).
 //   TEMPORAL_MASK       (with TEMPORAL_REPROJECT) copies the current frame into the new
 //                       history at every pixel, and marks with depth 1 the pixels the
 //                       reprojecting blend does not discard (flatFrame), 0 the others, so that
@@ -60,6 +64,9 @@ uniform float currentWeight;
 #ifdef TEMPORAL_REPROJECT
 uniform mat4 reprojection;
 uniform sampler2D frameTexture; // this frame as the delegate rendered it (not antialiased)
+#ifdef TEMPORAL_MOTION_FRAME
+uniform sampler2D motionTexture; // the method's motion frame
+#endif
 // Current normalised device coordinates to the point's world coordinates relative to the current
 // eye; the eyes of this frame and the previous one in that frame, homogeneous (a parallel
 // projection's is a point at infinity, w = 0, opposite its direction of projection).
@@ -119,6 +126,25 @@ float CurrentWeight(float moved, float turned)
     mix(weight, 1.0, clamp((moved - MovingPixels) / (HistoryPixels - MovingPixels), 0.0, 1.0));
   return mix(weight, 1.0, clamp(turned / HistoryDegrees, 0.0, 1.0));
 }
+
+#ifdef TEMPORAL_MOTION_FRAME
+// How much of the method's motion frame replaces its frame, for a pixel whose history moved
+// `moved` pixels and whose current frame weighs `weight`. A method's filtering along an edge
+// (DLAA's short-edge blur) spreads each jump of the edge's staircase over the pixels beside it,
+// and re-forms with every move of the edge, which a single frame needs and a blend of frames
+// does not: a history that moves a pixel or more a frame holds the edge seen at other positions
+// of the pixel grid, so its blend with the frame smooths the jumps by itself, and the filtering
+// only adds its own flicker. So the motion frame (the method without that filtering) is taken in
+// full from MovingPixels on, and not at all where the history is not read (weight 1: it then
+// is the result alone, and needs the filtering) nor at rest (a still or slow edge's samples do
+// not move across pixels, and its jumps do not average out). Measured with DLAA on the orbit
+// scenes of mlaa-temporal at 0.2 to 2 degrees a frame (docs/measurements.md).
+float MotionFrameShare(float moved, float weight)
+{
+  return clamp(moved / MovingPixels, 0.0, 1.0) *
+    clamp((1.0 - weight) / (1.0 - MovingWeight), 0.0, 1.0);
+}
+#endif
 
 // The history at `uv` (texture coordinates), interpolated by Catmull-Rom over the 4 x 4 texels
 // around it: a bilinear read would blur the history a little more at every frame of a moving
@@ -260,13 +286,17 @@ void main()
     gl_FragData[0] = current; // a point outside the previous view: the current frame alone
     return;
   }
-  float weight = CurrentWeight(length(motion * vec2(size)), ViewTurn(ndc));
+  float moved = length(motion * vec2(size));
+  float weight = CurrentWeight(moved, ViewTurn(ndc));
   if (weight >= 1.0)
   {
     // Moved HistoryPixels or turned HistoryDegrees or more: the history is not read.
     gl_FragData[0] = current;
     return;
   }
+#ifdef TEMPORAL_MOTION_FRAME
+  current = mix(current, texelFetch(motionTexture, p, 0), MotionFrameShare(moved, weight));
+#endif
   vec4 history = clamp(CatmullRom(historyTexture, uv, size), lo, hi);
   gl_FragData[0] = mix(history, current, weight);
 #else

@@ -24,6 +24,11 @@
 //   DLAA_IN_PLACE    defined: the target already holds the delegate's image and depth; pixels
 //                    the method leaves alone are discarded and no depth is written. Otherwise
 //                    every pixel and its depth are written.
+//   DLAA_MOTION_FRAME  defined: temporal antialiasing with a moving camera
+//                    (vtkOpenGLAntialiasingPass::HasMotionFrame); the second draw buffer takes the
+//                    motion frame: the same without the short-edge blur (c where s is, then the
+//                    same long-edge step), which the temporal blend uses where the history moved
+//                    a pixel or more.
 //
 // Must match vtkImageDLAA.
 
@@ -147,6 +152,9 @@ void leave(vec4 c)
   discard;
 #else
   gl_FragData[0] = c;
+#ifdef DLAA_MOTION_FRAME
+  gl_FragData[1] = c;
+#endif
 #endif
 }
 
@@ -237,6 +245,7 @@ void main()
   vec4 blurY =
     (colorAt(p - ivec2(0, 2)) + below + above + colorAt(p + ivec2(0, 2)) + 2.0 * c) / 6.0;
   vec4 result = mix(mix(c, blurX, m.x), blurY, m.y / 2.0);
+  vec4 motionFrame = c; // (DLAA_MOTION_FRAME) no short-edge blur
 
 #ifdef DLAA_LONG_EDGES
   // Long edges, unless both directions have one (noise, texture).
@@ -248,7 +257,9 @@ void main()
     {
       sum += colorAt(p + ivec2(i, 0));
     }
-    result = mix(result, towards(c, above, below, luma(sum / float(2 * h + 1))), longX);
+    vec4 step = towards(c, above, below, luma(sum / float(2 * h + 1)));
+    result = mix(result, step, longX);
+    motionFrame = mix(motionFrame, step, longX);
   }
   else if (longY > 0.0 && !(longX > 0.0))
   {
@@ -258,15 +269,20 @@ void main()
     {
       sum += colorAt(p + ivec2(0, i));
     }
-    result = mix(result, towards(c, left, right, luma(sum / float(2 * h + 1))), longY);
+    vec4 step = towards(c, left, right, luma(sum / float(2 * h + 1)));
+    result = mix(result, step, longY);
+    motionFrame = mix(motionFrame, step, longY);
   }
 #endif
 
 #ifdef DLAA_IN_PLACE
-  if (result == c)
+  if (result == c && motionFrame == c)
   {
     discard;
   }
 #endif
   gl_FragData[0] = result;
+#ifdef DLAA_MOTION_FRAME
+  gl_FragData[1] = motionFrame;
+#endif
 }

@@ -862,27 +862,12 @@ void Overlays(const PassMethod& method, MessageObserver* messages)
   StopPass(renderer, window);
 }
 
-void Layers(const PassMethod& method, MessageObserver* messages)
+// Checks a capture of the layers scene: layer 0's pixels where layer 1 draws nothing within 2
+// pixels (in `plain` against `lowerOnly`) are exactly layer 0's in `result`, and layer 1 is
+// antialiased there.
+void CheckLayerZeroKept(const PassMethod& method, const char* when, vtkImageData* plain,
+  vtkImageData* lowerOnly, vtkImageData* result)
 {
-  auto window = vtkMLAAScenes::NewOffscreenWindow(Width, Height);
-  window->SetNumberOfLayers(2);
-  vtkNew<vtkRenderer> lower;
-  vtkMLAAScenes::Build("silhouettes", lower);
-  window->AddRenderer(lower);
-  vtkNew<vtkRenderer> upper;
-  upper->SetLayer(1);
-  AddSphere(upper, 0.0, 0.5)->GetProperty()->SetColor(0.95, 0.85, 0.2);
-  upper->GetActiveCamera()->SetPosition(0.0, 0.0, 8.0);
-  upper->GetActiveCamera()->SetClippingRange(4.0, 12.0);
-  window->AddRenderer(upper);
-  upper->SetDraw(false);
-  auto lowerOnly = vtkMLAAScenes::Capture(window);
-  upper->SetDraw(true);
-  auto plain = vtkMLAAScenes::Capture(window);
-
-  vtkOpenGLAntialiasingPass* pass = UseTemporal(method, upper, messages);
-  const vtkSmartPointer<vtkImageData> result = CaptureAfter(window, 16);
-  // Layer 0's pixels where layer 1 draws nothing within 2 pixels.
   vtkIdType kept = 0, changed = 0;
   for (int y = 2; y < Height - 2; ++y)
   {
@@ -915,13 +900,44 @@ void Layers(const PassMethod& method, MessageObserver* messages)
     }
   }
   const Difference antialiased = Compare(plain, result, 0.0);
-  std::cout << method.Name << ", layers: " << changed << " of " << kept
+  std::cout << method.Name << ", layers, " << when << ": " << changed << " of " << kept
             << " layer-0 pixels changed; " << antialiased.Pixels
-            << " pixels differ from the plain render; accumulated "
-            << pass->GetAccumulatedFrames() << std::endl;
+            << " pixels differ from the plain render" << std::endl;
   Check(kept > 1000 && changed == 0, "layer 0 untouched", __FILE__, __LINE__);
   Check(antialiased.Pixels > 20, "layer 1 antialiased", __FILE__, __LINE__);
+}
+
+void Layers(const PassMethod& method, MessageObserver* messages)
+{
+  auto window = vtkMLAAScenes::NewOffscreenWindow(Width, Height);
+  window->SetNumberOfLayers(2);
+  vtkNew<vtkRenderer> lower;
+  vtkMLAAScenes::Build("silhouettes", lower);
+  window->AddRenderer(lower);
+  vtkNew<vtkRenderer> upper;
+  upper->SetLayer(1);
+  AddSphere(upper, 0.0, 0.5)->GetProperty()->SetColor(0.95, 0.85, 0.2);
+  upper->GetActiveCamera()->SetPosition(0.0, 0.0, 8.0);
+  upper->GetActiveCamera()->SetClippingRange(4.0, 12.0);
+  window->AddRenderer(upper);
+  upper->SetDraw(false);
+  auto lowerOnly = vtkMLAAScenes::Capture(window);
+  upper->SetDraw(true);
+  auto plain = vtkMLAAScenes::Capture(window);
+
+  vtkOpenGLAntialiasingPass* pass = UseTemporal(method, upper, messages);
+  CheckLayerZeroKept(method, "still", plain, lowerOnly, CaptureAfter(window, 16));
   Check(pass->GetAccumulatedFrames() == 16, "layer 1 accumulates", __FILE__, __LINE__);
+  // Layer 1's camera turning about the sphere (the same silhouette): a moving camera's frames,
+  // reprojected and blended (DLAA with its motion frame), composited over layer 0 too.
+  vtkSmartPointer<vtkImageData> moving;
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    upper->GetActiveCamera()->Azimuth(3.0);
+    moving = vtkMLAAScenes::Capture(window);
+  }
+  CheckLayerZeroKept(method, "camera turning", plain, lowerOnly, moving);
+  Check(pass->GetAccumulatedFrames() == 1, "layer 1's camera moves", __FILE__, __LINE__);
   StopPass(upper, window);
 }
 }
