@@ -46,8 +46,10 @@
 #include <functional>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -216,7 +218,9 @@ void Usage(const char* program)
             << "  --methods a,b,c   methods measured (default all; none, the T-AAR's baseline, always)\n"
             << "  --output-dir DIR  where temporal.csv goes (default .)\n"
             << "  --write-frames    also write every frame of every method and the reference as\n"
-            << "                    DIR/frames/<scene>-<method>-<k>.ppm (binary PPM, 8-bit RGB)\n";
+            << "                    DIR/frames/<scene>-<method>-<k>.ppm (binary PPM, 8-bit RGB)\n"
+            << "  --require-t-aar M fail (exit status 1) where a method's T-AAR is below M on a\n"
+            << "                    scene: a regression check\n";
 }
 }
 
@@ -228,6 +232,7 @@ int main(int argc, char* argv[])
   std::string outputDir = ".";
   std::vector<std::string> chosen; // empty: every method
   bool writeFrames = false;
+  double requiredTAAR = -std::numeric_limits<double>::infinity();
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -266,6 +271,11 @@ int main(int argc, char* argv[])
     else if (arg == "--methods" && hasValue)
     {
       chosen = mlaaBenchmark::SplitList(argv[++i]);
+    }
+    else if (arg == "--require-t-aar" && hasValue &&
+      mlaaBenchmark::ParseNumber(argv[i + 1], -1e9, 1.0, requiredTAAR))
+    {
+      ++i;
     }
     else if (arg == "--output-dir" && hasValue)
     {
@@ -495,6 +505,7 @@ int main(int argc, char* argv[])
             << std::setw(9) << "TE" << std::setw(9) << "T-AAR" << std::setw(9) << "AAR"
             << std::setw(11) << "still AAR" << "\n";
   std::map<std::string, double> meanTAAR, meanAAR, meanStill, worstTAAR;
+  std::vector<std::string> belowRequired;
   for (const auto& scene : scenes)
   {
     const double noneTE = results[scene]["none"].TE;
@@ -514,6 +525,12 @@ int main(int argc, char* argv[])
                 << std::defaultfloat << "\n";
       csv << scene << "," << method.Name << "," << r.TE << "," << tAAR << "," << aar << ","
           << r.StillAAR << "\n";
+      if (method.Name != "none" && !(tAAR >= requiredTAAR))
+      {
+        std::ostringstream what;
+        what << method.Name << " on " << scene << ": T-AAR " << tAAR;
+        belowRequired.push_back(what.str());
+      }
     }
   }
   std::cout << "\n"
@@ -530,5 +547,10 @@ int main(int argc, char* argv[])
   std::cout << "(still AAR: the last frame after " << StillRenders
             << " renders of the unchanged scene; methods without history render it once)\n";
   std::cout << "\nCSV: " << outputDir << "/temporal.csv" << std::endl;
-  return csv ? EXIT_SUCCESS : EXIT_FAILURE;
+  for (const auto& what : belowRequired)
+  {
+    std::cerr << "mlaa-temporal: below the required T-AAR " << requiredTAAR << ": " << what
+              << std::endl;
+  }
+  return csv && belowRequired.empty() ? EXIT_SUCCESS : EXIT_FAILURE;
 }
