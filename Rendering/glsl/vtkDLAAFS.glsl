@@ -257,9 +257,9 @@ void main()
     {
       sum += colorAt(p + ivec2(i, 0));
     }
-    vec4 step = towards(c, above, below, luma(sum / float(2 * h + 1)));
-    result = mix(result, step, longX);
-    motionFrame = mix(motionFrame, step, longX);
+    vec4 stepped = towards(c, above, below, luma(sum / float(2 * h + 1)));
+    result = mix(result, stepped, longX);
+    motionFrame = mix(motionFrame, stepped, longX);
   }
   else if (longY > 0.0 && !(longX > 0.0))
   {
@@ -269,14 +269,18 @@ void main()
     {
       sum += colorAt(p + ivec2(0, i));
     }
-    vec4 step = towards(c, left, right, luma(sum / float(2 * h + 1)));
-    result = mix(result, step, longY);
-    motionFrame = mix(motionFrame, step, longY);
+    vec4 stepped = towards(c, left, right, luma(sum / float(2 * h + 1)));
+    result = mix(result, stepped, longY);
+    motionFrame = mix(motionFrame, stepped, longY);
   }
 #endif
 
 #ifdef DLAA_IN_PLACE
-  if (result == c && motionFrame == c)
+  bool changed = result != c;
+#ifdef DLAA_MOTION_FRAME
+  changed = changed || motionFrame != c;
+#endif
+  if (!changed)
   {
     discard;
   }
