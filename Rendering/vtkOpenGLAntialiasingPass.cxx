@@ -1307,10 +1307,10 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
   // Previous keeps the method's frame of the last unjittered render (a still accumulation's
   // jittered frames go to Current and are not kept: the still scene's unjittered frame is the one
   // its accumulation started with).
+  const int colorType = frame.FloatColor ? VTK_FLOAT : VTK_UNSIGNED_CHAR; // the method's frames
   for (vtkTextureObject* texture : { h.Current, h.Previous })
   {
-    if (AllocateColorTarget(
-          texture, width, height, 4, frame.FloatColor ? VTK_FLOAT : VTK_UNSIGNED_CHAR, false))
+    if (AllocateColorTarget(texture, width, height, 4, colorType, false))
     {
       h.PreviousValid = false;
       if (h.KeepUnchanged)
@@ -1334,17 +1334,20 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
     }
   }
   AllocateDepthTarget(h.Mask, width, height, vtkTextureObject::Fixed16);
-  // The method's motion frame (written at every frame that reads it).
-  const bool motionFrame = h.FrameMode == TemporalHistory::MOVING && !h.KeepUnchanged &&
-    this->HasMotionFrame();
+  // This render's kind of blend (the mode is final from here on): a moving camera's reprojects
+  // the history and, for a method with one, reads its motion frame (written at every such
+  // render).
+  const bool moving = h.FrameMode == TemporalHistory::MOVING;
+  const bool keep = moving && h.KeepUnchanged;
+  const bool reproject = moving && !keep;
+  const bool motionFrame = reproject && this->HasMotionFrame();
   if (motionFrame)
   {
     if (!h.Motion)
     {
       h.Motion = NewTexture(renWin);
     }
-    AllocateColorTarget(
-      h.Motion, width, height, 4, frame.FloatColor ? VTK_FLOAT : VTK_UNSIGNED_CHAR, false);
+    AllocateColorTarget(h.Motion, width, height, 4, colorType, false);
   }
 
   auto bindTarget = [&](vtkTextureObject* texture) {
@@ -1411,9 +1414,6 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
     ostate->vtkglDisable(GL_BLEND);
     ostate->vtkglDisable(GL_DEPTH_TEST);
     ostate->vtkglDepthMask(GL_FALSE);
-    const bool moving = h.FrameMode == TemporalHistory::MOVING;
-    const bool keep = moving && h.KeepUnchanged;
-    const bool reproject = moving && !keep;
     if (reproject)
     {
       // Every pixel's count starts at 1 (a moving camera's blend writes 1 where it runs).
@@ -1421,7 +1421,7 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
       glClearBufferfv(GL_COLOR, 1, one);
     }
     float weight = 1.0f;
-    if (h.FrameMode == TemporalHistory::MOVING)
+    if (moving)
     {
       weight = static_cast<float>(this->TemporalWeight);
     }
@@ -1444,7 +1444,7 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
     done = done &&
       this->ReadyQuad(renWin, h.BlendQuad, vtkAntialiasingTemporalFS,
         Define("TEMPORAL_REPROJECT", reproject) + Define("TEMPORAL_KEEP_UNCHANGED", keep) +
-          Define("TEMPORAL_MOTION_FRAME", reproject && motionFrame));
+          Define("TEMPORAL_MOTION_FRAME", motionFrame));
     if (done)
     {
       // While the scene is still, the frames averaged are the jittered renders themselves: their
