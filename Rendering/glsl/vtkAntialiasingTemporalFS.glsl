@@ -26,8 +26,9 @@
 //                       HistoryDegrees.
 //   TEMPORAL_MOTION_FRAME  (with TEMPORAL_REPROJECT) the method wrote a motion frame
 //                       (motionTexture; vtkOpenGLAntialiasingPass::HasMotionFrame): where the
-//                       history is read and moved a pixel or more, the blend takes it instead of
-//                       the method's frame (MotionFrameShare).
+//                       history is read and moved a pixel or more, and the edges at the pixel a
+//                       quarter of a pixel or more across themselves, the blend takes it instead
+//                       of the method's frame (MotionFrameShare).
 //   TEMPORAL_MASK       (with TEMPORAL_REPROJECT) copies the current frame into the new
 //                       history at every pixel, and marks with depth 1 the pixels the
 //                       reprojecting blend does not discard (flatFrame), 0 the others, so that
@@ -129,20 +130,39 @@ float CurrentWeight(float moved, float turned)
 
 #ifdef TEMPORAL_MOTION_FRAME
 // How much of the method's motion frame replaces its frame, for a pixel whose history moved
-// `moved` pixels and whose current frame weighs `weight`. A method's filtering along an edge
-// (DLAA's short-edge blur) spreads each jump of the edge's staircase over the pixels beside it,
-// and re-forms with every move of the edge, which a single frame needs and a blend of frames
-// does not: a history that moves a pixel or more a frame holds the edge seen at other positions
-// of the pixel grid, so its blend with the frame smooths the jumps by itself, and the filtering
-// only adds its own flicker. So the motion frame (the method without that filtering) is taken in
-// full from MovingPixels on, and not at all where the history is not read (weight 1: it then
-// is the result alone, and needs the filtering) nor at rest (a still or slow edge's samples do
-// not move across pixels, and its jumps do not average out). Measured with DLAA on the orbit
-// scenes of mlaa-temporal at 0.2 to 2 degrees a frame (docs/measurements.md).
-float MotionFrameShare(float moved, float weight)
+// `moved` pixels, whose edge moved `across` pixels across itself (AcrossEdge) and whose current
+// frame weighs `weight`. A method's filtering along an edge (DLAA's short-edge blur) spreads each
+// jump of the edge's staircase over the pixels beside it, and re-forms with every move of the
+// edge, which a single frame needs and a blend of frames does not: a history that moves a pixel
+// or more a frame holds the edge seen at other positions of the pixel grid, so its blend with the
+// frame smooths the jumps by itself, and the filtering only adds its own flicker. So the motion
+// frame (the method without that filtering) is taken in full where the history moved
+// MovingPixels or more and the edge AcrossPixels or more across itself, and not at all where the
+// history is not read (weight 1: it then is the result alone, and needs the filtering), at rest
+// (a still or slow edge's samples do not move across pixels) nor where the edge slid along itself
+// (a long, nearly horizontal edge under a camera turning about the vertical: the history holds
+// its staircase where the frame has it): there the jumps do not average out. Measured with DLAA
+// on the orbit scenes of mlaa-temporal at 0.2 to 2 degrees a frame (docs/measurements.md).
+const float AcrossPixels = 0.25;
+float MotionFrameShare(float moved, float across, float weight)
 {
-  return clamp(moved / MovingPixels, 0.0, 1.0) *
-    clamp((1.0 - weight) / (1.0 - MovingWeight), 0.0, 1.0);
+  float motion =
+    min(clamp(moved / MovingPixels, 0.0, 1.0), clamp(across / AcrossPixels, 0.0, 1.0));
+  return motion * clamp((1.0 - weight) / (1.0 - MovingWeight), 0.0, 1.0);
+}
+
+// How far, in pixels, the edges at a pixel moved across themselves when the picture moved by
+// `motion` (pixels): the motion's horizontal and vertical parts, weighed by how much the rendered
+// luma (Rec. 709) varies along each axis over the 3 x 3 neighbourhood (`variation`, from
+// CurrentRange: the sums of the absolute differences between neighbours, along x and along y); the
+// whole motion where the neighbourhood is one luma. A nearly horizontal edge, or a thin
+// horizontal line, varies along y only, and moves across itself by the motion's vertical part.
+// (Per axis, as DLAA filters: a signed gradient, Sobel's, cancels across a thin line and took the
+// direction of the colour's noise there: measured worse, and dependent on the luma's weights.)
+float AcrossEdge(vec2 motion, vec2 variation)
+{
+  float sum = variation.x + variation.y;
+  return sum > 0.0 ? dot(abs(motion), variation) / sum : length(motion);
 }
 #endif
 
@@ -174,32 +194,42 @@ vec4 CatmullRom(sampler2D image, vec2 uv, ivec2 size)
 // The range, per channel, of this frame as rendered (before the method) over the 3 x 3
 // neighbourhood of `p`, rather than of the method's frame: the rendered samples are what the
 // history has to agree with. Measured a little better (or equal) for both methods on every scene
-// of mlaa-temporal at 0.2 and 0.5 degree a frame (docs/measurements.md).
-void CurrentRange(ivec2 p, ivec2 size, out vec4 lo, out vec4 hi)
+// of mlaa-temporal at 0.2 and 0.5 degree a frame (docs/measurements.md). With a motion frame, also
+// the luma's variation along x and y (AcrossEdge), from the same reads.
+void CurrentRange(ivec2 p, ivec2 size, out vec4 lo, out vec4 hi, out vec2 variation)
 {
   lo = texelFetch(frameTexture, p, 0);
   hi = lo;
+  float luma[9]; // row by row, from (-1, -1)
   for (int j = -1; j <= 1; ++j)
   {
     for (int i = -1; i <= 1; ++i)
     {
-      if (i != 0 || j != 0)
-      {
-        vec4 c = texelFetch(frameTexture, clamp(p + ivec2(i, j), ivec2(0), size - 1), 0);
-        lo = min(lo, c);
-        hi = max(hi, c);
-      }
+      vec4 c = texelFetch(frameTexture, clamp(p + ivec2(i, j), ivec2(0), size - 1), 0);
+      lo = min(lo, c);
+      hi = max(hi, c);
+#ifdef TEMPORAL_MOTION_FRAME
+      luma[3 * j + i + 4] = dot(c.rgb, vec3(0.2126, 0.7152, 0.0722));
+#endif
     }
   }
+  variation = vec2(0.0);
+#ifdef TEMPORAL_MOTION_FRAME
+  for (int k = 0; k < 3; ++k)
+  {
+    variation.x += abs(luma[3 * k + 1] - luma[3 * k]) + abs(luma[3 * k + 2] - luma[3 * k + 1]);
+    variation.y += abs(luma[k + 3] - luma[k]) + abs(luma[k + 6] - luma[k + 3]);
+  }
+#endif
 }
 
 // Where the rendered 3 x 3 neighbourhood is one colour and the method left the pixel at that
 // colour, the clamp takes any history to that colour: the result is the current frame, which
 // the pass has already copied into the new history (with a count of 1), so the history is
 // neither located nor read there (flat regions, most of a background).
-bool flatFrame(ivec2 p, ivec2 size, vec4 current, out vec4 lo, out vec4 hi)
+bool flatFrame(ivec2 p, ivec2 size, vec4 current, out vec4 lo, out vec4 hi, out vec2 variation)
 {
-  CurrentRange(p, size, lo, hi);
+  CurrentRange(p, size, lo, hi, variation);
   return lo == hi && current == lo;
 }
 
@@ -234,7 +264,8 @@ void main()
 #ifdef TEMPORAL_MASK
   vec4 copied = texelFetch(currentTexture, p, 0);
   vec4 range[2];
-  gl_FragDepth = flatFrame(p, size, copied, range[0], range[1]) ? 0.0 : 1.0;
+  vec2 unused;
+  gl_FragDepth = flatFrame(p, size, copied, range[0], range[1], unused) ? 0.0 : 1.0;
   gl_FragData[0] = copied;
   return;
 #endif
@@ -271,7 +302,8 @@ void main()
   // The mask pass (TEMPORAL_MASK) left out the pixels discarded here; the test stays, so that
   // the blend is the same without the mask.
   vec4 lo, hi;
-  if (flatFrame(p, size, current, lo, hi))
+  vec2 variation;
+  if (flatFrame(p, size, current, lo, hi, variation))
   {
     discard;
   }
@@ -295,7 +327,9 @@ void main()
     return;
   }
 #ifdef TEMPORAL_MOTION_FRAME
-  current = mix(current, texelFetch(motionTexture, p, 0), MotionFrameShare(moved, weight));
+  float across = AcrossEdge(motion * vec2(size), variation);
+  current =
+    mix(current, texelFetch(motionTexture, p, 0), MotionFrameShare(moved, across, weight));
 #endif
   vec4 history = clamp(CatmullRom(historyTexture, uv, size), lo, hi);
   gl_FragData[0] = mix(history, current, weight);
