@@ -3,7 +3,9 @@
 // mlaa-temporal: the temporal-stability measure of the project's MEASURING.md.
 //
 // For each scene it renders a slow camera orbit of K frames (the camera turned about its focal
-// point by a fixed angle a frame, vtkCamera::Azimuth) with every method, and per frame the
+// point by a fixed angle a frame, vtkCamera::Azimuth; --motion moves it otherwise: up over the
+// focal point, rolled about the direction of view, or towards the focal point) with every
+// method, and per frame the
 // supersampled reference of MEASURING.md (N x N single-sample renders with the projection
 // shifted by stratified sub-pixel offsets, averaged). Flicker and crawl are the frame-to-frame
 // changes that the reference does not have:
@@ -213,7 +215,11 @@ void Usage(const char* program)
             << "  --size WxH        render size (default 400x300)\n"
             << "  --scenes a,b,c    scenes (default horizon,thin,texture,silhouettes,orbit)\n"
             << "  --frames K        frames of the orbit (default 60)\n"
-            << "  --degrees D       camera azimuth step per frame (default 0.25)\n"
+            << "  --degrees D       camera step per frame (default 0.25): degrees of azimuth,\n"
+            << "                    elevation or roll; for dolly, D % closer to the focal point\n"
+            << "                    (a parallel projection: magnified as much)\n"
+            << "  --motion M        azimuth (default), elevation, roll or dolly: how the camera\n"
+            << "                    moves (vtkCamera's Azimuth, Elevation, Roll, Dolly)\n"
             << "  --samples N       reference is N x N shifted renders per frame (default 8)\n"
             << "  --methods a,b,c   methods measured (default all; none, the T-AAR's baseline, always)\n"
             << "  --output-dir DIR  where temporal.csv goes (default .)\n"
@@ -222,12 +228,45 @@ void Usage(const char* program)
             << "  --require-t-aar M fail (exit status 1) where a method's T-AAR is below M on a\n"
             << "                    scene: a regression check\n";
 }
+
+// One frame's step of the camera (--motion, --degrees).
+void MoveCamera(vtkCamera* camera, const std::string& motion, double step)
+{
+  if (motion == "elevation")
+  {
+    camera->Elevation(step);
+    camera->OrthogonalizeViewUp(); // (Elevation leaves the view-up as it was)
+  }
+  else if (motion == "roll")
+  {
+    camera->Roll(step);
+  }
+  else if (motion == "dolly")
+  {
+    // Closer by step %: a parallel projection shows the same picture from any distance, and
+    // magnifies it by its scale instead.
+    const double factor = 1.0 / (1.0 - step / 100.0);
+    if (camera->GetParallelProjection())
+    {
+      camera->Zoom(factor);
+    }
+    else
+    {
+      camera->Dolly(factor);
+    }
+  }
+  else
+  {
+    camera->Azimuth(step);
+  }
+}
 }
 
 int main(int argc, char* argv[])
 {
   int width = 400, height = 300, frames = 60, samples = 8;
   double degrees = 0.25;
+  std::string motion = "azimuth";
   std::vector<std::string> scenes = { "horizon", "thin", "texture", "silhouettes", "orbit" };
   std::string outputDir = ".";
   std::vector<std::string> chosen; // empty: every method
@@ -259,6 +298,12 @@ int main(int argc, char* argv[])
       mlaaBenchmark::ParseNumber(argv[i + 1], 0.0, 10.0, degrees))
     {
       ++i;
+    }
+    else if (arg == "--motion" && hasValue &&
+      (std::string(argv[i + 1]) == "azimuth" || std::string(argv[i + 1]) == "elevation" ||
+        std::string(argv[i + 1]) == "roll" || std::string(argv[i + 1]) == "dolly"))
+    {
+      motion = argv[++i];
     }
     else if (arg == "--samples" && hasValue && mlaaBenchmark::ParsePositive(argv[i + 1], samples))
     {
@@ -306,7 +351,8 @@ int main(int argc, char* argv[])
   }
 
   std::cout << "mlaa-temporal: " << width << "x" << height << ", " << frames << " frames, "
-            << degrees << " degree(s) of azimuth a frame, reference " << samples << "x" << samples
+            << degrees << (motion == "dolly" ? " % of dolly" : " degree(s) of " + motion)
+            << " a frame, reference " << samples << "x" << samples
             << " shifted renders a frame" << std::endl;
   std::vector<Method> methods;
   {
@@ -370,7 +416,7 @@ int main(int argc, char* argv[])
     {
       if (k > 0)
       {
-        camera->Azimuth(degrees);
+        MoveCamera(camera, motion, degrees);
       }
       renderer->ResetCameraClippingRange();
       // The reference of this frame.
