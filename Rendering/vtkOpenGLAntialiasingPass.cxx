@@ -464,8 +464,8 @@ void vtkOpenGLAntialiasingPass::PrepareTargets(const Frame& frame, bool depth)
       * texture = NewTexture(renWin);
     }
   }
-  bool reallocated = AllocateColorTarget(this->ColorTexture, frame.Width, frame.Height, 4,
-    frame.FloatColor ? VTK_FLOAT : VTK_UNSIGNED_CHAR, false);
+  bool reallocated =
+    AllocateColorTarget(this->ColorTexture, frame.Width, frame.Height, 4, frame.ColorType(), false);
   if (depth)
   {
     // 24-bit depth, as a window's depth buffer, so the delegate renders as it would in the window.
@@ -1307,7 +1307,7 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
   // Previous keeps the method's frame of the last unjittered render (a still accumulation's
   // jittered frames go to Current and are not kept: the still scene's unjittered frame is the one
   // its accumulation started with).
-  const int colorType = frame.FloatColor ? VTK_FLOAT : VTK_UNSIGNED_CHAR; // the method's frames
+  const int colorType = frame.ColorType(); // the method's frames
   for (vtkTextureObject* texture : { h.Current, h.Previous })
   {
     if (AllocateColorTarget(texture, width, height, 4, colorType, false))
@@ -1676,7 +1676,7 @@ int vtkOpenGLAntialiasingPass::ChooseMultiSamples(vtkOpenGLRenderWindow* renWin,
 void vtkOpenGLAntialiasingPass::PrepareSampleTargets(const Frame& frame, int samples)
 {
   vtkOpenGLRenderWindow* renWin = frame.Window;
-  const int colorType = frame.FloatColor ? VTK_FLOAT : VTK_UNSIGNED_CHAR;
+  const int colorType = frame.ColorType();
   for (vtkTextureObject** texture : { &this->SamplesColorTexture, &this->SamplesDepthTexture,
          &this->SampleTexture, &this->AccumulationTexture })
   {

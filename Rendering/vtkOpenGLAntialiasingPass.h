@@ -305,6 +305,9 @@ protected:
     // (HasMotionFrame): the target has a second draw buffer (1), holding the delegate's image
     // too when in place, into which the method writes its motion frame.
     bool MotionFrame = false;
+    // The VTK type of the colour targets that hold the image (ColorTexture's and the method's
+    // frames).
+    int ColorType() const { return this->FloatColor ? VTK_FLOAT : VTK_UNSIGNED_CHAR; }
   };
 
   // /@{
@@ -317,8 +320,9 @@ protected:
   virtual bool DrawsDeferredOverlays() { return true; }
   // Whether the method writes a motion frame (Frame::MotionFrame) for temporal antialiasing:
   // its result without the filtering that a history reprojected from pixels moving a pixel or
-  // more a frame does by itself, which the blend takes where the history moved that far
-  // (vtkAntialiasingTemporalFS.glsl). DLAA's is its frame without the short-edge blur.
+  // more a frame does by itself, which the blend takes where the history moved that far and the
+  // edges moved across themselves (vtkAntialiasingTemporalFS.glsl). DLAA's is its frame without
+  // the short-edge blur.
   virtual bool HasMotionFrame() { return false; }
   // Creates or resizes the subclass's targets; returns true when one was allocated afresh (the
   // framebuffer objects are then rebuilt).
