@@ -155,14 +155,16 @@ float MotionFrameShare(float moved, float across, float weight)
 // `motion` (pixels): the motion's horizontal and vertical parts, weighed by how much the rendered
 // luma (Rec. 709) varies along each axis over the 3 x 3 neighbourhood (`variation`, from
 // CurrentRange: the sums of the absolute differences between neighbours, along x and along y); the
-// whole motion where the neighbourhood is one luma. A nearly horizontal edge, or a thin
-// horizontal line, varies along y only, and moves across itself by the motion's vertical part.
+// whole motion where the neighbourhood is one luma, or where its variation is not a finite
+// number (a floating-point frame with an infinite or NaN pixel: the pixels beside it stay finite).
+// A nearly horizontal edge, or a thin horizontal line, varies along y only, and moves across
+// itself by the motion's vertical part.
 // (Per axis, as DLAA filters: a signed gradient, Sobel's, cancels across a thin line and took the
 // direction of the colour's noise there: measured worse, and dependent on the luma's weights.)
 float AcrossEdge(vec2 motion, vec2 variation)
 {
   float sum = variation.x + variation.y;
-  return sum > 0.0 ? dot(abs(motion), variation) / sum : length(motion);
+  return sum > 0.0 && sum < 1.0e38 ? dot(abs(motion), variation) / sum : length(motion);
 }
 #endif
 
