@@ -141,14 +141,18 @@ float CurrentWeight(float moved, float turned)
 // history is not read (weight 1: it then is the result alone, and needs the filtering), at rest
 // (a still or slow edge's samples do not move across pixels) nor where the edge slid along itself
 // (a long, nearly horizontal edge under a camera turning about the vertical: the history holds
-// its staircase where the frame has it): there the jumps do not average out. Measured with DLAA
-// on the orbit scenes of mlaa-temporal at 0.2 to 2 degrees a frame (docs/measurements.md).
+// its staircase where the frame has it): there the jumps do not average out. Nor on a thin
+// line (`line`, from CurrentRange: the pixel is a ridge or a valley of the luma, one pixel wide):
+// a history that moves across a line holds it one pixel wide at other rows, not the share of the
+// pixel it covers, so its jumps do not average out either, and the blur is what softens them.
+// Measured with DLAA on the orbit scenes of mlaa-temporal at 0.2 to 2 degrees a frame, and the
+// thin line's rule on its other motions (elevation, roll, dolly; docs/measurements.md).
 const float AcrossPixels = 0.25;
-float MotionFrameShare(float moved, float across, float weight)
+float MotionFrameShare(float moved, float across, float line, float weight)
 {
   float motion =
     min(clamp(moved / MovingPixels, 0.0, 1.0), clamp(across / AcrossPixels, 0.0, 1.0));
-  return motion * clamp((1.0 - weight) / (1.0 - MovingWeight), 0.0, 1.0);
+  return (1.0 - line) * motion * clamp((1.0 - weight) / (1.0 - MovingWeight), 0.0, 1.0);
 }
 
 // How far, in pixels, the edges at a pixel moved across themselves when the picture moved by
@@ -197,8 +201,9 @@ vec4 CatmullRom(sampler2D image, vec2 uv, ivec2 size)
 // neighbourhood of `p`, rather than of the method's frame: the rendered samples are what the
 // history has to agree with. Measured a little better (or equal) for both methods on every scene
 // of mlaa-temporal at 0.2 and 0.5 degree a frame (docs/measurements.md). With a motion frame, also
-// the luma's variation along x and y (AcrossEdge), from the same reads.
-void CurrentRange(ivec2 p, ivec2 size, out vec4 lo, out vec4 hi, out vec2 variation)
+// the luma's variation along x and y (AcrossEdge) and how much the pixel is a thin line
+// (MotionFrameShare), from the same reads.
+void CurrentRange(ivec2 p, ivec2 size, out vec4 lo, out vec4 hi, out vec2 variation, out float line)
 {
   lo = texelFetch(frameTexture, p, 0);
   hi = lo;
@@ -216,12 +221,22 @@ void CurrentRange(ivec2 p, ivec2 size, out vec4 lo, out vec4 hi, out vec2 variat
     }
   }
   variation = vec2(0.0);
+  line = 0.0;
 #ifdef TEMPORAL_MOTION_FRAME
   for (int k = 0; k < 3; ++k)
   {
     variation.x += abs(luma[3 * k + 1] - luma[3 * k]) + abs(luma[3 * k + 2] - luma[3 * k + 1]);
     variation.y += abs(luma[k + 3] - luma[k]) + abs(luma[k + 6] - luma[k + 3]);
   }
+  // A thin line: along x or along y, the pixel's steps to its two neighbours have opposite signs
+  // (a ridge or a valley); the smaller of the two, over the pixel's largest step, says how much.
+  // The side of an edge steps one way only, and a smooth shading's steps are small on both sides.
+  float a = luma[4] - luma[3], b = luma[5] - luma[4];
+  float c = luma[4] - luma[1], d = luma[7] - luma[4];
+  float ridge =
+    max(a * b < 0.0 ? min(abs(a), abs(b)) : 0.0, c * d < 0.0 ? min(abs(c), abs(d)) : 0.0);
+  float largest = max(max(abs(a), abs(b)), max(abs(c), abs(d)));
+  line = largest > 0.0 && largest < 1.0e38 ? clamp(ridge / largest, 0.0, 1.0) : 0.0;
 #endif
 }
 
@@ -229,9 +244,10 @@ void CurrentRange(ivec2 p, ivec2 size, out vec4 lo, out vec4 hi, out vec2 variat
 // colour, the clamp takes any history to that colour: the result is the current frame, which
 // the pass has already copied into the new history (with a count of 1), so the history is
 // neither located nor read there (flat regions, most of a background).
-bool flatFrame(ivec2 p, ivec2 size, vec4 current, out vec4 lo, out vec4 hi, out vec2 variation)
+bool flatFrame(
+  ivec2 p, ivec2 size, vec4 current, out vec4 lo, out vec4 hi, out vec2 variation, out float line)
 {
-  CurrentRange(p, size, lo, hi, variation);
+  CurrentRange(p, size, lo, hi, variation, line);
   return lo == hi && current == lo;
 }
 
@@ -267,7 +283,8 @@ void main()
   vec4 copied = texelFetch(currentTexture, p, 0);
   vec4 range[2];
   vec2 unused;
-  gl_FragDepth = flatFrame(p, size, copied, range[0], range[1], unused) ? 0.0 : 1.0;
+  float unusedLine;
+  gl_FragDepth = flatFrame(p, size, copied, range[0], range[1], unused, unusedLine) ? 0.0 : 1.0;
   gl_FragData[0] = copied;
   return;
 #endif
@@ -305,7 +322,8 @@ void main()
   // the blend is the same without the mask.
   vec4 lo, hi;
   vec2 variation;
-  if (flatFrame(p, size, current, lo, hi, variation))
+  float line;
+  if (flatFrame(p, size, current, lo, hi, variation, line))
   {
     discard;
   }
@@ -331,7 +349,7 @@ void main()
 #ifdef TEMPORAL_MOTION_FRAME
   float across = AcrossEdge(motion * vec2(size), variation);
   current =
-    mix(current, texelFetch(motionTexture, p, 0), MotionFrameShare(moved, across, weight));
+    mix(current, texelFetch(motionTexture, p, 0), MotionFrameShare(moved, across, line, weight));
 #endif
   vec4 history = clamp(CatmullRom(historyTexture, uv, size), lo, hi);
   gl_FragData[0] = mix(history, current, weight);
