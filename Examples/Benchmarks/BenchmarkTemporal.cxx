@@ -41,6 +41,7 @@
 #include "vtkSmartPointer.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -229,6 +230,9 @@ void Usage(const char* program)
             << "                    scene: a regression check\n";
 }
 
+// The camera's motions (--motion), the first the default.
+const std::array<std::string, 4> Motions = { "azimuth", "elevation", "roll", "dolly" };
+
 // One frame's step of the camera (--motion, --degrees).
 void MoveCamera(vtkCamera* camera, const std::string& motion, double step)
 {
@@ -266,7 +270,7 @@ int main(int argc, char* argv[])
 {
   int width = 400, height = 300, frames = 60, samples = 8;
   double degrees = 0.25;
-  std::string motion = "azimuth";
+  std::string motion = Motions[0];
   std::vector<std::string> scenes = { "horizon", "thin", "texture", "silhouettes", "orbit" };
   std::string outputDir = ".";
   std::vector<std::string> chosen; // empty: every method
@@ -300,8 +304,7 @@ int main(int argc, char* argv[])
       ++i;
     }
     else if (arg == "--motion" && hasValue &&
-      (std::string(argv[i + 1]) == "azimuth" || std::string(argv[i + 1]) == "elevation" ||
-        std::string(argv[i + 1]) == "roll" || std::string(argv[i + 1]) == "dolly"))
+      std::find(Motions.begin(), Motions.end(), argv[i + 1]) != Motions.end())
     {
       motion = argv[++i];
     }
