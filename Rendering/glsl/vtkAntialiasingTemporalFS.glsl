@@ -155,6 +155,13 @@ float MotionFrameShare(float moved, float across, float line, float weight)
   return (1.0 - line) * motion * clamp((1.0 - weight) / (1.0 - MovingWeight), 0.0, 1.0);
 }
 
+// Whether `x` is a positive finite number (not 0, infinite or NaN: a floating-point frame may hold
+// such pixels, and the measures of their neighbours that divide by a sum of steps stay finite).
+bool PositiveFinite(float x)
+{
+  return x > 0.0 && x < 1.0e38;
+}
+
 // How far, in pixels, the edges at a pixel moved across themselves when the picture moved by
 // `motion` (pixels): the motion's horizontal and vertical parts, weighed by how much the rendered
 // luma (Rec. 709) varies along each axis over the 3 x 3 neighbourhood (`variation`, from
@@ -168,7 +175,7 @@ float MotionFrameShare(float moved, float across, float line, float weight)
 float AcrossEdge(vec2 motion, vec2 variation)
 {
   float sum = variation.x + variation.y;
-  return sum > 0.0 && sum < 1.0e38 ? dot(abs(motion), variation) / sum : length(motion);
+  return PositiveFinite(sum) ? dot(abs(motion), variation) / sum : length(motion);
 }
 #endif
 
@@ -236,7 +243,7 @@ void CurrentRange(ivec2 p, ivec2 size, out vec4 lo, out vec4 hi, out vec2 variat
   float ridge =
     max(a * b < 0.0 ? min(abs(a), abs(b)) : 0.0, c * d < 0.0 ? min(abs(c), abs(d)) : 0.0);
   float largest = max(max(abs(a), abs(b)), max(abs(c), abs(d)));
-  line = largest > 0.0 && largest < 1.0e38 ? clamp(ridge / largest, 0.0, 1.0) : 0.0;
+  line = PositiveFinite(largest) ? clamp(ridge / largest, 0.0, 1.0) : 0.0;
 #endif
 }
 
