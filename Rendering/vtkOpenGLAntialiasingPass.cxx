@@ -102,6 +102,9 @@ public:
   vtkTextureObject* Histories[2] = { nullptr, nullptr }; // RGBA32F, read and written in turn
   vtkTextureObject* Counts[2] = { nullptr, nullptr }; // R32F: frames each pixel's history holds
   vtkTextureObject* Mask = nullptr; // depth: the pixels a moving camera's blend writes (1)
+  // The delegate's depth at the last render, where a moving camera's blend finds what hid a
+  // point then (exchanged with the pass's DepthTexture at each render: no copy).
+  vtkTextureObject* Depth = nullptr;
   int Latest = 0;                                    // the one written last
   vtkOpenGLFramebufferObject* Framebuffer = nullptr;
   ShaderVariant BlendQuad, OutputQuad, MaskQuad;
@@ -129,6 +132,13 @@ public:
   double CurrentEye[4] = {};
   bool KeepUnchanged = false;   // actors moved under a still camera: see BeginTemporalFrame
   bool PreviousValid = false;   // Previous holds the last unjittered render of this size
+  // The entries (2, 2), (2, 3), (3, 2) and (3, 3) of the projection of this render and of the last
+  // one, which take a window depth to the distance from the eye; and the sub-pixel offsets
+  // (pixels) by which they were jittered.
+  double DepthToEye[4] = {};
+  double PreviousDepthToEye[4] = {};
+  double Jitter[2] = {};
+  double PreviousJitter[2] = {};
   vtkCamera* JitteredCamera = nullptr;
   double SavedWindowCenter[2] = { 0.0, 0.0 };
 
@@ -142,6 +152,7 @@ public:
     DeleteObject(this->Counts[0], w);
     DeleteObject(this->Counts[1], w);
     DeleteObject(this->Mask, w);
+    DeleteObject(this->Depth, w);
     DeleteObject(this->Framebuffer, w);
     this->BlendQuad.Release(w);
     this->OutputQuad.Release(w);
@@ -156,12 +167,14 @@ public:
     return TextureBytes(this->Current, colorBytes) + TextureBytes(this->Previous, colorBytes) +
       TextureBytes(this->Motion, colorBytes) + TextureBytes(this->Histories[0], 16) +
       TextureBytes(this->Histories[1], 16) + TextureBytes(this->Counts[0], 4) +
-      TextureBytes(this->Counts[1], 4) + TextureBytes(this->Mask, 2);
+      TextureBytes(this->Counts[1], 4) + TextureBytes(this->Mask, 2) +
+      TextureBytes(this->Depth, 4);
   }
   bool HoldsResources() const
   {
     return this->Current || this->Previous || this->Motion || this->Histories[0] ||
-      this->Histories[1] || this->Counts[0] || this->Counts[1] || this->Mask || this->Framebuffer;
+      this->Histories[1] || this->Counts[0] || this->Counts[1] || this->Mask ||
+      this->Depth || this->Framebuffer;
   }
 };
 
@@ -1170,6 +1183,15 @@ void vtkOpenGLAntialiasingPass::BeginTemporalFrame(const vtkRenderState* s, cons
   viewProjection->DeepCopy(
     camera->GetCompositeProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1));
   const bool parallel = camera->GetParallelProjection() != 0;
+  std::copy(h.DepthToEye, h.DepthToEye + 4, h.PreviousDepthToEye);
+  std::copy(h.Jitter, h.Jitter + 2, h.PreviousJitter);
+  vtkMatrix4x4* projection =
+    camera->GetProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1);
+  for (int i = 0; i < 4; ++i)
+  {
+    h.DepthToEye[i] = projection->GetElement(2 + i / 2, 2 + i % 2);
+  }
+  h.Jitter[0] = h.Jitter[1] = 0.0;
   double eye[4] = { 0.0, 0.0, 0.0, parallel ? 0.0 : 1.0 };
   if (parallel)
   {
@@ -1265,6 +1287,8 @@ void vtkOpenGLAntialiasingPass::BeginTemporalFrame(const vtkRenderState* s, cons
   ++h.JitterIndex; // point 0 is the accumulation's first, unjittered render
   double jitter[2];
   StillJitter(h.JitterIndex, this->ConvergedFrames, jitter);
+  h.Jitter[0] = jitter[0];
+  h.Jitter[1] = jitter[1];
   h.JitteredCamera = camera;
   camera->GetWindowCenter(h.SavedWindowCenter);
   camera->SetWindowCenter(h.SavedWindowCenter[0] + 2.0 * jitter[0] / frame.Width,
@@ -1302,6 +1326,7 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
     h.Counts[0] = NewTexture(renWin);
     h.Counts[1] = NewTexture(renWin);
     h.Mask = NewTexture(renWin);
+    h.Depth = NewTexture(renWin);
     PrepareFramebuffers(renWin, false, { &h.Framebuffer });
   }
   // Previous keeps the method's frame of the last unjittered render (a still accumulation's
@@ -1481,6 +1506,9 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
         program->SetUniformMatrix4x4("toPoint", single(h.ToPoint, 16));
         program->SetUniform4f("previousEye", single(h.PreviousEye, 4));
         program->SetUniform4f("currentEye", single(h.CurrentEye, 4));
+        program->SetUniform4f("previousDepthToEye", single(h.PreviousDepthToEye, 4));
+        program->SetUniform2f("previousJitter", single(h.PreviousJitter, 2));
+        textures.Bind(program, "previousDepthTexture", h.Depth);
       }
       if (keep)
       {
@@ -1504,6 +1532,9 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
   }
   h.Latest = next;
   h.Valid = true;
+  // This render's depth is the one the next render reprojects from; the pass's depth target takes
+  // the texture that held the last one.
+  std::swap(this->DepthTexture, h.Depth);
   if (!still && !hold)
   {
     std::swap(h.Current, h.Previous);
@@ -1522,7 +1553,7 @@ bool vtkOpenGLAntialiasingPass::AntialiasTemporal(const Frame& frame)
   }
   SetTargetWriteState(ostate, frame.X, frame.Y, frame.Width, frame.Height, frame.Composite, true);
   const ScopedTextures textures(h.OutputQuad.Quad->Program,
-    { { "historyTexture", h.Histories[h.Latest] }, { "depthTexture", this->DepthTexture } });
+    { { "historyTexture", h.Histories[h.Latest] }, { "depthTexture", h.Depth } });
   h.OutputQuad.Quad->Render();
   return true;
 }

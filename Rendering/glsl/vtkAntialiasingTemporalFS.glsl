@@ -18,7 +18,9 @@
 //                       and clamped per channel to the range of the 3 x 3 neighbourhood of this
 //                       frame as the delegate rendered it, before the method (frameTexture; what
 //                       the current frame does not support: disocclusions, changed shading); a
-//                       point that was outside the previous view takes the current frame alone.
+//                       point that was outside the previous view, or hidden at the previous
+//                       render behind something nearer (previousDepthTexture: a disocclusion,
+//                       WasOccluded), takes the current frame alone.
 //                       The current frame's weight rises with the distance the history moved,
 //                       from currentWeight at rest to MovingWeight at MovingPixels, and on to 1
 //                       (the current frame alone) at HistoryPixels and more; and it rises with
@@ -74,6 +76,11 @@ uniform sampler2D motionTexture; // the method's motion frame
 uniform mat4 toPoint;
 uniform vec4 currentEye;
 uniform vec4 previousEye;
+// The delegate's depth at the previous render, and the entries (2, 2), (2, 3), (3, 2), (3, 3) of
+// that render's projection, which take its depth to the distance from the eye (EyeDistance).
+uniform sampler2D previousDepthTexture;
+uniform vec4 previousDepthToEye;
+uniform vec2 previousJitter;
 #endif
 #ifdef TEMPORAL_KEEP_UNCHANGED
 uniform sampler2D previousTexture; // the last unjittered render's frame, antialiased by the method
@@ -115,6 +122,47 @@ float ViewTurn(vec3 ndc)
   vec3 before = x * previousEye.w - previousEye.xyz;
   float lengths = length(now) * length(before);
   return lengths > 0.0 ? degrees(acos(clamp(dot(now, before) / lengths, -1.0, 1.0))) : 0.0;
+}
+
+// The distance from the eye, along the direction of view, of the window depth `depth` under a
+// projection whose entries (2, 2), (2, 3), (3, 2), (3, 3) are `m`.
+float EyeDistance(float depth, vec4 m)
+{
+  float z = 2.0 * depth - 1.0;
+  return -(m.y - z * m.w) / (z * m.z - m.x);
+}
+
+// Disocclusion. Where a point was hidden at the previous render behind something nearer (a
+// camera moving past an object uncovers what was behind it), the history at its previous position
+// is the hiding object's, and the clamp does not always see it: over a textured or edged surface
+// the 3 x 3 range spans colours between which the hiding object's may lie. So the previous render's
+// depth is read where the point was (bilinearly over the 2 x 2 texels around it: a plane's window
+// depth is linear across the screen, so a surface seen at a grazing angle matches its own
+// reprojected depth, with no allowance for its slope) and, if it is nearer than the point by
+// OccludedShare of the point's distance or more, the pixel takes the current frame alone. The
+// point is the nearest of the 3 x 3 neighbourhood, as for the motion: a silhouette pixel, which
+// holds some of the object, finds the object where it was. The share allows for the depth
+// buffer's precision and for the nearest point changing places with its neighbours as the view
+// turns.
+const float OccludedShare = 0.02;
+// Whether the point whose window depth at the previous render is `expected` was hidden then; `uv`:
+// where it was (texture coordinates, unjittered). The previous render may have been a jittered one
+// of a still accumulation (`previousJitter`, in pixels: the window centre moved by it, which moves
+// the picture by minus that much).
+bool WasOccluded(vec2 uv, ivec2 size, float expected)
+{
+  vec2 position = uv * vec2(size) - 0.5 - previousJitter;
+  ivec2 base = ivec2(floor(position));
+  vec2 t = position - floor(position);
+  float d[4];
+  for (int k = 0; k < 4; ++k)
+  {
+    ivec2 q = clamp(base + ivec2(k % 2, k / 2), ivec2(0), size - 1);
+    d[k] = texelFetch(previousDepthTexture, q, 0).r;
+  }
+  float was = EyeDistance(mix(mix(d[0], d[1], t.x), mix(d[2], d[3], t.x), t.y), previousDepthToEye);
+  float is = EyeDistance(expected, previousDepthToEye);
+  return was < is - OccludedShare * abs(is);
 }
 
 // The current frame's weight for a pixel whose history moved `moved` pixels since the last frame
@@ -347,9 +395,10 @@ void main()
   }
   float moved = length(motion * vec2(size));
   float weight = CurrentWeight(moved, ViewTurn(ndc));
-  if (weight >= 1.0)
+  if (weight >= 1.0 || WasOccluded(uv, size, previous.z / previous.w * 0.5 + 0.5))
   {
-    // Moved HistoryPixels or turned HistoryDegrees or more: the history is not read.
+    // Moved HistoryPixels or turned HistoryDegrees or more, or hidden at the previous render: the
+    // history is not read.
     gl_FragData[0] = current;
     return;
   }
