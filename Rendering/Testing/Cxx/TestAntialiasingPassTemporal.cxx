@@ -29,8 +29,9 @@
 //   10 degrees about its focal point, does not read the history (the result is exactly the
 //   single-frame pass's render of that view), while a 2-pixel pan or a half-degree turn still
 //   blends it (the result differs from that render);
-// - disocclusion: a camera panned past a sphere in front of a checkered panel; the panel pixels
-//   the sphere hid at the previous render take the single-frame pass's render exactly (the
+// - disocclusion: a camera panned (perspective) or turned (parallel) past a sphere in front of a
+//   checkered panel; the panel pixels the sphere hid at the previous render take the
+//   single-frame pass's render exactly (the
 //   previous render's depth rejects the sphere's history, which the checkerboard's range does
 //   not clamp away), while the rest of the panel blends its history;
 // - resets: a resize, a changed actor colour, a changed input and switching Temporal off and on
@@ -746,13 +747,15 @@ void FastCamera(const PassMethod& method, MessageObserver* messages)
     [camera](int i) { camera->Azimuth(i == 0 ? 0.5 : 10.0); });
 }
 
-// Disocclusion: a perspective camera panned sideways past a small sphere in front of a panel
-// checkered in texels of about 5 pixels, the panel twice as far as the sphere, so that the sphere
-// moves 12 pixels on the screen and the panel 6. The panel pixels the sphere covered at the
-// previous render and no longer comes within 2 pixels of were hidden behind it: their history is
-// the sphere's, which the checkerboard's dark-to-light range does not clamp away, and the depth of
-// the previous render rejects it (the result is exactly the single-frame pass's render of that
-// view), while the rest of the panel keeps blending its history.
+// Disocclusion: a camera moved past a small sphere in front of a panel checkered in texels of
+// about 5 pixels, so that the panel moves 6 pixels on the screen relative to the sphere: a
+// perspective camera panned sideways (the panel twice as far as the sphere: the sphere moves 12
+// pixels, the panel 6), and a parallel camera turned about the sphere (the sphere stays, the panel
+// behind it moves). The panel pixels the sphere covered at the previous render and no longer
+// comes within 2 pixels of were hidden behind it: their history is the sphere's, which the
+// checkerboard's dark-to-light range does not clamp away, and the depth of the previous render
+// rejects it (the result is exactly the single-frame pass's render of that view), while the rest
+// of the panel keeps blending its history.
 void Disocclusion(const PassMethod& method, MessageObserver* messages)
 {
   auto window = vtkMLAAScenes::NewOffscreenWindow(Width, Height);
@@ -770,21 +773,7 @@ void Disocclusion(const PassMethod& method, MessageObserver* messages)
     }
   });
   vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(0.0, 0.0, 1.0);
-  camera->SetFocalPoint(0.0, 0.0, 0.0);
-  camera->SetViewAngle(30.0);
-  camera->SetClippingRange(0.5, 3.0);
-  // A pan of `pixels` pixels at the sphere's distance (the focal point's).
-  auto pan = [camera](double pixels) {
-    const double shift = pixels * 2.0 * std::tan(vtkMath::RadiansFromDegrees(15.0)) / Height;
-    double position[3], focal[3];
-    camera->GetPosition(position);
-    camera->GetFocalPoint(focal);
-    camera->SetPosition(position[0] + shift, position[1], position[2]);
-    camera->SetFocalPoint(focal[0] + shift, focal[1], focal[2]);
-  };
-  // The sphere's pixels at the previous and at the panned view (where the render differs from
-  // one without it), and the single-frame pass's render of the panned view.
+  // The sphere's pixels (where the render differs from one without it), and the render.
   auto covered = [&]() {
     auto with = vtkMLAAScenes::Capture(window);
     sphere->VisibilityOff();
@@ -804,65 +793,107 @@ void Disocclusion(const PassMethod& method, MessageObserver* messages)
     }
     return std::make_pair(mask, with);
   };
-  vtkNew<vtkCamera> saved;
-  saved->DeepCopy(camera);
-  const std::vector<bool> before = covered().first;
-  pan(12.0);
-  const auto after = covered();
-  method.Use(renderer)->AddObserver(vtkCommand::ErrorEvent, messages);
-  auto single = vtkMLAAScenes::Capture(window);
-  StopPass(renderer, window);
+  // Where the panel's centre is on the screen.
+  auto panelCentre = [&](double display[3]) {
+    renderer->SetWorldPoint(0.0, 0.0, -1.0, 1.0);
+    renderer->WorldToDisplay();
+    renderer->GetDisplayPoint(display);
+  };
+  auto check = [&](const char* what, const std::function<void()>& move) {
+    vtkNew<vtkCamera> saved;
+    saved->DeepCopy(camera);
+    const std::vector<bool> before = covered().first;
+    double from[3], to[3];
+    panelCentre(from);
+    move();
+    panelCentre(to);
+    // The panel's move on the screen: its point at (x, y) was at (x + dx, y + dy).
+    const int dx = static_cast<int>(std::lround(from[0] - to[0]));
+    const int dy = static_cast<int>(std::lround(from[1] - to[1]));
+    const auto after = covered();
+    method.Use(renderer)->AddObserver(vtkCommand::ErrorEvent, messages);
+    auto single = vtkMLAAScenes::Capture(window);
+    StopPass(renderer, window);
 
-  camera->DeepCopy(saved);
-  UseTemporal(method, renderer, messages);
-  CaptureAfter(window, 4);
-  pan(12.0);
-  auto result = vtkMLAAScenes::Capture(window);
-  auto near = [&](int x, int y) {
-    for (int j = std::max(y - 2, 0); j <= std::min(y + 2, Height - 1); ++j)
-    {
-      for (int i = std::max(x - 2, 0); i <= std::min(x + 2, Width - 1); ++i)
+    camera->DeepCopy(saved);
+    UseTemporal(method, renderer, messages);
+    CaptureAfter(window, 4);
+    move();
+    auto result = vtkMLAAScenes::Capture(window);
+    auto near = [&](int x, int y) {
+      for (int j = std::max(y - 2, 0); j <= std::min(y + 2, Height - 1); ++j)
       {
-        if (after.first[j * Width + i])
+        for (int i = std::max(x - 2, 0); i <= std::min(x + 2, Width - 1); ++i)
         {
-          return true;
+          if (after.first[j * Width + i])
+          {
+            return true;
+          }
+        }
+      }
+      return false;
+    };
+    vtkIdType revealed = 0, edges = 0, kept = 0, blended = 0;
+    for (int y = 0; y < Height; ++y)
+    {
+      for (int x = 0; x < Width; ++x)
+      {
+        bool same = true;
+        for (int c = 0; c < 3; ++c)
+        {
+          same = same && GetValue(result, x, y, c) == GetValue(single, x, y, c);
+        }
+        const int xb = x + dx, yb = y + dy;
+        if (near(x, y))
+        {
+          continue;
+        }
+        if (xb >= 0 && xb < Width && yb >= 0 && yb < Height && before[yb * Width + xb])
+        {
+          ++revealed;
+          const bool edge = !IsFlatAround(after.second, x, y, 1, 0.0);
+          edges += edge ? 1 : 0;
+          kept += edge && !same ? 1 : 0;
+        }
+        else
+        {
+          blended += same ? 0 : 1;
         }
       }
     }
-    return false;
+    std::cout << method.Name << ", disocclusion, " << what << " (the panel moved " << -dx << ", "
+              << -dy << " pixels): " << revealed << " pixels uncovered, " << edges
+              << " of them beside an edge of the checkerboard, " << kept
+              << " of those differ from the single-frame pass's render; " << blended
+              << " other pixels blended" << std::endl;
+    Check(std::abs(dx) + std::abs(dy) >= 4, "the panel moved", __FILE__, __LINE__);
+    Check(edges > 20, "the move uncovered pixels beside edges", __FILE__, __LINE__);
+    Check(kept == 0, "uncovered pixels do not keep the hidden history", __FILE__, __LINE__);
+    Check(blended > 200, "the rest of the panel blends its history", __FILE__, __LINE__);
+    StopPass(renderer, window);
+    camera->DeepCopy(saved);
   };
-  vtkIdType revealed = 0, edges = 0, kept = 0, blended = 0;
-  for (int y = 0; y < Height; ++y)
-  {
-    for (int x = 0; x < Width; ++x)
-    {
-      bool same = true;
-      for (int c = 0; c < 3; ++c)
-      {
-        same = same && GetValue(result, x, y, c) == GetValue(single, x, y, c);
-      }
-      // The panel moves 6 pixels to the left: its point at x was at x + 6.
-      if (x + 6 < Width && before[y * Width + x + 6] && !near(x, y))
-      {
-        ++revealed;
-        const bool edge = !IsFlatAround(after.second, x, y, 1, 0.0);
-        edges += edge ? 1 : 0;
-        kept += edge && !same ? 1 : 0;
-      }
-      else if (!near(x, y))
-      {
-        blended += same ? 0 : 1;
-      }
-    }
-  }
-  std::cout << method.Name << ", disocclusion: " << revealed << " pixels revealed, " << edges
-            << " of them beside an edge of the checkerboard, " << kept
-            << " of those differ from the single-frame pass's render; " << blended
-            << " other pixels blended" << std::endl;
-  Check(edges > 30, "the pan revealed pixels beside edges", __FILE__, __LINE__);
-  Check(kept == 0, "revealed pixels do not keep the hidden history", __FILE__, __LINE__);
-  Check(blended > 200, "the rest of the panel blends its history", __FILE__, __LINE__);
-  StopPass(renderer, window);
+
+  camera->SetPosition(0.0, 0.0, 1.0);
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetViewAngle(30.0);
+  camera->SetClippingRange(0.5, 3.0);
+  // 12 pixels at the sphere's distance (the focal point's).
+  check("perspective pan", [camera]() {
+    const double shift = 12.0 * 2.0 * std::tan(vtkMath::RadiansFromDegrees(15.0)) / Height;
+    double position[3], focal[3];
+    camera->GetPosition(position);
+    camera->GetFocalPoint(focal);
+    camera->SetPosition(position[0] + shift, position[1], position[2]);
+    camera->SetFocalPoint(focal[0] + shift, focal[1], focal[2]);
+  });
+  // The same scale at the sphere; the panel, 1 behind it, moves sin(angle) on the screen.
+  camera->ParallelProjectionOn();
+  camera->SetParallelScale(std::tan(vtkMath::RadiansFromDegrees(15.0)));
+  const double scale = camera->GetParallelScale();
+  check("parallel turn", [camera, scale]() {
+    camera->Azimuth(vtkMath::DegreesFromRadians(std::asin(6.0 * 2.0 * scale / Height)));
+  });
 }
 
 void Resets(const PassMethod& method, MessageObserver* messages)
