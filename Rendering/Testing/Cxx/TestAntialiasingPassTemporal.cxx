@@ -31,9 +31,9 @@
 //   blends it (the result differs from that render);
 // - disocclusion: a camera panned (perspective) or turned (parallel) past a sphere in front of a
 //   checkered panel; the panel pixels the sphere hid at the previous render take the
-//   single-frame pass's render exactly (the
-//   previous render's depth rejects the sphere's history, which the checkerboard's range does
-//   not clamp away), while the rest of the panel blends its history;
+//   single-frame pass's render exactly (the previous render's depth rejects the sphere's history,
+//   which the checkerboard's range does not clamp away), while the rest of the panel blends its
+//   history;
 // - resets: a resize, a changed actor colour, a changed input and switching Temporal off and on
 //   each give the same image as a new pass's first render (the history is discarded, the jitter
 //   sequence restarts), and so does an actor moving while the camera moves; an actor that only
@@ -51,8 +51,8 @@
 #include "vtkCamera.h"
 #include "vtkHardwareSelector.h"
 #include "vtkIdTypeArray.h"
-#include "vtkMath.h"
 #include "vtkImageCanvasSource2D.h"
+#include "vtkMath.h"
 #include "vtkPlaneSource.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
@@ -678,11 +678,14 @@ void StillAfterOrbit(const PassMethod& method, MessageObserver* messages)
   StopPass(renderer, window);
 }
 
-// A pan of the camera by `pixels` pixels to the right (parallel projection: every point moves
-// by that much on the screen).
+// A pan of the camera by `pixels` pixels to the right, measured at the focal point's distance (a
+// parallel projection: every point moves by that much on the screen).
 void Pan(vtkCamera* camera, double pixels)
 {
-  const double shift = pixels * 2.0 * camera->GetParallelScale() / Height;
+  const double halfHeight = camera->GetParallelProjection()
+    ? camera->GetParallelScale()
+    : camera->GetDistance() * std::tan(vtkMath::RadiansFromDegrees(camera->GetViewAngle() / 2.0));
+  const double shift = pixels * 2.0 * halfHeight / Height;
   double position[3], focal[3];
   camera->GetPosition(position);
   camera->GetFocalPoint(focal);
@@ -838,16 +841,16 @@ void Disocclusion(const PassMethod& method, MessageObserver* messages)
     {
       for (int x = 0; x < Width; ++x)
       {
+        if (near(x, y))
+        {
+          continue;
+        }
         bool same = true;
         for (int c = 0; c < 3; ++c)
         {
           same = same && GetValue(result, x, y, c) == GetValue(single, x, y, c);
         }
         const int xb = x + dx, yb = y + dy;
-        if (near(x, y))
-        {
-          continue;
-        }
         if (xb >= 0 && xb < Width && yb >= 0 && yb < Height && before[yb * Width + xb])
         {
           ++revealed;
@@ -879,14 +882,7 @@ void Disocclusion(const PassMethod& method, MessageObserver* messages)
   camera->SetViewAngle(30.0);
   camera->SetClippingRange(0.5, 3.0);
   // 12 pixels at the sphere's distance (the focal point's).
-  check("perspective pan", [camera]() {
-    const double shift = 12.0 * 2.0 * std::tan(vtkMath::RadiansFromDegrees(15.0)) / Height;
-    double position[3], focal[3];
-    camera->GetPosition(position);
-    camera->GetFocalPoint(focal);
-    camera->SetPosition(position[0] + shift, position[1], position[2]);
-    camera->SetFocalPoint(focal[0] + shift, focal[1], focal[2]);
-  });
+  check("perspective pan", [camera]() { Pan(camera, 12.0); });
   // The same scale at the sphere; the panel, 1 behind it, moves sin(angle) on the screen.
   camera->ParallelProjectionOn();
   camera->SetParallelScale(std::tan(vtkMath::RadiansFromDegrees(15.0)));
