@@ -11,6 +11,7 @@
 #include "vtkAntialiasingKit.h"
 #include "vtkPointData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkVersionMacros.h"
 
 #include <algorithm>
 #include <cmath>
@@ -244,7 +245,7 @@ void vtkImageAntialiasingAlgorithm::ForEachSlice(const Request& r, vtkIdType row
   const int* outExt = r.OutputExtent;
   const int slices = outExt[5] - outExt[4] + 1;
   vtkAntialiasingKit::Progress progress([this](double fraction) { this->UpdateProgress(fraction); },
-    [this]() { return this->GetAbortExecute() != 0; }, slices * rowsPerSlice);
+    [this]() { return this->AbortRequested(); }, slices * rowsPerSlice);
   for (int z = outExt[4]; z <= outExt[5] && !progress.CheckAbort(); ++z)
   {
     slice(z, progress);
@@ -254,6 +255,20 @@ void vtkImageAntialiasingAlgorithm::ForEachSlice(const Request& r, vtkIdType row
     // Cancelled (AbortExecute): nothing half-computed goes downstream.
     r.Output->Initialize();
   }
+}
+
+//------------------------------------------------------------------------------
+bool vtkImageAntialiasingAlgorithm::AbortRequested()
+{
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0)
+  // VTK 9.3 and later: CheckAbort() also sees an abort of an upstream algorithm, and marks the
+  // output aborted, so that the executive neither reports the progress as complete nor lets
+  // downstream algorithms run on it. AbortExecute stays set until the application clears it.
+  return this->CheckAbort();
+#else
+  // VTK 9.1 and 9.2: the executive clears AbortExecute before each execution.
+  return this->GetAbortExecute() != 0;
+#endif
 }
 
 //------------------------------------------------------------------------------

@@ -17,7 +17,9 @@
  * value range, a non-empty image that covers the request), reports what is wrong with
  * vtkErrorMacro and empties the output; an empty request is not an error. ForEachSlice then runs
  * the subclass's work on each z slice, reports progress (ProgressEvent) and honours
- * AbortExecute: an aborted update gives an empty output.
+ * AbortExecute: an aborted update gives an empty output. On VTK 9.3 and later (vtkAlgorithm's
+ * CheckAbort) an abort of an upstream algorithm stops it too, and AbortExecute stays set until
+ * the application clears it, as for VTK's own filters; before 9.3 each update clears it.
  *
  * Values are normalised as (value - lo) / (hi - lo) with [lo, hi] the ValueRange: by default
  * [0, 1] for floating-point images and the range of the type for integer ones.
@@ -130,6 +132,9 @@ protected:
   bool ValueRangeIsTypeDefault = true;
 
 private:
+  // AbortExecute, and on VTK 9.3 and later an upstream abort (CheckAbort).
+  bool AbortRequested();
+
   vtkImageAntialiasingAlgorithm(const vtkImageAntialiasingAlgorithm&) = delete;
   void operator=(const vtkImageAntialiasingAlgorithm&) = delete;
 };

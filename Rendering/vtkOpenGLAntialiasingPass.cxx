@@ -39,7 +39,7 @@
 #include "vtkAntialiasingTemporalFS.h"
 #include "vtkAntialiasingSamplesFS.h"
 
-#include "vtk_glew.h" // For GL enums, and the calls VTK has no wrapper for
+#include "vtkAntialiasingOpenGL.h" // For GL enums, and the calls VTK has no wrapper for
 
 #include <algorithm>
 #include <cmath>

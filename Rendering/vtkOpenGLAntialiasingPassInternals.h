@@ -20,7 +20,7 @@
 #include <utility>
 #include <vector>
 
-#include "vtk_glew.h" // For GL enums only
+#include "vtkAntialiasingOpenGL.h" // For GL enums only
 
 namespace vtkOpenGLAntialiasingPassInternals
 {

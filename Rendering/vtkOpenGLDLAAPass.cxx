@@ -23,7 +23,7 @@
 #include <algorithm>
 #include <string>
 
-#include "vtk_glew.h" // For glDrawArraysInstanced (VTK has no instanced quad) and GL enums
+#include "vtkAntialiasingOpenGL.h" // For glDrawArraysInstanced (VTK has no instanced quad) and GL enums
 
 using namespace vtkOpenGLAntialiasingPassInternals;
 

@@ -35,7 +35,7 @@
 #include <cmath>
 #include <string>
 
-#include "vtk_glew.h" // For GL enums only: every call goes through VTK's classes
+#include "vtkAntialiasingOpenGL.h" // For GL enums only: every call goes through VTK's classes
 
 vtkStandardNewMacro(vtkOpenGLMLAAPass);
 

@@ -6,9 +6,18 @@
 # (-displayfd), so several of these can run at once. -noreset: an X server normally resets when
 # its last client disconnects, and a window opened during the reset fails ("bad X server
 # connection"); tests that close one window and open the next would fail now and then.
+# With MLAA_DISPLAY=egl (the Debian testing root of scripts/testing-root.sh, whose VTK renders
+# through EGL and which has no X server), it starts no Xvfb and runs the command as it is, with
+# DISPLAY unset and VTK's EGL window chosen.
 #   scripts/with-xvfb.sh COMMAND [ARGUMENTS...]
 set -euo pipefail
 (($# > 0)) || { echo "usage: with-xvfb.sh COMMAND [ARGUMENTS...]" >&2; exit 2; }
+
+if [ "${MLAA_DISPLAY:-}" = egl ]; then
+  unset DISPLAY
+  export VTK_DEFAULT_OPENGL_WINDOW=vtkEGLRenderWindow
+  exec "$@"
+fi
 
 display_file="$(mktemp)"
 Xvfb -displayfd 3 -screen 0 1280x1024x24 -nolisten tcp -noreset 3>"$display_file" 2>/dev/null &

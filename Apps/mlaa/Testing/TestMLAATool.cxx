@@ -86,6 +86,14 @@ int main(int argc, char* argv[])
   {
     found->second();
   }
+  catch (const SkippedCase& skipped)
+  {
+    std::cout << "skipped: " << skipped.what() << std::endl;
+    if (!Failures())
+    {
+      return SkipStatus;
+    }
+  }
   catch (const std::exception& e)
   {
     std::cerr << "exception: " << e.what() << std::endl;

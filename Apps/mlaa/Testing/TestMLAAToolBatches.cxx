@@ -137,11 +137,7 @@ void BatchProgressBar()
   const std::vector<fs::path> inputs = BatchInputs(WorkFile("in"));
   const fs::path out = WorkFile("out");
   fs::create_directory(out);
-  const int master = posix_openpt(O_RDWR | O_NOCTTY);
-  if (!MLAA_CHECK(master >= 0 && grantpt(master) == 0 && unlockpt(master) == 0))
-  {
-    return;
-  }
+  const int master = OpenTerminal();
   const std::string terminal = ptsname(master);
   std::vector<std::string> command = { Where().Tool, "--jobs", "2", "--output-dir", out.string() };
   const std::vector<std::string> names = Strings(inputs);

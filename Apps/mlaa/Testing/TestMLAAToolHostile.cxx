@@ -162,7 +162,13 @@ void HostileHugeHeaders()
     const Run run = RunTool({ input.string(), output.string() }, {}, 20.0);
     MLAA_CHECK(!run.TimedOut && run.Status == 1 && IsCleanErrorLine(run.Err, input.string()));
     MLAA_CHECK(run.Seconds < 10.0);
-    MLAA_CHECK(run.Err.find("pixels") != std::string::npos);
+    // The tool's own check names the pixels; OpenImageIO 3 refuses such headers itself first,
+    // naming the size in MB.
+    if (!MLAA_CHECK(run.Err.find("pixels") != std::string::npos ||
+          run.Err.find(" MB") != std::string::npos))
+    {
+      std::cout << "  the error names neither the pixels nor the size: " << run.Err << std::endl;
+    }
     MLAA_CHECK(!fs::exists(output) && TemporaryFiles(Where().Work) == 0);
   }
 
@@ -355,6 +361,12 @@ void HostileOutputFormats()
                                                                 OIIO::TypeDesc::UINT8 },
     { VTK_FLOAT, OIIO::TypeDesc::FLOAT } };
   int succeeded = 0, refused = 0;
+  // HEIF must work where the library has an encoder (mlaa-heif-output skips where it has not).
+  const std::string noHeif = WriterUnavailable("heic");
+  if (!noHeif.empty())
+  {
+    std::cout << "  HEIF output is not required here: " << noHeif << std::endl;
+  }
   for (int channels = 1; channels <= 4; ++channels)
   {
     for (const auto& type : types)
@@ -401,7 +413,8 @@ void HostileOutputFormats()
           (extension == "dpx" && channels == 2);
         const bool mustWork = extension == "png" || extension == "tif" || extension == "exr" ||
           extension == "jpg" || extension == "sgi" || extension == "tga" ||
-          (extension == "heic" && channels >= 3) || (extension == "dpx" && channels != 2);
+          (extension == "heic" && channels >= 3 && noHeif.empty()) ||
+          (extension == "dpx" && channels != 2);
         if (broken)
         {
           MLAA_CHECK(run.Status == 1);
@@ -473,8 +486,15 @@ void HostileCorpus()
     }
     fs::remove(input);
   };
+  const std::string noHeif = WriterUnavailable("heic");
   for (const std::string& format : formats)
   {
+    if (format == "heic" && !noHeif.empty())
+    {
+      // No valid HEIF file to start from (mlaa-heif-output skips here); the others still run.
+      std::cout << "  no HEIF seed: " << noHeif << std::endl;
+      continue;
+    }
     const int channels = (format == "pgm") ? 1 : (format == "ppm" || format == "hdr" || format == "jpg") ? 3 : 4;
     const fs::path seed = WorkFile("seed." + format);
     const int type = format == "exr" || format == "hdr" ? VTK_FLOAT : VTK_UNSIGNED_CHAR;
@@ -499,6 +519,31 @@ void HostileCorpus()
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cout << "  " << cases << " hostile files in " << seconds << " s: " << succeeded
             << " antialiased, " << cases - succeeded << " refused" << std::endl;
+}
+
+// HEIF output (a codec of its own in libheif, which some builds lack: then the case is skipped):
+// 3 and 4 channels of 8 bits are written with their size and channels, and read back.
+void HeifOutput()
+{
+  const std::string unavailable = WriterUnavailable("heic");
+  if (!unavailable.empty())
+  {
+    Skip(unavailable);
+  }
+  for (int channels : { 3, 4 })
+  {
+    const fs::path input = WorkFile("in" + std::to_string(channels) + ".png");
+    WriteFile(HostileSeedImage(channels, VTK_UNSIGNED_CHAR, 33, 17), input, OIIO::TypeDesc::UINT8);
+    const fs::path output = WorkFile("out.heic");
+    const Run run = RunTool({ input.string(), output.string() }, {}, 60.0);
+    if (MLAA_CHECK(CheckOutcome(run, output, std::to_string(channels) + " channels to .heic")))
+    {
+      auto back = OIIO::ImageInput::open(output.string());
+      MLAA_CHECK(back && back->spec().width == 33 && back->spec().height == 17 &&
+        back->spec().nchannels == channels);
+      fs::remove(output);
+    }
+  }
 }
 
 void RandomFiles(unsigned seed, int count)
@@ -649,6 +694,7 @@ static const bool Registered = RegisterCases({
   { "hostile-library-exceptions", HostileLibraryExceptions },
   { "hostile-output-formats", HostileOutputFormats },
   { "hostile-corpus", HostileCorpus },
+  { "heif-output", HeifOutput },
   { "random-files-a", RandomFilesA },
   { "random-files-b", RandomFilesB },
   { "crash-surfaced", CrashSurfaced } });

@@ -353,21 +353,18 @@ void StandardStreams()
     MLAA_CHECK(run.Err.compare(0, r.Message.size(), r.Message) == 0);
     MLAA_CHECK(Listing(Where().Work) == listing);
   }
+}
 
-  // A terminal as standard input: the user forgot the redirection; refused, not waited on.
-  const int master = posix_openpt(O_RDWR | O_NOCTTY);
-  if (MLAA_CHECK(master >= 0 && grantpt(master) == 0 && unlockpt(master) == 0))
-  {
-    const Run run = RunTool({ "-", WorkFile("from-terminal.png").string() }, {}, 30.0, false,
-      ptsname(master));
-    MLAA_CHECK(run.Status == Failure && !run.TimedOut && IsOneMlaaLine(run.Err));
-    MLAA_CHECK(run.Err.find("mlaa: standard input: is a terminal") == 0);
-    MLAA_CHECK(!fs::exists(WorkFile("from-terminal.png")));
-  }
-  if (master >= 0)
-  {
-    close(master);
-  }
+// A terminal as standard input: the user forgot the redirection; refused, not waited on.
+void StandardInputTerminal()
+{
+  const int master = OpenTerminal();
+  const Run run = RunTool({ "-", WorkFile("from-terminal.png").string() }, {}, 30.0, false,
+    ptsname(master));
+  MLAA_CHECK(run.Status == Failure && !run.TimedOut && IsOneMlaaLine(run.Err));
+  MLAA_CHECK(run.Err.find("mlaa: standard input: is a terminal") == 0);
+  MLAA_CHECK(!fs::exists(WorkFile("from-terminal.png")));
+  close(master);
 }
 } // namespace
 
@@ -375,5 +372,6 @@ static const bool Registered = RegisterCases({
   { "output-killed-leaves-nothing", OutputKilled },
   { "input-opened-once", InputOpenedOnce },
   { "damaged-compressed-tiff", DamagedCompressedTIFF },
-  { "standard-streams", StandardStreams } });
+  { "standard-streams", StandardStreams },
+  { "standard-input-terminal", StandardInputTerminal } });
 } // namespace mlaaToolTest

@@ -86,6 +86,52 @@ void WriteFile(vtkImageData* image, const fs::path& path, OIIO::TypeDesc fileTyp
   out->close();
 }
 
+void Skip(const std::string& why)
+{
+  throw SkippedCase(why);
+}
+
+int OpenTerminal()
+{
+  const int master = posix_openpt(O_RDWR | O_NOCTTY);
+  if (master < 0 || grantpt(master) != 0 || unlockpt(master) != 0)
+  {
+    const std::string why = std::strerror(errno);
+    if (master >= 0)
+    {
+      close(master);
+    }
+    Skip("no pseudo-terminal can be opened here (" + why + "; is /dev/pts mounted?)");
+  }
+  return master;
+}
+
+std::string WriterUnavailable(const std::string& extension)
+{
+  const fs::path probe = WorkFile("writer-probe." + extension);
+  auto out = OIIO::ImageOutput::create(probe.string());
+  std::string why;
+  OIIO::ImageSpec spec(16, 16, 3, OIIO::TypeDesc::UINT8);
+  std::vector<unsigned char> pixels(16 * 16 * 3, 128);
+  if (!out)
+  {
+    why = OIIO::geterror();
+  }
+  else if (!out->open(probe.string(), spec) ||
+    !out->write_image(OIIO::TypeDesc::UINT8, pixels.data()) || !out->close())
+  {
+    why = out->geterror();
+  }
+  out.reset();
+  std::error_code ignored;
+  fs::remove(probe, ignored);
+  if (!why.empty())
+  {
+    return "OpenImageIO cannot write ." + extension + " files here: " + why;
+  }
+  return "";
+}
+
 FileImage ReadFile(const fs::path& path)
 {
   OIIO::ImageSpec config;

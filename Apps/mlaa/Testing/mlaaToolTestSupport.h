@@ -26,6 +26,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <cstring>
@@ -218,6 +219,24 @@ fs::path GoodInput(const std::string& name = "in.png");
 
 // A case: its checks fail through MLAA_CHECK (vtkAntialiasingTestUtilities.h).
 using Case = void (*)();
+
+// What a case throws when this machine cannot run it (no pseudo-terminal, a codec OpenImageIO
+// lacks here): the driver prints "skipped: WHY" and exits with SkipStatus, which CTest counts as
+// skipped (SKIP_RETURN_CODE), never as passed. Checks that failed before still fail the case.
+struct SkippedCase : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+constexpr int SkipStatus = 77;
+[[noreturn]] void Skip(const std::string& why);
+
+// A pseudo-terminal's master side (posix_openpt, granted and unlocked), for the cases that give
+// the tool a terminal; skips the case where none can be opened. Close it when done.
+int OpenTerminal();
+
+// Why OpenImageIO cannot write a small RGB image as EXTENSION here (a format whose codec this
+// build of the library lacks, such as HEIF without libheif's encoder plugins), or "" if it can.
+std::string WriterUnavailable(const std::string& extension);
 
 // The cases by name, as the groups register them (RegisterCases). CMakeLists.txt lists the
 // names once, as the tests' names without "mlaa-"; the driver runs one by name, and the test

@@ -14,7 +14,7 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
-#include "vtk_glew.h"
+#include "vtkAntialiasingOpenGL.h"
 #include "vtkMLAAOptions.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLDLAAPass.h"
