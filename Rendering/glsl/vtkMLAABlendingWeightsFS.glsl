@@ -93,10 +93,13 @@ const int cellSize = 2 * MLAA_MAX_SEARCH_STEPS + 1; // D, the area texture's cel
 
 vec2 edgesSize;
 
-// Bilinear read of the edges texture at a position in texels (texel i covers [i, i + 1]).
+// Bilinear read of the edges texture at a position in texels (texel i covers [i, i + 1]). At
+// level 0 explicitly: the reads are made in loops and branches that differ between neighbouring
+// pixels, where the derivatives an implicit level of detail needs are undefined (GLSL 4.50,
+// section 8.9).
 vec2 edgesAt(vec2 position)
 {
-  return texture(edgesTexture, position / edgesSize).rg;
+  return textureLod(edgesTexture, position / edgesSize, 0.0).rg;
 }
 
 // The edgels of a square of 2 x 2 pixels, from one bilinear fetch at `position`, which lies
@@ -149,9 +152,14 @@ int searchLine(vec2 center, bool vertical, float direction, out int code)
     ivec2 own = edgelBits(center + vec2(-1.0 / 3.0, 0.2));
     near = vertical ? crossingCode(own.g, 8, 4) : crossingCode(own.r, 8, 2);
   }
+  // The first pair's fetch position along the line; each step moves it two pixels. (Written
+  // as the same sum inside the loop, Mesa 26.1's llvmpipe dropped the 1/3 at one pixel of
+  // TestMLAAPassLongLines, whose fetches then read the pair's first pixel alone: the line came
+  // out one pixel longer there. Hoisted, every driver tested reads the pairs as written.)
+  float first = (vertical ? center.y : center.x) + direction * (4.0 / 3.0);
   for (int i = 0; i <= maxSearchSteps; ++i)
   {
-    float along = (vertical ? center.y : center.x) + direction * (float(2 * i + 1) + 1.0 / 3.0);
+    float along = first + direction * float(2 * i);
     ivec2 bits = edgelBits(vertical ? vec2(center.x - 0.2, along) : vec2(along, center.y + 0.2));
     int edgels = vertical ? bits.r : bits.g;
     int crossings = vertical ? bits.g : bits.r;

@@ -283,12 +283,34 @@ inline void CheckBaseline(int argc, char* argv[], const std::string& name, vtkRe
     Check(false, "baseline present", __FILE__, __LINE__);
     return;
   }
-  const Difference d = Compare(result, baseline, 2.0);
+  // Alternatives, as VTK's tester takes them: <name>_1.png, <name>_2.png, ... beside the
+  // baseline, for what legitimately differs between platforms (VTK 9.6 draws the overlays'
+  // scalar bar otherwise than 9.1). The nearest one is the one compared.
+  Difference d = Compare(result, baseline, 2.0);
+  std::string chosen = baselinePath;
+  const std::string stem = baselinePath.substr(0, baselinePath.size() - 4); // without ".png"
+  for (int k = 1; d.Count != 0; ++k)
+  {
+    const std::string alternative = stem + "_" + std::to_string(k) + ".png";
+    auto other = ReadPNG(alternative);
+    if (!other)
+    {
+      break;
+    }
+    const Difference e = Compare(result, other, 2.0);
+    if (e.Count >= 0 && (d.Count < 0 || e.Count < d.Count))
+    {
+      d = e;
+      baseline = other;
+      chosen = alternative;
+    }
+  }
+  std::cout << name << ": compared with " << chosen << std::endl;
   if (!Check(d.Count == 0, "result within 2/255 of the baseline", __FILE__, __LINE__))
   {
     WritePNG(result, resultPath);
-    std::cerr << d.Pixels << " pixels differ from the baseline by more than 2/255 (largest "
-              << d.Max << "); the result is in " << resultPath << std::endl;
+    std::cerr << d.Pixels << " pixels differ from the nearest baseline by more than 2/255 "
+              << "(largest " << d.Max << "); the result is in " << resultPath << std::endl;
   }
   Check(Compare(plain, baseline, 0.0).Pixels > minChanged, "the baseline is antialiased",
     __FILE__, __LINE__);
