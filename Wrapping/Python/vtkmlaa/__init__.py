@@ -17,8 +17,9 @@ The classes are VTK's own Python wrappings of the C++ classes (the same names an
 Two conveniences for the common cases:
 
 - ``enable(renderer, method="mlaa", preset=None, **options)`` installs a pass on a renderer
-  (``vtkmlaa.enable(plotter.renderer)`` for PyVista-style plotters); ``disable(renderer)``
-  removes it;
+  or on a PyVista plotter (``vtkmlaa.enable(plotter)``, which PyVista's own effects may come
+  before); ``disable(renderer)`` removes it; ``render_still(renderer)`` renders a temporal pass
+  until its still has converged;
 - ``antialias_array(array, method="mlaa", preset=None, **options)`` antialiases a numpy array.
 """
 
@@ -152,8 +153,82 @@ def _configure(options_object, method, preset, options, extra_targets=()):
     _apply_options(options, (options_object,) + tuple(extra_targets), method)
 
 
-def enable(renderer, method="mlaa", preset=None, temporal=False, multisamples=0, **options):
+def _plotter_renderers(target):
+    """(renderers, plotter): a vtkRenderer alone, or a PyVista-style plotter's renderers (its
+    active one, or with every_renderer all of them) and the plotter itself."""
+    if isinstance(target, _vtkRenderingCore.vtkRenderer):
+        return [target], None
+    renderer = getattr(target, "renderer", None)
+    if isinstance(renderer, _vtkRenderingCore.vtkRenderer):
+        return [renderer], target
+    raise TypeError("expected a vtkRenderer or a PyVista Plotter (an object with a .renderer), "
+                    "not %s" % type(target).__name__)
+
+
+def _is_plain_steps(render_pass):
+    """Whether a pass is the vtkRenderStepsPass enable() gives a pass of ours by default."""
+    return render_pass is not None and render_pass.GetClassName() == "vtkRenderStepsPass"
+
+
+def _foreign_pass(renderer):
+    """The render pass another library installed on the renderer (PyVista's effects: eye-dome
+    lighting, SSAO, shadows, SSAA, blur, depth of field), or None: the renderer's pass, or the
+    delegate of the pass of ours that wraps it; None when there is no such pass."""
+    current = renderer.GetPass()
+    if isinstance(current, vtkOpenGLAntialiasingPass):
+        current = current.GetDelegatePass()
+    if current is None or _is_plain_steps(current):
+        return None
+    return current
+
+
+def _pass_chain(render_pass, depth=0):
+    """The class names of a pass and of the passes it runs (its delegate, the passes of a
+    sequence), outermost first (for messages)."""
+    if render_pass is None or depth > 8:
+        return []
+    names = [render_pass.GetClassName()]
+    get_delegate = getattr(render_pass, "GetDelegatePass", None)
+    if get_delegate is not None:
+        names += _pass_chain(get_delegate(), depth + 1)
+    get_passes = getattr(render_pass, "GetPasses", None)
+    passes = get_passes() if get_passes is not None else None
+    if passes is not None:
+        passes.InitTraversal()
+        for _ in range(passes.GetNumberOfItems()):
+            names += _pass_chain(passes.GetNextRenderPass(), depth + 1)
+    return names
+
+
+def _render_plotter(plotter):
+    """Have a plotter draw again with its renderers' new passes, so that its next screenshot()
+    shows them: PyVista renders lazily and would return the image it already has."""
+    render = getattr(plotter, "render", None)
+    window = getattr(plotter, "render_window", None)
+    if callable(render) and window is not None:
+        render()
+
+
+def enable(renderer, method="mlaa", preset=None, temporal=False, multisamples=0,
+           every_renderer=False, **options):
     """Antialias everything a renderer draws, with a render pass; returns the pass.
+
+    renderer: a vtkRenderer, or a PyVista Plotter (pyvista.Plotter, or any object whose
+    .renderer is a vtkRenderer): its active renderer, or with every_renderer=True each of its
+    renderers (subplots; the pass of the active one is returned). With a plotter, the plotter is
+    rendered again, so that its next screenshot() is antialiased.
+
+    Calling enable() again replaces the renderer's pass: the old pass's graphics resources are
+    released first, in its window's context.
+
+    A pass that PyVista (or another library) installed for its own effects, such as eye-dome
+    lighting, SSAO, shadows or SSAA (enable_eye_dome_lighting(), enable_ssao(),
+    enable_shadows(), enable_anti_aliasing("ssaa")), becomes the antialiasing pass's delegate:
+    the effect is drawn as before, then antialiased. That needs the single-sample mode:
+    temporal=True and multisamples > 0 raise ValueError there, naming the pass, since their
+    jittered and multisampled renders would bypass the effect. Enable such effects before
+    vtkmlaa (an effect enabled after it installs its own pass in its place; enable() again puts
+    the antialiasing back on top). The overlays (text, scalar bars) are then antialiased too.
 
     Installs a vtkRenderStepsPass (VTK's usual steps: lights, opaque and translucent geometry,
     volumes, overlays) wrapped in a vtkOpenGLMLAAPass (method="mlaa") or vtkOpenGLDLAAPass
@@ -188,35 +263,55 @@ def enable(renderer, method="mlaa", preset=None, temporal=False, multisamples=0,
     sample is shaded at its own position, so that texture and colour edges are sampled too;
     sample_shading=False (an option of the pass) shades once per pixel, as multisampling does.
 
-    With a PyVista-style plotter: vtkmlaa.enable(plotter.renderer).
+    With a PyVista plotter: vtkmlaa.enable(plotter); plotter.screenshot(...).
     """
-    if not isinstance(renderer, _vtkRenderingCore.vtkRenderer):
-        raise TypeError("enable() needs a vtkRenderer, not %s" % type(renderer).__name__)
+    renderers, plotter = _plotter_renderers(renderer)
+    if plotter is not None and every_renderer:
+        renderers = [r for r in getattr(plotter, "renderers", renderers)
+                     if isinstance(r, _vtkRenderingCore.vtkRenderer)] or renderers
     _, pass_class, _ = _method_classes(method)
     if isinstance(multisamples, bool) or not isinstance(multisamples, int) or \
             not 0 <= multisamples <= 16:
         raise ValueError("multisamples must be an integer from 0 to 16 (0: single-sample), "
                          "got %r" % (multisamples,))
-    aa_pass = pass_class()
-    _configure(aa_pass.GetOptions(), method, preset, options, extra_targets=(aa_pass,))
-    aa_pass.SetTemporal(bool(temporal))
-    aa_pass.SetMultiSamples(multisamples)
-    steps = _vtkRenderingOpenGL2.vtkRenderStepsPass()
-    aa_pass.SetDelegatePass(steps)
-    renderer.SetPass(aa_pass)
-    window = renderer.GetRenderWindow()
-    if window is not None:
-        window.SetMultiSamples(0)
-    else:
-        warnings.warn("vtkmlaa.enable(): the renderer has no render window yet; call "
-                      "SetMultiSamples(0) on the window it goes into (or call enable() after "
-                      "AddRenderer)", stacklevel=2)
-    return aa_pass
+    # Every check before any renderer changes: an error leaves them all as they were.
+    for target in renderers:
+        foreign = _foreign_pass(target)
+        if foreign is not None and (temporal or multisamples):
+            raise ValueError(
+                "vtkmlaa.enable(): the renderer already has another render pass (%s, an effect "
+                "such as PyVista's eye-dome lighting, SSAO, shadows or SSAA); %s cannot wrap it. "
+                "Use the single-sample mode with it, or disable the effect first"
+                % (" -> ".join(_pass_chain(foreign)),
+                   "temporal=True" if temporal else "multisamples=%d" % multisamples))
+    passes = []
+    for target in renderers:
+        aa_pass = pass_class()
+        _configure(aa_pass.GetOptions(), method, preset, options, extra_targets=(aa_pass,))
+        aa_pass.SetTemporal(bool(temporal))
+        aa_pass.SetMultiSamples(multisamples)
+        disable(target)  # releases a pass of ours that enable() installed before
+        foreign = _foreign_pass(target)
+        aa_pass.SetDelegatePass(foreign if foreign is not None
+                                else _vtkRenderingOpenGL2.vtkRenderStepsPass())
+        target.SetPass(aa_pass)
+        window = target.GetRenderWindow()
+        if window is not None:
+            window.SetMultiSamples(0)
+        elif plotter is None:
+            warnings.warn("vtkmlaa.enable(): the renderer has no render window yet; call "
+                          "SetMultiSamples(0) on the window it goes into (or call enable() "
+                          "after AddRenderer)", stacklevel=2)
+        passes.append(aa_pass)
+    if plotter is not None:
+        _render_plotter(plotter)
+    return passes[0]
 
 
 def render_still(renderer, frames=None):
     """Render the renderer's window until its antialiasing pass holds a converged still; returns
-    the number of renders.
+    the number of renders. renderer: a vtkRenderer or a PyVista plotter (its active renderer;
+    then plotter.screenshot() shows the converged picture).
 
     With a temporal pass (enable(..., temporal=True)), the window is rendered until the pass has
     averaged `frames` renders of the unchanged scene (vtkOpenGLAntialiasingPass.RenderConverged;
@@ -224,8 +319,8 @@ def render_still(renderer, frames=None):
     temporal, the window is rendered once. A screenshot taken next (vtkWindowToImageFilter renders
     once more) shows the converged picture.
     """
-    if not isinstance(renderer, _vtkRenderingCore.vtkRenderer):
-        raise TypeError("render_still() needs a vtkRenderer, not %s" % type(renderer).__name__)
+    renderers, _ = _plotter_renderers(renderer)
+    renderer = renderers[0]
     window = renderer.GetRenderWindow()
     if window is None:
         raise ValueError("render_still(): the renderer is in no render window")
@@ -240,19 +335,32 @@ def render_still(renderer, frames=None):
     return aa_pass.RenderConverged(window)
 
 
-def disable(renderer):
+def disable(renderer, every_renderer=False):
     """Remove the antialiasing pass that enable() installed (any vtkOpenGLAntialiasingPass) from
-    a renderer; returns True if there was one. Multisampling stays off."""
-    current = renderer.GetPass()
-    if not isinstance(current, vtkOpenGLAntialiasingPass):
-        return False
-    window = renderer.GetRenderWindow()
-    if window is not None:
-        # The pass's textures and shaders belong to the window's context: free them now, while
-        # the pass is still known (the renderer frees only its current pass's resources).
-        current.ReleaseGraphicsResources(window)
-    renderer.SetPass(None)
-    return True
+    a renderer, or from a PyVista plotter's active renderer (every_renderer: all of them), and
+    release its graphics resources; returns True if there was one. A pass it wrapped (a PyVista
+    effect) becomes the renderer's pass again. Multisampling stays off. A plotter is rendered
+    again, so that its next screenshot() is without the pass."""
+    renderers, plotter = _plotter_renderers(renderer)
+    if plotter is not None and every_renderer:
+        renderers = [r for r in getattr(plotter, "renderers", renderers)
+                     if isinstance(r, _vtkRenderingCore.vtkRenderer)] or renderers
+    removed = False
+    for target in renderers:
+        current = target.GetPass()
+        if not isinstance(current, vtkOpenGLAntialiasingPass):
+            continue
+        delegate = current.GetDelegatePass()
+        window = target.GetRenderWindow()
+        if window is not None:
+            # The pass's textures and shaders belong to the window's context: free them now,
+            # while the pass is still known (the renderer frees only its current pass's).
+            current.ReleaseGraphicsResources(window)
+        target.SetPass(None if delegate is None or _is_plain_steps(delegate) else delegate)
+        removed = True
+    if removed and plotter is not None:
+        _render_plotter(plotter)
+    return removed
 
 
 def antialias_array(array, method="mlaa", preset=None, **options):
