@@ -32,8 +32,13 @@ packages=(
   paraview paraview-dev   # pvbatch, pvpython, the libraries, headers and CMake package
   openmpi-bin             # mpirun, for the tests on two ranks
   python3-numpy           # paraview.simple's numpy support in the tests
-  xvfb xauth libgl1-mesa-dri
+  libgl1-mesa-dri
 )
+# Xvfb for the tests, except where VTK renders through EGL (MLAA_DISPLAY=egl, the testing root,
+# which has no X server).
+if [ "${MLAA_DISPLAY:-}" != egl ]; then
+  packages+=(xvfb xauth)
+fi
 missing=()
 for package in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
@@ -66,7 +71,7 @@ series="$(cd /usr/$libdir/cmake && ls -d paraview-* | sed -n 's/^paraview-//p' |
 [ -n "$series" ] || { echo "install-paraview: no ParaView CMake package in /usr/$libdir/cmake" >&2; exit 1; }
 stamp="$root_dir/.version"
 if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$version" ] &&
-  [ -f "$root_dir/python-path/paraview/simple.py" ] &&
+  [ -f "$root_dir/python-path/paraview/__init__.py" ] &&
   [ -f "$prefix_dir/$libdir/cmake/paraview-$series/paraview-config.cmake" ]; then
   echo "install-paraview: ParaView $version already laid out in $root_dir"
   exit 0
@@ -103,7 +108,9 @@ mkdir "$prefix_dir/$libdir/cmake"
 ln -s /usr/$libdir/cmake/* "$prefix_dir/$libdir/cmake/"
 rm "$prefix_dir/$libdir/cmake/paraview-$series"
 cp -r /usr/$libdir/cmake/paraview-$series "$prefix_dir/$libdir/cmake/"
-for file in $(dpkg -L paraview paraview-dev | grep '^/usr/bin/'); do
+installed_python=()
+[ "$private_dir" != / ] || installed_python=(python3-paraview)
+for file in $(dpkg -L paraview paraview-dev "${installed_python[@]}" | grep '^/usr/bin/'); do
   ln -sf "$file" "$prefix_dir/bin/"
 done
 if [ "$private_dir" != / ]; then
@@ -115,9 +122,10 @@ if [ "$private_dir" != / ]; then
   for file in "$private_dir"/usr/bin/*; do
     ln -sf "$(cd "$(dirname "$file")" && pwd)/$(basename "$file")" "$prefix_dir/bin/"
   done
-  # python3-paraview ships pvpython3.X; its package (and the CMake package) also name pvpython.
-  [ -e "$prefix_dir/bin/pvpython" ] || ln -sf "$(cd "$prefix_dir/bin" && ls pvpython3.* | head -n1)" \
-    "$prefix_dir/bin/pvpython"
+fi
+# python3-paraview ships pvpython3.X; its package (and the CMake package) also name pvpython.
+if [ ! -e "$prefix_dir/bin/pvpython" ]; then
+  ln -sf "$(cd "$prefix_dir/bin" && ls pvpython3.* | head -n1)" "$prefix_dir/bin/pvpython"
 fi
 
 # Makes the prefix's directory $1 (relative) a real one, each level down: a linked directory is

@@ -6,6 +6,10 @@
 # tree mounted at /src. There is no X server in the root: VTK renders through EGL (Mesa's
 # llvmpipe), and DISPLAY is unset.
 #   scripts/testing-root.sh [COMMAND [ARGUMENTS...]]   (no command: only make or update the root)
+# With MLAA_TESTING_ROOT_X11=1 and DISPLAY set (an X server of the host's, such as
+# scripts/with-xvfb.sh starts), the command gets that display (/tmp/.X11-unix and DISPLAY): for
+# comparing VTK 9.6's GLX renders with its EGL ones (scripts/baseline-portability.sh). The tests
+# never use it.
 # The root lies at $MLAA_TESTING_ROOT (default /var/lib/vtkmlaa/testing-root), outside the source
 # tree, so that later clones and CI runs on the same machine reuse it. Making it takes
 # debootstrap (installed here if missing), about a minute, and then its packages, 3 to 6
@@ -63,10 +67,20 @@ in_root() {
     mount --rbind /dev "$root/dev"
     mkdir -p "$root/src"
     mount --bind "$source_dir" "$root/src"
+    display=()
+    if [ "${MLAA_TESTING_ROOT_X11:-}" = 1 ] && [ -n "${DISPLAY:-}" ]; then
+      mkdir -p "$root/tmp/.X11-unix"
+      mount --bind /tmp/.X11-unix "$root/tmp/.X11-unix"
+      display=(DISPLAY="$DISPLAY" LIBGL_ALWAYS_SOFTWARE=1)
+    fi
+    # The host names as the machine has them: ParaView'"'"'s client-server tests connect to the
+    # server by this machine'"'"'s name.
     cp -L /etc/resolv.conf "$root/etc/resolv.conf" 2>/dev/null || true
+    cp -L /etc/hosts "$root/etc/hosts" 2>/dev/null || true
+    hostname >"$root/etc/hostname" 2>/dev/null || true
     exec chroot "$root" /usr/bin/env -i PATH=/usr/local/bin:/usr/bin:/bin:/usr/sbin:/sbin \
       HOME=/root LANG=C.UTF-8 TERM="${TERM:-dumb}" CI="${CI:-}" \
-      MLAA_FUZZ_SECONDS="${MLAA_FUZZ_SECONDS:-}" "$@"
+      MLAA_FUZZ_SECONDS="${MLAA_FUZZ_SECONDS:-}" "${display[@]}" "$@"
   ' in_root "$root" "$source_dir" "$@"
 }
 

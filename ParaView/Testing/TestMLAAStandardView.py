@@ -93,10 +93,7 @@ for source, colour in ((sphere, [0.9, 0.6, 0.1]),
     display.Ambient = 1.0
     display.Diffuse = 0.0
 if args.ranks > 1:
-    ids = sm.Fetch(ProcessIdScalars(Input=sphere)).GetPointData().GetArray("ProcessId")
-    owners = ids.GetRange()
-    t.check(owners == (0.0, args.ranks - 1.0),
-            "the sphere is split across the ranks (process ids %s), so IceT composites" % (owners,))
+    t.check_split(sphere, args.ranks, "sphere")
 view.CameraPosition = [0.4, 0.5, 4.0]
 view.CameraFocalPoint = [0.0, 0.0, 0.0]
 view.CameraViewUp = [0.2, 1.0, 0.0]

@@ -86,11 +86,23 @@ def show_view_scene(view):
     return size, sphere
 
 
+def process_id_range(source):
+    """The range of the ids of the ranks that hold `source`'s points, from the data information
+    of ParaView 6's ProcessIds filter (point array PointProcessIds) or of ParaView 5.11's
+    ProcessIdScalars (ProcessId), which 6 no longer has. (On 6.1, Fetch() of ProcessIds on two
+    ranks drops the array, so the data information is read, which covers every rank.)"""
+    if hasattr(simple, "ProcessIds"):
+        ids, name = simple.ProcessIds(Input=source), "PointProcessIds"
+    else:
+        ids, name = simple.ProcessIdScalars(Input=source), "ProcessId"
+    ids.UpdatePipeline()
+    return tuple(ids.PointData[name].GetRange())
+
+
 def check_split(source, ranks, what):
     """Checks that the data of `source` lies on every one of `ranks` ranks (process ids 0 to
     ranks - 1), so that IceT composites it."""
-    owners = sm.Fetch(simple.ProcessIdScalars(Input=source)).GetPointData().GetArray(
-        "ProcessId").GetRange()
+    owners = process_id_range(source)
     check(owners == (0.0, ranks - 1.0),
           "the %s is split across the ranks (process ids %s), so IceT composites" % (what, owners))
 
