@@ -4,7 +4,10 @@
 # Installs what is needed, builds vtkMLAA with its tests, and runs every test (rendering tests
 # offscreen under Xvfb; the Python package's tests with /usr/bin/python3). Then builds the
 # ParaView plugin against Debian's ParaView 5.11 and runs its pvbatch tests on one and two MPI
-# ranks (scripts/test-paraview.sh). Then, unless --quick, the main tests again with
+# ranks (scripts/test-paraview.sh). Then the same on the current stack (scripts/test-testing-root.sh):
+# a Debian testing root that it makes once and reuses (VTK 9.6, OpenImageIO 3, ParaView 6.1,
+# PyVista), everything built there and tested with no X server, through EGL; it needs root
+# rights (chroot), as the package installs do. Then, unless --quick, the main tests again with
 # AddressSanitizer and LeakSanitizer (build-asan/): memory errors and leaks fail the run; and
 # the fuzz targets (scripts/fuzz.sh, build-fuzz/): both replay their committed seeds, then fuzz
 # side by side for MLAA_FUZZ_SECONDS each (default 90): a finding fails the run.
@@ -23,6 +26,9 @@ jobs="$(nproc)"
 
 # The ParaView plugin (its own project; installs ParaView and unpacks its Python privately).
 "$source_dir/scripts/test-paraview.sh" "$source_dir/build"
+
+# The current stack, in its Debian testing root (made on first use: minutes and about 4 GB).
+"$source_dir/scripts/test-testing-root.sh"
 
 if ((quick == 0)); then
   "$source_dir/scripts/build.sh" "$source_dir/build-asan" -DBUILD_TESTING=ON \
