@@ -27,6 +27,7 @@ packages=(
   cmake g++ ninja-build pkg-config
   libvtk9-dev python3-vtk9 python3-numpy python3-dev
   libopenimageio-dev openimageio-tools
+  libheif-plugin-x265   # HEIF output (recommended by libheif, so not installed without it)
   libegl-mesa0 libgl1-mesa-dri
   paraview paraview-dev python3-paraview openmpi-bin
   python3-pyvista
@@ -84,18 +85,25 @@ in_root() {
   ' in_root "$root" "$source_dir" "$@"
 }
 
-[ -x "$root/usr/bin/apt-get" ] || make_root
+main() {
+  [ -x "$root/usr/bin/apt-get" ] || make_root
 
-# The packages, installed once: a stamp holds the list last installed.
-stamp="$root/var/lib/vtkmlaa-packages"
-if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "${packages[*]}" ]; then
-  echo "testing-root: installing ${packages[*]}"
-  in_root apt-get update
-  in_root /usr/bin/env DEBIAN_FRONTEND=noninteractive \
-    apt-get install -y --no-install-recommends "${packages[@]}"
-  in_root apt-get clean
-  echo "${packages[*]}" >"$stamp"
-fi
+  # The packages, installed once: a stamp holds the list last installed.
+  stamp="$root/var/lib/vtkmlaa-packages"
+  if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "${packages[*]}" ]; then
+    echo "testing-root: installing ${packages[*]}"
+    in_root apt-get update
+    in_root /usr/bin/env DEBIAN_FRONTEND=noninteractive \
+      apt-get install -y --no-install-recommends "${packages[@]}"
+    in_root apt-get clean
+    echo "${packages[*]}" >"$stamp"
+  fi
 
-(($# > 0)) || exit 0
-in_root "$@"
+  (($# > 0)) || return 0
+  in_root "$@"
+}
+
+# The whole script is read before it runs (a script edited while it runs would go on from the
+# old offset).
+main "$@"
+exit $?
