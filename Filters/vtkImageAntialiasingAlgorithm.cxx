@@ -262,8 +262,8 @@ bool vtkImageAntialiasingAlgorithm::AbortRequested()
 {
 #if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0)
   // VTK 9.3 and later: CheckAbort() also sees an abort of an upstream algorithm, and marks the
-  // output aborted, so that the executive neither reports the progress as complete nor lets
-  // downstream algorithms run on it. AbortExecute stays set until the application clears it.
+  // output aborted (AbortOutput), which the executive passes downstream. (The executive still
+  // reports a progress of 1 at the end.) AbortExecute stays set until the application clears it.
   return this->CheckAbort();
 #else
   // VTK 9.1 and 9.2: the executive clears AbortExecute before each execution.

@@ -15,8 +15,12 @@ if [ "${1:-}" != "--inside" ]; then
   exec "$source_dir/scripts/testing-root.sh" /src/scripts/test-testing-root.sh --inside
 fi
 
-# In the root: no display at all, so VTK cannot fall back to X.
+# In the root: no display at all, and no X server to start one, so VTK cannot fall back to X.
 unset DISPLAY
+if command -v Xvfb >/dev/null || command -v Xorg >/dev/null; then
+  echo "test-testing-root: the root has an X server ($(command -v Xvfb Xorg)); it must not" >&2
+  exit 1
+fi
 export MLAA_DISPLAY=egl # scripts/with-xvfb.sh: no Xvfb, the command as it is
 build_dir=/src/build-testing-root/main
 "$source_dir/scripts/build.sh" "$build_dir" -DBUILD_TESTING=ON \
