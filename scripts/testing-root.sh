@@ -34,6 +34,12 @@ packages=(
 )
 
 if [ "$(id -u)" -ne 0 ]; then
+  # Root rights for debootstrap, chroot and the mounts: through sudo, as install-deps.sh does
+  # for apt (the build in the root then belongs to root as well).
+  if command -v sudo >/dev/null; then
+    exec sudo env MLAA_TESTING_ROOT="$root" MLAA_TESTING_ROOT_X11="${MLAA_TESTING_ROOT_X11:-}" \
+      DISPLAY="${DISPLAY:-}" "$0" "$@"
+  fi
   echo "testing-root: needs root rights (debootstrap, chroot, mounts): run it as root" >&2
   exit 1
 fi
