@@ -153,14 +153,18 @@ def _configure(options_object, method, preset, options, extra_targets=()):
     _apply_options(options, (options_object,) + tuple(extra_targets), method)
 
 
-def _plotter_renderers(target):
+def _plotter_renderers(target, every_renderer=False):
     """(renderers, plotter): a vtkRenderer alone, or a PyVista-style plotter's renderers (its
     active one, or with every_renderer all of them) and the plotter itself."""
     if isinstance(target, _vtkRenderingCore.vtkRenderer):
         return [target], None
     renderer = getattr(target, "renderer", None)
     if isinstance(renderer, _vtkRenderingCore.vtkRenderer):
-        return [renderer], target
+        renderers = [renderer]
+        if every_renderer:
+            renderers = [r for r in getattr(target, "renderers", renderers)
+                         if isinstance(r, _vtkRenderingCore.vtkRenderer)] or renderers
+        return renderers, target
     raise TypeError("expected a vtkRenderer or a PyVista Plotter (an object with a .renderer), "
                     "not %s" % type(target).__name__)
 
@@ -265,10 +269,7 @@ def enable(renderer, method="mlaa", preset=None, temporal=False, multisamples=0,
 
     With a PyVista plotter: vtkmlaa.enable(plotter); plotter.screenshot(...).
     """
-    renderers, plotter = _plotter_renderers(renderer)
-    if plotter is not None and every_renderer:
-        renderers = [r for r in getattr(plotter, "renderers", renderers)
-                     if isinstance(r, _vtkRenderingCore.vtkRenderer)] or renderers
+    renderers, plotter = _plotter_renderers(renderer, every_renderer)
     _, pass_class, _ = _method_classes(method)
     if isinstance(multisamples, bool) or not isinstance(multisamples, int) or \
             not 0 <= multisamples <= 16:
@@ -341,10 +342,7 @@ def disable(renderer, every_renderer=False):
     release its graphics resources; returns True if there was one. A pass it wrapped (a PyVista
     effect) becomes the renderer's pass again. Multisampling stays off. A plotter is rendered
     again, so that its next screenshot() is without the pass."""
-    renderers, plotter = _plotter_renderers(renderer)
-    if plotter is not None and every_renderer:
-        renderers = [r for r in getattr(plotter, "renderers", renderers)
-                     if isinstance(r, _vtkRenderingCore.vtkRenderer)] or renderers
+    renderers, plotter = _plotter_renderers(renderer, every_renderer)
     removed = False
     for target in renderers:
         current = target.GetPass()
