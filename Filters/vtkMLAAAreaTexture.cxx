@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMLAAAreaTexture.h"
 
+#include "vtkAntialiasingTableCache.h"
 #include "vtkImageData.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -9,8 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <mutex>
 #include <utility>
 
 vtkStandardNewMacro(vtkMLAAAreaTexture);
@@ -45,22 +44,13 @@ using SharedTable = std::shared_ptr<const std::vector<float>>;
 // The offsets of a table's line (vtkMLAAAreaTexture::ComputeAreas): across, along.
 using Offset = std::pair<double, double>;
 
-// The table of one kind for `maxDistance` (at least 1) and `offset` from that kind's cache,
-// made by `build(maxDistance, offset)` on first use. Thread-safe.
-template <typename Build>
-SharedTable CachedTable(std::mutex& cacheMutex,
-  std::map<std::pair<int, Offset>, SharedTable>& cache, int maxDistance, Offset offset,
-  Build build)
-{
-  maxDistance = std::max(1, maxDistance);
-  std::lock_guard<std::mutex> lock(cacheMutex);
-  SharedTable& table = cache[{ maxDistance, offset }];
-  if (!table)
-  {
-    table = build(maxDistance, offset);
-  }
-  return table;
-}
+// The caches of the two kinds of table, by maximum distance and offset: a table is kept while a
+// filter or pass holds it, and the last one asked for while it takes at most 1 MB (search lengths
+// up to 35 steps for the plain areas, 48 for the diagonal ones; longer ones are built again when
+// no one holds them, in milliseconds).
+using TableCache = vtkAntialiasingTableCache<std::pair<int, Offset>, std::vector<float>>;
+constexpr std::size_t KeptTables = 1;
+constexpr std::size_t KeptTableBytes = 1 << 20;
 }
 
 //------------------------------------------------------------------------------
@@ -186,11 +176,11 @@ std::shared_ptr<const std::vector<float>> vtkMLAAAreaTexture::GetSharedTable(int
 std::shared_ptr<const std::vector<float>> vtkMLAAAreaTexture::GetSharedTable(
   int maxDistance, double across, double along)
 {
-  static std::mutex cacheMutex;
-  static std::map<std::pair<int, Offset>, SharedTable> cache;
-  const Offset offset = { std::min(0.5, std::max(-0.5, across)),
+  static TableCache cache(KeptTables, KeptTableBytes);
+  const int distance = std::max(1, maxDistance);
+  const Offset shift = { std::min(0.5, std::max(-0.5, across)),
     std::min(0.5, std::max(-0.5, along)) };
-  return CachedTable(cacheMutex, cache, maxDistance, offset, [](int distance, Offset shift) {
+  return cache.Get({ distance, shift }, [distance, shift]() {
     const int d = distance + 1;
     const int size = NumberOfCodes * d;
     auto table =
@@ -251,9 +241,9 @@ void vtkMLAAAreaTexture::ComputeDiagonalAreas(int e1, int e2, int d1, int d2, do
 std::shared_ptr<const std::vector<float>> vtkMLAAAreaTexture::GetSharedDiagonalTable(
   int maxDistance)
 {
-  static std::mutex cacheMutex;
-  static std::map<std::pair<int, Offset>, SharedTable> cache;
-  return CachedTable(cacheMutex, cache, maxDistance, Offset(), [](int distance, Offset) {
+  static TableCache cache(KeptTables, KeptTableBytes);
+  const int distance = std::max(1, maxDistance);
+  return cache.Get({ distance, Offset() }, [distance]() {
     const int d = distance + 1;
     const int size = NumberOfDiagonalCodes * d;
     auto table =

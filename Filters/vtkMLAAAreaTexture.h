@@ -128,9 +128,11 @@ public:
 
   ///@{
   /**
-   * The shared table for cells of side D = maxDistance + 1, computing it on first use; with
-   * `across` and `along`, the table of the line moved by them (ComputeAreas; each clamped to
-   * [-1/2, 1/2]).
+   * The shared table for cells of side D = maxDistance + 1; with `across` and `along`, the table
+   * of the line moved by them (ComputeAreas; each clamped to [-1/2, 1/2]). Every caller that
+   * holds the table of the same arguments holds the same one. It is computed where no one holds
+   * it (the last one asked for is also kept while it takes at most 1 MB): a process that uses many
+   * search lengths in turn keeps only the tables in use.
    */
   static std::shared_ptr<const std::vector<float>> GetSharedTable(int maxDistance);
   static std::shared_ptr<const std::vector<float>> GetSharedTable(
@@ -166,7 +168,7 @@ public:
   /**
    * The shared table of diagonal areas for cells of side D = maxDistance + 1: 3 x 3 cells (end
    * codes e1, e2) of D x D texels, three floats per texel (ComputeDiagonalAreas), texel
-   * (D * e1 + d1, D * e2 + d2) at index 3 * (t * 3 D + s).
+   * (D * e1 + d1, D * e2 + d2) at index 3 * (t * 3 D + s). Shared and kept as GetSharedTable's.
    */
   static std::shared_ptr<const std::vector<float>> GetSharedDiagonalTable(int maxDistance);
 

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMLAABlendingWeights.h"
 
+#include "vtkAntialiasingTableCache.h"
+
 #include "vtkMLAAAreaTexture.h"
 #include "vtkMLAAOptions.h"
 #include "vtkSMPTools.h"
@@ -11,7 +13,6 @@
 #include <cstdint>
 #include <cmath>
 #include <cstring>
-#include <map>
 #include <mutex>
 
 namespace vtkMLAAStages
@@ -70,21 +71,17 @@ std::vector<unsigned char> Quantised(const std::vector<float>& table)
   return quantised;
 }
 
-// The quantised table of one maximum distance, made once and shared, as vtkMLAAAreaTexture
-// shares its float tables.
-using QuantisedTable = std::shared_ptr<const std::vector<unsigned char>>;
-QuantisedTable SharedQuantised(
+// The quantised table of one maximum distance (plain or diagonal), shared as vtkMLAAAreaTexture
+// shares its float tables: while a filter uses it, and the two asked for last (a filter's pair)
+// while they take at most 1 MB each.
+std::shared_ptr<const std::vector<unsigned char>> SharedQuantised(
   int maxDistance, bool diagonal, std::shared_ptr<const std::vector<float>> (*table)(int))
 {
-  static std::mutex mutex;
-  static std::map<std::pair<int, bool>, QuantisedTable> cache;
-  std::lock_guard<std::mutex> lock(mutex);
-  QuantisedTable& entry = cache[{ maxDistance, diagonal }];
-  if (!entry)
-  {
-    entry = std::make_shared<const std::vector<unsigned char>>(Quantised(*table(maxDistance)));
-  }
-  return entry;
+  static vtkAntialiasingTableCache<std::pair<int, bool>, std::vector<unsigned char>> cache(
+    2, 1 << 20);
+  return cache.Get({ maxDistance, diagonal }, [maxDistance, table]() {
+    return std::make_shared<const std::vector<unsigned char>>(Quantised(*table(maxDistance)));
+  });
 }
 }
 

@@ -236,6 +236,21 @@ int TestMLAAAreaTexture(int, char*[])
   // Tables are shared per size.
   EXPECT(vtkMLAAAreaTexture::GetSharedTable(8) == vtkMLAAAreaTexture::GetSharedTable(8));
   EXPECT(vtkMLAAAreaTexture::GetSharedTable(8) != vtkMLAAAreaTexture::GetSharedTable(16));
+  // A table that no one holds goes, but for the last one asked for where it is small (1 MB at
+  // most): a process that uses many search lengths in turn keeps only the tables in use.
+  {
+    using Table = std::weak_ptr<const std::vector<float>>;
+    const Table large = vtkMLAAAreaTexture::GetSharedTable(256); // 12.6 MB
+    EXPECT(large.expired());
+    const auto held = vtkMLAAAreaTexture::GetSharedTable(40);
+    const Table last = vtkMLAAAreaTexture::GetSharedTable(6);
+    EXPECT(!last.expired());
+    const Table next = vtkMLAAAreaTexture::GetSharedTable(7);
+    EXPECT(last.expired() && !next.expired());
+    EXPECT(held == vtkMLAAAreaTexture::GetSharedTable(40));
+    const Table diagonal = vtkMLAAAreaTexture::GetSharedDiagonalTable(256);
+    EXPECT(diagonal.expired());
+  }
 
   // The line moved by a sample's offset (across towards the opposite pixel, along towards the
   // second end), worked by hand.
