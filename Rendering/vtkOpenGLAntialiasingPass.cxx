@@ -170,12 +170,6 @@ public:
       TextureBytes(this->Counts[1], 4) + TextureBytes(this->Mask, 2) +
       TextureBytes(this->Depth, 4);
   }
-  bool HoldsResources() const
-  {
-    return this->Current || this->Previous || this->Motion || this->Histories[0] ||
-      this->Histories[1] || this->Counts[0] || this->Counts[1] || this->Mask ||
-      this->Depth || this->Framebuffer;
-  }
 };
 
 // The histories of a pass, one per renderer and eye that it renders (SelectHistory).
@@ -199,11 +193,6 @@ public:
       entry.History->Release(w);
     }
     this->Entries.clear();
-  }
-  bool HoldsResources() const
-  {
-    return std::any_of(this->Entries.begin(), this->Entries.end(),
-      [](const Entry& entry) { return entry.History->HoldsResources(); });
   }
 };
 
@@ -378,6 +367,33 @@ bool BlendsPerPixel(const vtkRenderState* s)
   });
 }
 
+// The context of `window` current for as long as the object lives (PushContext), and the one
+// current before restored after (PopContext, where the window class implements it); nothing where
+// the window is gone.
+class WindowContextScope
+{
+public:
+  explicit WindowContextScope(vtkOpenGLRenderWindow* window)
+    : Window(window)
+  {
+    if (window)
+    {
+      window->PushContext();
+    }
+  }
+  ~WindowContextScope()
+  {
+    if (this->Window)
+    {
+      this->Window->PopContext();
+    }
+  }
+  WindowContextScope(const WindowContextScope&) = delete;
+  WindowContextScope& operator=(const WindowContextScope&) = delete;
+
+  vtkOpenGLRenderWindow* const Window;
+};
+
 // OpenGL sample shading (4.0) on for the scope (every sample shaded at its own position), the
 // previous setting restored after it. Nothing is changed with `on` false.
 struct SampleShadingScope
@@ -443,27 +459,60 @@ vtkOpenGLAntialiasingPass::vtkOpenGLAntialiasingPass() = default;
 //------------------------------------------------------------------------------
 vtkOpenGLAntialiasingPass::~vtkOpenGLAntialiasingPass()
 {
-  if (this->HoldsSharedResources() || (this->Histories && this->Histories->HoldsResources()))
+  // Replaced or removed and no longer referenced, the pass takes its GL objects with it, in the
+  // context of the window that holds them (the subclass's destructor released its own). Where that
+  // context is gone, only the objects are deleted.
+  const WindowContextScope context(this->LiveResourceWindow());
+  // vtkImageProcessingPass's destructor drops the delegate unreleased: where nothing else holds
+  // it, it goes now, so its GL objects go too.
+  if (context.Window && this->DelegatePass && this->DelegatePass->GetReferenceCount() == 1)
   {
-    vtkErrorMacro("Graphics resources should have been released by "
-                  "ReleaseGraphicsResources().");
+    this->DelegatePass->ReleaseGraphicsResources(context.Window);
   }
-  // The translucent steps free their GL objects in ReleaseGraphicsResources (or report them).
-  // The delegate's step sequence may hold the last one used until its next render.
-  if (this->CompositedPass)
-  {
-    this->CompositedPass->Owner = nullptr;
-  }
+  this->ReleaseSharedResources(context.Window);
   delete this->Histories;
-  for (vtkRenderPass* pass : { static_cast<vtkRenderPass*>(this->TranslucencyPass),
-         static_cast<vtkRenderPass*>(this->PeelingPass),
-         static_cast<vtkRenderPass*>(this->CompositedPass) })
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLAntialiasingPass::ReleaseMethodResourcesOnDestruction()
+{
+  const WindowContextScope context(this->LiveResourceWindow());
+  this->ReleaseMethodResources(context.Window);
+}
+
+//------------------------------------------------------------------------------
+vtkOpenGLRenderWindow* vtkOpenGLAntialiasingPass::LiveResourceWindow() const
+{
+  // Each render allocates ColorTexture. A window that releases its resources (Finalize,
+  // destruction) releases every texture, framebuffer and quad's vertex array made in it through its
+  // callbacks, and its shader cache's programs, and then its renderers' passes; a pass in none of
+  // its renderers is left with a texture without a handle, and quads without vertex arrays.
+  if (this->ColorTexture && !this->ColorTexture->GetHandle())
   {
-    if (pass)
-    {
-      pass->Delete();
-    }
+    return nullptr;
   }
+  return this->ResourceWindow;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLAntialiasingPass::UseWindow(vtkOpenGLRenderWindow* renWin)
+{
+  vtkOpenGLRenderWindow* live = this->LiveResourceWindow();
+  if (live && live != renWin)
+  {
+    {
+      const WindowContextScope context(live);
+      this->ReleaseGraphicsResources(live);
+    }
+    renWin->MakeCurrent(); // where the window's PopContext does not restore the context before
+  }
+  else if (!live && this->ColorTexture)
+  {
+    // Released with a context that is gone (see LiveResourceWindow): dropped, and made again.
+    this->ReleaseMethodResources(nullptr);
+    this->ReleaseSharedResources(nullptr);
+  }
+  this->ResourceWindow = renWin;
 }
 
 //------------------------------------------------------------------------------
@@ -804,6 +853,8 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
     return;
   }
 
+  this->UseWindow(renWin);
+
   // The pass and its stages in the window's render timings (TimedStage), when they are on.
   TimedStage passStage(renWin, this->GetClassName());
 
@@ -890,6 +941,12 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
     {
       this->ReleaseSampleResources(renWin); // not used (any more)
     }
+    if (!temporal && this->Histories && !this->Histories->Entries.empty())
+    {
+      // Temporal switched off: its histories would hold about 16 times the frame for nothing.
+      this->Histories->Release(renWin);
+      this->History = nullptr;
+    }
 
     // Render the delegate, keeping its overlay step for after the antialiasing.
     if (overlay)
@@ -969,6 +1026,12 @@ void vtkOpenGLAntialiasingPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
   this->ReleaseMethodResources(w);
+  this->ReleaseSharedResources(w);
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLAntialiasingPass::ReleaseSharedResources(vtkWindow* w)
+{
   DeleteObject(this->DelegateFramebuffer, w);
   DeleteObject(this->WorkFramebuffer, w);
   DeleteObject(this->ColorTexture, w);
@@ -1139,6 +1202,18 @@ void vtkOpenGLAntialiasingPass::SelectHistory(const vtkRenderState* s)
   // camera's LeftEye set accordingly (and LeftEye 1 in mono): the two eyes see the scene from two
   // places, and one history would average their pictures.
   vtkRenderer* renderer = s->GetRenderer();
+  // The histories of renderers that are gone go too (a long-lived pass set on renderer after
+  // renderer).
+  for (auto entry = all.Entries.begin(); entry != all.Entries.end();)
+  {
+    if (entry->Renderer)
+    {
+      ++entry;
+      continue;
+    }
+    entry->History->Release(renderer->GetRenderWindow());
+    entry = all.Entries.erase(entry);
+  }
   const bool stereo = renderer->GetRenderWindow()->GetStereoRender() != 0;
   const bool rightEye = stereo && renderer->GetActiveCamera()->GetLeftEye() == 0;
   if (!stereo)

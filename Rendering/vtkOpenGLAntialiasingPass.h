@@ -51,6 +51,7 @@
 
 #include "vtkImageProcessingPass.h"
 #include "vtkRenderingMLAAModule.h" // For export macro
+#include "vtkWeakPointer.h"          // For ResourceWindow
 
 #include <string> // For std::string
 #include <vector> // For std::vector
@@ -77,7 +78,13 @@ public:
   void Render(const vtkRenderState* s) override;
 
   /**
-   * Release every graphics resource of the pass and of its delegate.
+   * Release every graphics resource of the pass and of its delegate. An application need not
+   * call it: the pass releases its GL objects by itself, in the context of the window it last
+   * rendered in, when it is destroyed (replaced or removed with vtkRenderer::SetPass and no longer
+   * referenced), when it renders in another window than the last (a pass shared by renderers of
+   * several windows), and when that window releases its resources (Finalize, destruction). A pass
+   * removed from its renderer but kept by the application keeps its targets (and its temporal
+   * history) for when it is set again: call this to free them sooner.
    */
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
@@ -330,8 +337,13 @@ protected:
   // The antialiasing: reads ColorTexture (and DepthTexture unless in place) and writes the target
   // viewport, which is bound as the draw framebuffer.
   virtual bool Antialias(const Frame& frame) = 0;
-  // Frees the subclass's GL objects (shader variants, targets).
+  // Frees the subclass's GL objects (shader variants, targets). `w` may be null (the window is
+  // gone, and its objects were freed with its context): the objects are then only deleted.
   virtual void ReleaseMethodResources(vtkWindow* w) = 0;
+  // For the destructor of a concrete subclass: its ReleaseMethodResources, in the context of the
+  // window the pass last rendered in (or with none where that window is gone). The base class's
+  // destructor releases the rest.
+  void ReleaseMethodResourcesOnDestruction();
   // Bytes of the subclass's targets.
   virtual vtkIdType GetMethodTargetMemorySize() = 0;
   // Substitutions in a fragment source beyond //VTK::Antialiasing::Dec (shared snippets).
@@ -379,14 +391,6 @@ protected:
   void BeginWorkPass(
     vtkOpenGLRenderWindow* renWin, vtkTextureObject* texture, int width, int height);
 
-  // Whether the shared targets are still allocated (ReleaseGraphicsResources not called): the
-  // destructor reports it once; subclasses report their own targets only when these are gone.
-  bool HoldsSharedResources() const
-  {
-    return this->ColorTexture || this->DelegateFramebuffer || this->WorkFramebuffer ||
-      this->AlphaTexture;
-  }
-
   vtkOpenGLFramebufferObject* DelegateFramebuffer = nullptr;
   vtkOpenGLFramebufferObject* WorkFramebuffer = nullptr; // for the subclass's passes
   vtkTextureObject* ColorTexture = nullptr;
@@ -395,6 +399,19 @@ protected:
 private:
   vtkOpenGLAntialiasingPass(const vtkOpenGLAntialiasingPass&) = delete;
   void operator=(const vtkOpenGLAntialiasingPass&) = delete;
+
+  // The window in whose context the pass's GL objects were made: the one it rendered in last.
+  vtkWeakPointer<vtkOpenGLRenderWindow> ResourceWindow;
+  // ResourceWindow where its context still holds the pass's GL objects; null where the window is
+  // gone, or released its resources while the pass was in none of its renderers.
+  vtkOpenGLRenderWindow* LiveResourceWindow() const;
+  // Before a render in `renWin`: where the pass last rendered in another window (a pass shared by
+  // renderers of several windows), its GL objects belong to that window's context and name
+  // nothing, or another object, in this one: they are released there first and made again here.
+  // Where their context is gone, they are dropped and made again.
+  void UseWindow(vtkOpenGLRenderWindow* renWin);
+  // Frees the GL objects of this class (not the subclass's nor the delegate's).
+  void ReleaseSharedResources(vtkWindow* w);
 
   // Creates or resizes the shared targets and the subclass's, and the framebuffer objects (with a
   // depth texture for the delegate when `depth`).

@@ -55,12 +55,7 @@ vtkOpenGLDLAAPass::vtkOpenGLDLAAPass()
 //------------------------------------------------------------------------------
 vtkOpenGLDLAAPass::~vtkOpenGLDLAAPass()
 {
-  if ((this->MasksTexture || this->MasksQuad.Quad || this->FilterQuad.Quad) &&
-    !this->HoldsSharedResources()) // else the base class reports it
-  {
-    vtkErrorMacro("Graphics resources should have been released by "
-                  "ReleaseGraphicsResources().");
-  }
+  this->ReleaseMethodResourcesOnDestruction();
   this->Options->Delete();
 }
 

@@ -50,11 +50,7 @@ vtkOpenGLMLAAPass::vtkOpenGLMLAAPass()
 //------------------------------------------------------------------------------
 vtkOpenGLMLAAPass::~vtkOpenGLMLAAPass()
 {
-  if ((this->EdgesTexture || this->EdgesQuad.Quad) &&
-    !this->HoldsSharedResources()) // else the base class reports it
-  {
-    vtkErrorMacro("Graphics resources should have been released by ReleaseGraphicsResources().");
-  }
+  this->ReleaseMethodResourcesOnDestruction();
   this->Options->Delete();
 }
 
