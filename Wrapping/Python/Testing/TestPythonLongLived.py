@@ -7,10 +7,12 @@ pytest suite uses it (issue 49):
   renderer.SetPass(None) in between (passes dropped there): nothing printed (ctest fails on
   "should have been released"), and each pass that enable() replaced holds no target
   (GetTargetMemorySize() 0);
-- a seeded session of 600 renders that also toggles disable() and the window size at random, whose
-  second half makes the first half's changes again: resident memory grows by at most 2 MB over
-  the second half (it grew by 308 MB when a replaced pass kept its targets).
+- a seeded session of 600 renders in four rounds that make the same changes (enable() with
+  methods, presets, temporal and 4 samples, disable(), the window size) at random: resident
+  memory grows by at most 1 MB in the smaller of the last two rounds' growths (a leak grows in
+  each; the session grew by 308 MB when a replaced pass kept its targets).
 Needs a display (ctest runs under scripts/with-xvfb.sh)."""
+import ctypes
 import random
 
 import vtkmlaa
@@ -22,6 +24,12 @@ check = Checker()
 
 
 def resident_kilobytes():
+    """The process's resident memory after glibc gives back what it holds free (malloc_trim), as
+    TestAntialiasingPassLifetime reads it."""
+    try:
+        ctypes.CDLL(None).malloc_trim(0)
+    except (OSError, AttributeError):
+        pass
     with open("/proc/self/status") as status:
         for line in status:
             if line.startswith("VmRSS:"):
@@ -63,13 +71,14 @@ del kept
 
 generator = random.Random()
 sizes = ((320, 240), (160, 120), (333, 211), (97, 61))
-resident = []
+resident = [resident_kilobytes()]
 aside = []
-for half in range(2):
+for round_ in range(4):
+    # Each round makes the same changes, so that it builds no shader variant the first did not.
     generator.seed(49)
     vtkmlaa.enable(renderer)
     window.SetSize(320, 240)
-    for i in range(300):
+    for i in range(150):
         change = generator.randrange(6)
         if change == 0:
             method = generator.choice(vtkmlaa.METHODS)
@@ -88,7 +97,12 @@ for half in range(2):
     window.SetSize(320, 240)
     window.Render()
     resident.append(resident_kilobytes())
-grown = resident[1] - resident[0]
-print("session of 600 renders: resident memory %d -> %d kB (half, end)" % tuple(resident))
-check(grown <= 2048, "resident memory grew by %d kB over the second half" % grown)
+print("session of 600 renders: resident memory (kB) at the start and after each round of 150: %s;"
+      " over the second half %d kB" % (" ".join(map(str, resident)), resident[4] - resident[2]))
+# A leak grows in every round; a pool that grows to its size once does not grow again (steps of
+# about 3 MB in one round are seen in some runs on VTK 9.6): the smaller growth of the last two
+# rounds must be within 1 MB.
+smaller = min(resident[3] - resident[2], resident[4] - resident[3])
+check(smaller <= 1024, "resident memory grew by %d kB in the smaller of the last two rounds"
+      % smaller)
 check.finish()
