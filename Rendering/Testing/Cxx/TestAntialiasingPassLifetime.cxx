@@ -336,6 +336,9 @@ void Session(RecordingOutputWindow* output, int renders)
       Canonical(window, renderer, pass);
       aside = nullptr;
       RenderChecked(window, "checkpoint " + std::to_string(i));
+      // llvmpipe frees a texture once its threads are done with it: let them finish first.
+      window->MakeCurrent();
+      glFinish();
       resident.push_back(ResidentKilobytes());
       targets.push_back(pass->GetTargetMemorySize());
       continue;
