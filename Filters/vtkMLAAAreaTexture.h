@@ -132,7 +132,8 @@ public:
    * of the line moved by them (ComputeAreas; each clamped to [-1/2, 1/2]). Every caller that
    * holds the table of the same arguments holds the same one. It is computed where no one holds
    * it (the last one asked for is also kept while it takes at most 1 MB): a process that uses many
-   * search lengths in turn keeps only the tables in use.
+   * search lengths in turn keeps only the tables in use. Keep the returned pointer for as long
+   * as the table is read: `const auto& t = *GetSharedTable(n);` dangles once the statement ends.
    */
   static std::shared_ptr<const std::vector<float>> GetSharedTable(int maxDistance);
   static std::shared_ptr<const std::vector<float>> GetSharedTable(

@@ -101,7 +101,9 @@ vtkSmartPointer<vtkMLAAOptions> Options(bool corners)
 // The quantised area of the table (channel 0: the pixel under the edge, 1: the one above).
 double Area(int e1, int e2, int d1, int d2, int channel, int maxDistance)
 {
-  const std::vector<float>& table = *vtkMLAAAreaTexture::GetSharedTable(maxDistance);
+  // Held for the whole check: a table no one holds may be freed (vtkAntialiasingTableCache).
+  const auto held = vtkMLAAAreaTexture::GetSharedTable(maxDistance);
+  const std::vector<float>& table = *held;
   const int cell = maxDistance + 1;
   const int size = vtkMLAAAreaTexture::NumberOfCodes * cell;
   const size_t texel = static_cast<size_t>(cell * e2 + d2) * size + (cell * e1 + d1);
@@ -205,7 +207,9 @@ void Corners()
 // the pass reads them.
 float FloatArea(int e1, int e2, int d1, int d2, int channel, int maxDistance)
 {
-  const std::vector<float>& table = *vtkMLAAAreaTexture::GetSharedTable(maxDistance);
+  // Held for the whole check: a table no one holds may be freed (vtkAntialiasingTableCache).
+  const auto held = vtkMLAAAreaTexture::GetSharedTable(maxDistance);
+  const std::vector<float>& table = *held;
   const int cell = maxDistance + 1;
   const int size = vtkMLAAAreaTexture::NumberOfCodes * cell;
   return table[2 * (static_cast<size_t>(cell * e2 + d2) * size + (cell * e1 + d1)) + channel];

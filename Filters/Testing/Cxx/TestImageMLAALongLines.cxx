@@ -307,8 +307,9 @@ void OneDegreeRamps()
     auto out = RunMLAA(image, options);
     options->SetDebugOutput(vtkMLAAOptions::BLENDING_WEIGHTS);
     auto weights = RunMLAA(image, options);
-    const std::vector<float>& table =
-      *vtkMLAAAreaTexture::GetSharedTable(options->GetMaxDistance());
+    // Held for the whole check: a table over 1 MB that no one holds is freed at once.
+    const auto held = vtkMLAAAreaTexture::GetSharedTable(options->GetMaxDistance());
+    const std::vector<float>& table = *held;
     const int cell = options->GetMaxDistance() + 1;
     const int size = vtkMLAAAreaTexture::NumberOfCodes * cell;
     bool allExact = true;

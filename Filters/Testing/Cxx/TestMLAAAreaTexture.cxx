@@ -302,7 +302,8 @@ int TestMLAAAreaTexture(int, char*[])
     vtkMLAAAreaTexture::GetSharedTable(8, 0.5, 0.0));
   {
     // A moved table holds ComputeAreas of its offsets, texel for texel.
-    const std::vector<float>& moved = *vtkMLAAAreaTexture::GetSharedTable(8, 0.125, -0.375);
+    const auto held = vtkMLAAAreaTexture::GetSharedTable(8, 0.125, -0.375);
+    const std::vector<float>& moved = *held;
     const int size = vtkMLAAAreaTexture::NumberOfCodes * 9;
     bool same = true;
     for (int e1 : { 0, 1, 3, 4 })
