@@ -12,8 +12,11 @@
 #include "vtkCylinderSource.h"
 #include "vtkElevationFilter.h"
 #include "vtkGlyph3D.h"
+#include "vtkImageActor.h"
+#include "vtkImageMapper3D.h"
 #include "vtkImageCanvasSource2D.h"
 #include "vtkImageData.h"
+#include "vtkImageProperty.h"
 #include "vtkLineSource.h"
 #include "vtkLookupTable.h"
 #include "vtkMath.h"
@@ -783,6 +786,81 @@ void Streamlines(vtkRenderer* renderer)
   FrameAll(renderer, 1.2);
 }
 
+// An nx x ny image of random values shown straight on by an image actor without interpolation
+// (voxels as ParaView and VTK show a slice with nearest-neighbour sampling), framed by a parallel
+// camera whose view is `scale` times the image's height. With `lookupTable`, the values are a
+// smooth field plus noise coloured by it, and a colour legend stands beside the image; without,
+// every voxel has a random colour. Issue 50.
+void VoxelImage(vtkRenderer* renderer, int nx, int ny, double scale, bool lookupTable, int seed)
+{
+  vtkNew<vtkMinimalStandardRandomSequence> random;
+  random->SetSeed(seed);
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(nx, ny, 1);
+  image->AllocateScalars(lookupTable ? VTK_FLOAT : VTK_UNSIGNED_CHAR, lookupTable ? 1 : 3);
+  for (int y = 0; y < ny; ++y)
+  {
+    for (int x = 0; x < nx; ++x)
+    {
+      if (lookupTable)
+      {
+        const double field = std::sin(0.21 * x) * std::cos(0.17 * y);
+        image->SetScalarComponentFromDouble(x, y, 0, 0, field + 0.4 * (random->GetValue() - 0.5));
+        random->Next();
+        continue;
+      }
+      for (int c = 0; c < 3; ++c)
+      {
+        image->SetScalarComponentFromDouble(x, y, 0, c, std::floor(256.0 * random->GetValue()));
+        random->Next();
+      }
+    }
+  }
+  vtkNew<vtkImageActor> actor;
+  actor->GetMapper()->SetInputData(image);
+  actor->InterpolateOff();
+  vtkNew<vtkLookupTable> lut;
+  if (lookupTable)
+  {
+    lut->SetHueRange(0.66, 0.0);
+    lut->SetTableRange(-1.2, 1.2);
+    lut->Build();
+    actor->GetProperty()->SetLookupTable(lut);
+    actor->GetProperty()->UseLookupTableScalarRangeOn();
+    vtkNew<vtkScalarBarActor> bar;
+    bar->SetLookupTable(lut);
+    bar->SetNumberOfLabels(4);
+    bar->GetLabelTextProperty()->SetColor(1.0, 1.0, 1.0);
+    bar->SetPosition(0.86, 0.1);
+    bar->SetWidth(0.1);
+    bar->SetHeight(0.8);
+    renderer->AddActor2D(bar);
+  }
+  renderer->AddViewProp(actor);
+  renderer->SetBackground(0.1, 0.1, 0.12);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->ParallelProjectionOn();
+  camera->SetFocalPoint(0.5 * (nx - 1), 0.5 * (ny - 1), 0.0);
+  camera->SetPosition(0.5 * (nx - 1), 0.5 * (ny - 1), 10.0 * ny);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->SetParallelScale(0.5 * ny * scale);
+  renderer->ResetCameraClippingRange();
+}
+
+// 32 x 24 voxels filling a 4:3 viewport: at 800 x 600 (or any multiple of 32 x 24) every voxel
+// side lies on a pixel boundary and nothing is aliased, so every change is damage.
+void Voxels(vtkRenderer* renderer)
+{
+  VoxelImage(renderer, 32, 24, 1.0, false, 5);
+}
+
+// A slice of 45 x 30 values through a colour map, zoomed by a factor that puts some voxel sides
+// between pixel boundaries, beside its colour legend.
+void ImageSlice(vtkRenderer* renderer)
+{
+  VoxelImage(renderer, 45, 30, 1.13, true, 11);
+}
+
 struct Scene
 {
   std::string Description;
@@ -806,6 +884,8 @@ const std::vector<std::pair<std::string, Scene>>& Scenes()
     { "orbit", { "1-pixel lines, points and cone glyphs over a textured floor", Orbit } },
     { "points", { "point clouds of 1-, 2- and 3-pixel points on a plain and a shaded background",
                   PointCloud } },
+    { "voxels", { "32 x 24 random voxels seen straight on, filling the view (no interpolation)",
+                  Voxels } },
   };
   return scenes;
 }
@@ -821,6 +901,9 @@ const std::vector<std::pair<std::string, Scene>>& HeldOutScenes()
       { "an elevation-coloured height field seen obliquely, with 1-pixel contour lines",
         Terrain } },
     { "streamlines", { "forty curved 1-pixel polylines in perspective over white", Streamlines } },
+    { "image-slice",
+      { "a 45 x 30 slice through a colour map, zoomed without interpolation, with its legend",
+        ImageSlice } },
   };
   return scenes;
 }
