@@ -315,6 +315,11 @@ private:
     {
       e2 = 0;
     }
+    if (this->SideWithoutSteps(l, e1, e2, d1, d2))
+    {
+      w[0] = w[1] = 0;
+      return;
+    }
     bool half1 = false, half2 = false;
     if (this->S.Corners && d1 + d2 > 0)
     {
@@ -350,6 +355,102 @@ private:
       e1 = e2 = 0; // junctions of wider shapes at both ends: no slope
     }
     this->LookUpArea(e1, e2, d1, d2, half1, half2, w);
+  }
+
+  // Issue 50: whether l's line, with ends of codes e1 and e2 d1 pixels before it and d2 after it,
+  // is the side of a shape that shows no step of a staircase, and is left alone. The area table
+  // reads every crossing edge on one side of an end as a one-pixel step (section 4.3.2). At a
+  // corner of a shape (SideEnd) it is not: the crossing edge is a side of its own. Where the other
+  // end is no step either (a corner too, a junction of wider shapes, the image border, no crossing
+  // edge, or beyond the search's reach), nothing seen tells that the side leaves the pixel
+  // boundary, and the chapter's U, Z or L ramp from the corner would blur a side that is right
+  // (axis-aligned rectangles, voxels seen straight on, bars, legends, viewport borders). A side
+  // whose true course is a fraction of a pixel off the boundary looks the same, and no reading
+  // of these pixels tells which way it is off: no ramp is also the estimate of an offset equally
+  // likely either way. A line of one pixel keeps the chapter's reading (the Z of a step of the
+  // staircase across it, the U of a one-pixel bar's end), and so does a small shape: a side
+  // shorter than MinimumSideLength (within the reach: an end beyond it makes the side longer
+  // than the search sees) whose corners' sides are that short too, a rendered point of 2 or 3
+  // pixels, which the U shapes round as its supersampled image is; small cells of a grid (voxels
+  // of 2 or 3 pixels) have sides that run on past their corners. A corner at one end and a step
+  // at the other keeps the chapter's reading (or CornerExtrapolation's).
+  // Must match sideWithoutSteps in vtkMLAABlendingWeightsFS.glsl.
+  static constexpr int MinimumSideLength = 4;
+  template <bool V>
+  bool SideWithoutSteps(const Line<V>& l, int e1, int e2, int d1, int d2) const
+  {
+    int run1 = 0, run2 = 0;
+    const bool side1 = this->SideEnd(l, -1, e1, d1, run1);
+    const bool side2 = this->SideEnd(l, +1, e2, d2, run2);
+    if (!((side1 || side2) && (side1 || e1 == 0 || this->WideJunction(l, -1, e1, d1)) &&
+          (side2 || e2 == 0 || this->WideJunction(l, +1, e2, d2))))
+    {
+      return false;
+    }
+    // A line of one pixel (a step of a staircase across it, or the end of a one-pixel-wide bar),
+    // and a small shape, short in both directions, keep the chapter's reading.
+    const int maxDistance = this->S.CellSize - 1;
+    const int length = d1 + d2 + 1;
+    return length > 1 &&
+      (length >= MinimumSideLength || d1 >= maxDistance || d2 >= maxDistance ||
+        std::max(run1, run2) >= MinimumSideLength);
+  }
+
+  // Whether the end of l's line in direction s (-1 or +1), `distance` pixels away with crossing
+  // code `code`, is the corner of a shape: a crossing edge on one side only (1 or 3) that goes on
+  // for a second pixel away from the line (CrossingGoesOn), no line going on one row (column) over
+  // past it (which would make it a step), and, followed away from the line within the search's
+  // reach, the crossing edge does not end at a step of its own: where a side meets a steep
+  // staircase (the corner of a polygon in perspective, a checkerboard's squares), the crossing
+  // edge goes on one column (row) over, for two pixels or more, and the line is the flat run of a
+  // slanted outline whose corner the chapter's reading rounds as it should. Edgels outside the
+  // image are none.
+  template <bool V>
+  bool SideEnd(const Line<V>& l, int s, int code, int distance, int& run) const
+  {
+    if (code != 1 && code != 3)
+    {
+      return false;
+    }
+    const int beyond = s * (distance + 1); // the pixel just past the end
+    const int crossing = s < 0 ? beyond + 1 : beyond;
+    if (this->AlongInside(l, beyond, code == 3 ? -1 : 1) ||
+      !this->CrossingGoesOn(l, crossing, 0, code))
+    {
+      return false;
+    }
+    // The crossing edge covers v = 0 and -1 (code 3) or v = 1 and 2 (code 1); follow it on,
+    // counting its pixels in `run`.
+    const int away = code == 3 ? -1 : 1;
+    const int reach = this->S.CellSize - 1;
+    run = 2;
+    for (int v = code == 3 ? -2 : 3; std::abs(v) <= reach; v += away, ++run)
+    {
+      if (!this->CrossingInside(l, crossing, v))
+      {
+        for (int side : { -1, 1 })
+        {
+          if (this->CrossingInside(l, crossing + side, v) &&
+            this->CrossingInside(l, crossing + side, v + away))
+          {
+            return false;
+          }
+        }
+        return true;
+      }
+    }
+    return true;
+  }
+
+  // Whether that end has crossing edges on both sides (code 4) that both go on for a second pixel
+  // away from the line: a junction of shapes at least two pixels wide, not the diagonal step of a
+  // one-pixel-thin line or gap (vtkMLAAAreaTexture's reading of code 4).
+  template <bool V>
+  bool WideJunction(const Line<V>& l, int s, int code, int distance) const
+  {
+    const int crossing = s < 0 ? -distance : distance + 1;
+    return code == 4 && this->CrossingGoesOn(l, crossing, 0, 1) &&
+      this->CrossingGoesOn(l, crossing, 0, 3);
   }
 
   // One end of an orthogonal line for CornerExtrapolation: crossing-edge code and distance from

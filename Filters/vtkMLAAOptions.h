@@ -76,8 +76,20 @@
  *   a step but is too short to belong to one straight staircase with the line), the corner's
  *   height is unknown and it takes half the chapter's ramp, the mean of a step and a flat end.
  *   Where nothing is seen at all (corners at both ends, the other end beyond the search's
- *   reach), the chapter's reading stays. Raises AAR and lowers damage on
+ *   reach), no step is seen either, and the side is left alone, with this option or without
+ *   (see "Sides without steps" below). Raises AAR and lowers damage on
  *   long lines (docs/measurements.md), but not on every scene, hence off by default.
+ * - Sides without steps (always, in every preset; issue 50, not a setting): the chapter reads every
+ *   crossing edge at the end of a line as a one-pixel step of a staircase, and ramps the line
+ *   from it. Where the crossing edge is instead a side of a shape (it goes on for two pixels or
+ *   more, the line does not go on one row or column over past it, and the side does not end in
+ *   a step of a steeper staircase within the search's reach), and the line's other end is no
+ *   step either (such a corner, a junction of wider shapes, the image border, no crossing edge,
+ *   or beyond the reach), nothing tells that the side leaves the pixel boundary, and the line
+ *   (four pixels or longer) gets no blending: the sides of axis-aligned rectangles, of voxels
+ *   seen straight on, of bars, legends and viewport borders stay exactly as they are. A side
+ *   that is really a fraction of a pixel off the boundary looks the same in one sample per
+ *   pixel and is not antialiased either; MultiSamples measures where it lies.
  * - DominantDirectionBlending (default on): in the neighbourhood blending, a pixel that lies on
  *   both a horizontal and a vertical line (the corner of a staircase) is blended along the one
  *   with the larger weight only, as SMAA (Jimenez et al., 2012) does; on a tie it keeps both.

@@ -457,12 +457,15 @@ void OptionDiagonals()
 
 void OptionLocalContrast()
 {
-  // A white square on a dark background whose lower half is a little lighter (0 and 40, a
-  // shading edge of 0.157 that meets the square's sides): --local-contrast 0 keeps the shading
-  // edge where it meets the silhouette, the default drops it there; both as the filter does.
+  // A white parallelogram (its slanted sides staircases of 4-pixel runs) on a dark background
+  // whose lower part is a little lighter (0 and 40 from row 22, a shading edge of 0.157 that
+  // meets the slanted sides in the middle of their runs): --local-contrast 0 keeps the shading edge where it meets the silhouette, the
+  // default drops it there; both as the filter does.
   auto pixels = MakeImage(40, 40, 1);
   FillImage(pixels, [](int x, int y, int, int) {
-    return (x >= 10 && x < 30 && y >= 12 && y < 28) ? 255.0 : (y < 20 ? 0.0 : 40.0);
+    const int shift = (y - 12) / 4;
+    return (x >= 6 + shift && x < 26 + shift && y >= 12 && y < 28) ? 255.0
+                                                                  : (y < 22 ? 0.0 : 40.0);
   });
   const fs::path input = WorkFile("in.png");
   const fs::path output = WorkFile("out.png");

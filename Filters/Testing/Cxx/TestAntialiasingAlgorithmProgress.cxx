@@ -38,12 +38,13 @@ void OnProgress(vtkObject* caller, unsigned long, void* clientData, void* callDa
   }
 }
 
-// A pattern of blocks in every slice.
+// A pattern of blocks in every slice: bands of runs 7 pixels long stepping one row at a time (a
+// pattern whose blocks are whole rectangles on pixel boundaries is left as it is, issue 50).
 vtkSmartPointer<vtkImageData> Blocks()
 {
   auto image = MakeImage(600, 400, 3, VTK_UNSIGNED_CHAR, 0.0, 2);
   FillImage(image, [](int x, int y, int z, int k) {
-    return ((x / 7 + y / 5 + z) % 3 == 0) ? 200.0 - 50.0 * k : 20.0 * k;
+    return ((x / 7 + y + z) % 3 == 0) ? 200.0 - 50.0 * k : 20.0 * k;
   });
   return image;
 }

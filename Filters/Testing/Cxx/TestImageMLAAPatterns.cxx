@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
 // SPDX-License-Identifier: BSD-3-Clause
 // Exact expected pixels of vtkImageMLAA on small synthetic images: a straight step edge, the
-// L, U and Z patterns of the GPU Pro 2 chapter, thin lines alone and side by side, T junctions
+// L, U and Z patterns of the GPU Pro 2 chapter, a rectangle's corner (left alone, issue 50), thin lines alone and side by side, T junctions
 // that a line goes on past (no step) and a rim's one-pixel crossing edge (a step), a line
 // longer than the search distance,
 // one-pixel-wide images, and a diagonal staircase (DiagonalDetection), whose effect on the error
@@ -100,39 +100,62 @@ void StraightEdges()
 
 void LShape()
 {
-  // The corner of a white rectangle (x >= 6, y >= 4) in a 16 x 8 black image. The bottom side
-  // is a line of top edgels on row 3 that starts at x = 6 with a crossing edge on the white
-  // side (code 1 seen from row 3) and runs into the right border (no crossing edge, distance
-  // clamped to 16). Pixel (6 + p, 4) is p from the crossing edge on a line of p + 17, so it takes
-  // the black below it with the L area 1/2 (1 - (2p + 1)/(p + 17)). The left side is the same
-  // by symmetry. Black pixels stay black: the areas fall on the white side.
-  auto in = Grey(16, 8, [](int x, int y) { return x >= 6 && y >= 4; });
+  // The L pattern: a line with a one-pixel step at one end and nothing at the other. A white
+  // region in a 16 x 8 black image: rows 5 to 7 whole, and row 4 from x = 6 on, so that its
+  // lower outline steps down by one pixel at x = 6. The line of top edgels on row 3 runs from
+  // x = 6 into the right border (distance clamped to 16) and starts at the step's crossing edge,
+  // on the white side (code 1 seen from row 3): pixel (6 + p, 4) is p from the crossing edge on a
+  // line of p + 17, so it takes the black below it with the L area 1/2 (1 - (2p + 1)/(p + 17)).
+  // The line of top edgels on row 4, from the left border to x = 5, ends at the same crossing
+  // edge, on its own (black) side (code 3): pixel (5 - p, 4) takes the white above it with the
+  // same areas. The crossing edge itself is a vertical line of one pixel between two steps on
+  // opposite sides (a Z of length 1, area 1/8 on each side), and (5, 4) and (6, 4) blend along
+  // their horizontal lines only, whose weight 8/17 is the larger (dominant direction).
+  auto in = Grey(16, 8, [](int x, int y) { return y >= 5 || (x >= 6 && y >= 4); });
   auto weights = Weights(in);
   MLAA_CHECK(GetValue(weights, 6, 3, 1) == Q(8.0 / 17.0)); // 120
   MLAA_CHECK(GetValue(weights, 6, 3, 0) == 0.0);
-  MLAA_CHECK(GetValue(weights, 6, 4, 2) == Q(8.0 / 17.0));
-  MLAA_CHECK(GetValue(weights, 6, 4, 3) == 0.0);
+  MLAA_CHECK(GetValue(weights, 5, 4, 0) == Q(8.0 / 17.0));
+  MLAA_CHECK(GetValue(weights, 5, 4, 1) == 0.0);
+  MLAA_CHECK(GetValue(weights, 6, 4, 2) == Q(1.0 / 8.0));
+  MLAA_CHECK(GetValue(weights, 6, 4, 3) == Q(1.0 / 8.0));
 
   auto out = RunMLAA(in, MediumOptions());
   std::vector<std::pair<int, int>> changed;
-  // The corner pixel takes black from below and from the left with equal weights.
-  MLAA_CHECK(GetValue(out, 6, 4) == White - Q(8.0 / 17.0)); // 135
-  changed.emplace_back(6, 4);
-  for (int p = 1; p <= 9; ++p)
+  for (int p = 0; p <= 9; ++p)
   {
-    const double expected = White - Q(LArea(p, p + 17));
     MLAA_CHECK(GetValue(weights, 6 + p, 3, 1) == Q(LArea(p, p + 17)));
-    MLAA_CHECK(GetValue(out, 6 + p, 4) == expected);
+    MLAA_CHECK(GetValue(out, 6 + p, 4) == White - Q(LArea(p, p + 17)));
     changed.emplace_back(6 + p, 4);
   }
-  // The left side, column 6 from row 5 up to the top border (p = 1..3), by symmetry.
-  for (int p = 1; p <= 3; ++p)
+  for (int p = 0; p <= 5; ++p)
   {
-    MLAA_CHECK(GetValue(weights, 6, 4 + p, 2) == Q(LArea(p, p + 17)));
-    MLAA_CHECK(GetValue(out, 6, 4 + p) == White - Q(LArea(p, p + 17)));
-    changed.emplace_back(6, 4 + p);
+    MLAA_CHECK(GetValue(weights, 5 - p, 4, 0) == Q(LArea(p, p + 17)));
+    MLAA_CHECK(GetValue(out, 5 - p, 4) == Q(LArea(p, p + 17)));
+    changed.emplace_back(5 - p, 4);
   }
   MLAA_CHECK(OthersUnchanged(in, out, changed));
+}
+
+void RectangleCorner()
+{
+  // The corner of a white rectangle (x >= 6, y >= 4) in a 16 x 8 black image, its sides on pixel
+  // boundaries. The chapter reads its bottom side as an L (the crossing edge at x = 6 as a step,
+  // the right border as nothing) and ramps it, but the crossing edge is the rectangle's left
+  // side, which goes on for more than one pixel: a corner, not a step, and nothing seen tells
+  // that the sides leave the pixel boundaries (issue 50). Nothing changes, at every preset and
+  // search length, with and without corner extrapolation.
+  auto in = Grey(16, 8, [](int x, int y) { return x >= 6 && y >= 4; });
+  for (int steps : { 1, 2, 4, 8, 16, 32, 64, 128 })
+  {
+    for (bool corners : { false, true })
+    {
+      auto options = MediumOptions();
+      options->SetMaxSearchSteps(steps);
+      options->SetCornerExtrapolation(corners);
+      MLAA_CHECK(Compare(in, RunMLAA(in, options)).Count == 0);
+    }
+  }
 }
 
 void UShape()
@@ -483,6 +506,7 @@ int TestImageMLAAPatterns(int, char*[])
 {
   StraightEdges();
   LShape();
+  RectangleCorner();
   UShape();
   ZShape();
   ThinLine();

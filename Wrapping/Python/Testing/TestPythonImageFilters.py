@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """vtkImageMLAA and vtkImageDLAA from Python on numpy data: exact values on the chapter's L and U
 shapes (worked out independently below from the area formula of section 4.3), straight edges
-left alone, the same through vtkmlaa.antialias_array, and DLAA's shape, type and flat regions."""
+and a rectangle's corner left alone, the same through vtkmlaa.antialias_array, and DLAA's shape, type and flat regions."""
 import numpy
 
 import vtkmlaa
@@ -43,23 +43,30 @@ def changed_only(before, after, allowed, what):
     check(numpy.array_equal(before[mask], after[mask]), what + ": every other pixel unchanged")
 
 
-# L shape: the corner of a white rectangle x >= 6, y >= 4 in a 16 x 8 black image.
-l_in = grey(16, 8, lambda x, y: (x >= 6) & (y >= 4))
+# L shape: a line with a one-pixel step at one end and the border at the other. White rows 5 to 7
+# and row 4 from x = 6 in a 16 x 8 black image: the lower outline steps down at x = 6. The line
+# under row 4 (x >= 6) and the line over row 4 (x <= 5) both end at the step's crossing edge.
+l_in = grey(16, 8, lambda x, y: (y >= 5) | ((x >= 6) & (y >= 4)))
 for name, array in (("grey", l_in), ("RGB", numpy.repeat(l_in[:, :, None], 3, axis=2))):
     out = run_mlaa(array)
     pixel = (lambda x, y: out[y, x]) if out.ndim == 2 else (lambda x, y: out[y, x, 0])
     if out.ndim == 3:
         check((out == out[:, :, :1]).all(), name + " L: the channels stay equal")
-    expected = {(6, 4): 255 - quantize(8.0 / 17.0)}  # 135: black from below and the left
-    for p in range(1, 10):  # the bottom side, up to the right border
+    expected = {}
+    for p in range(0, 10):  # white pixels over the lower line, up to the right border
         expected[(6 + p, 4)] = 255 - quantize(l_area(p, p + 17))
-    for p in range(1, 4):  # the left side, up to the top border
-        expected[(6, 4 + p)] = 255 - quantize(l_area(p, p + 17))
+    for p in range(0, 6):  # black pixels under the upper line, up to the left border
+        expected[(5 - p, 4)] = quantize(l_area(p, p + 17))
     check(expected[(6, 4)] == 135, "the corner's expected value is 135")
     for (x, y), value in sorted(expected.items()):
         check(pixel(x, y) == value,
               "%s L: pixel (%d, %d) is %d, expected %d" % (name, x, y, pixel(x, y), value))
     changed_only(array, out, expected.keys(), name + " L")
+
+# A rectangle's corner (x >= 6, y >= 4): its sides lie on pixel boundaries and end at a corner
+# and at the borders, with no step seen: left alone (issue 50).
+corner = grey(16, 8, lambda x, y: (x >= 6) & (y >= 4))
+check(numpy.array_equal(run_mlaa(corner), corner), "a rectangle's corner is left alone")
 
 # The same L in float32 [0, 1]: the weights are 8-bit, so 1 - 120/255 at the corner.
 l_float = run_mlaa(l_in.astype(numpy.float32) / 255.0)

@@ -42,7 +42,8 @@ for path in ours:
     assert os.path.realpath(path).startswith(prefix + os.sep), "loaded from outside: " + path
 import numpy
 image = numpy.zeros((8, 16), numpy.uint8)
-image[4:, 6:] = 255
+image[4:, 6:] = 255  # a step down at x = 6 (an L: 135 next to it)
+image[5:, :] = 255
 out = vtkmlaa.antialias_array(image, preset="medium")
 assert out[4, 6] == 135, out[4, 6]
 print("installed package OK:", vtkmlaa.__file__, sorted(ours))
