@@ -360,9 +360,10 @@ private:
   // Issue 50: whether l's line, with ends of codes e1 and e2 d1 pixels before it and d2 after it,
   // is the side of a shape that shows no step of a staircase, and is left alone. The area table
   // reads every crossing edge on one side of an end as a one-pixel step (section 4.3.2). At a
-  // corner of a shape (SideEnd) it is not: the crossing edge is a side of its own. Where the other
-  // end is no step either (a corner too, a junction of wider shapes, the image border, no crossing
-  // edge, or beyond the search's reach), nothing seen tells that the side leaves the pixel
+  // corner of a shape (CornerEnd, and not CrossingEndsInStep) it is not: the crossing edge is a
+  // side of its own. Where the other end is no step either (a corner too, a junction of wider
+  // shapes, the image border, no crossing edge, or beyond the search's reach), nothing seen
+  // tells that the side leaves the pixel
   // boundary, and the chapter's U, Z or L ramp from the corner would blur a side that is right
   // (axis-aligned rectangles, voxels seen straight on, bars, legends, viewport borders). A side
   // whose true course is a fraction of a pixel off the boundary looks the same, and no reading
@@ -379,34 +380,36 @@ private:
   template <bool V>
   bool SideWithoutSteps(const Line<V>& l, int e1, int e2, int d1, int d2) const
   {
-    int run1 = 0, run2 = 0;
-    const bool side1 = this->SideEnd(l, -1, e1, d1, run1);
-    const bool side2 = this->SideEnd(l, +1, e2, d2, run2);
-    if (!((side1 || side2) && (side1 || e1 == 0 || this->WideJunction(l, -1, e1, d1)) &&
-          (side2 || e2 == 0 || this->WideJunction(l, +1, e2, d2))))
+    const int length = d1 + d2 + 1;
+    if (length == 1)
     {
       return false;
     }
-    // A line of one pixel (a step of a staircase across it, or the end of a one-pixel-wide bar),
-    // and a small shape, short in both directions, keep the chapter's reading.
+    const bool corner1 = this->CornerEnd(l, -1, e1, d1);
+    const bool corner2 = this->CornerEnd(l, +1, e2, d2);
+    if (!((corner1 || corner2) && (corner1 || e1 == 0 || this->WideJunction(l, -1, e1, d1)) &&
+          (corner2 || e2 == 0 || this->WideJunction(l, +1, e2, d2))))
+    {
+      return false;
+    }
+    int run1 = 0, run2 = 0;
+    if ((corner1 && this->CrossingEndsInStep(l, -1, e1, d1, run1)) ||
+      (corner2 && this->CrossingEndsInStep(l, +1, e2, d2, run2)))
+    {
+      return false;
+    }
+    // A small shape, short in both directions, keeps the chapter's reading.
     const int maxDistance = this->S.CellSize - 1;
-    const int length = d1 + d2 + 1;
-    return length > 1 &&
-      (length >= MinimumSideLength || d1 >= maxDistance || d2 >= maxDistance ||
-        std::max(run1, run2) >= MinimumSideLength);
+    return length >= MinimumSideLength || d1 >= maxDistance || d2 >= maxDistance ||
+      std::max(run1, run2) >= MinimumSideLength;
   }
 
   // Whether the end of l's line in direction s (-1 or +1), `distance` pixels away with crossing
   // code `code`, is the corner of a shape: a crossing edge on one side only (1 or 3) that goes on
-  // for a second pixel away from the line (CrossingGoesOn), no line going on one row (column) over
-  // past it (which would make it a step), and, followed away from the line within the search's
-  // reach, the crossing edge does not end at a step of its own: where a side meets a steep
-  // staircase (the corner of a polygon in perspective, a checkerboard's squares), the crossing
-  // edge goes on one column (row) over, for two pixels or more, and the line is the flat run of a
-  // slanted outline whose corner the chapter's reading rounds as it should. Edgels outside the
-  // image are none.
+  // for a second pixel away from the line (CrossingGoesOn), and no line going on one row
+  // (column) over past it (which would make it a step). Edgels outside the image are none.
   template <bool V>
-  bool SideEnd(const Line<V>& l, int s, int code, int distance, int& run) const
+  bool CornerEnd(const Line<V>& l, int s, int code, int distance) const
   {
     if (code != 1 && code != 3)
     {
@@ -414,13 +417,20 @@ private:
     }
     const int beyond = s * (distance + 1); // the pixel just past the end
     const int crossing = s < 0 ? beyond + 1 : beyond;
-    if (this->AlongInside(l, beyond, code == 3 ? -1 : 1) ||
-      !this->CrossingGoesOn(l, crossing, 0, code))
-    {
-      return false;
-    }
-    // The crossing edge covers v = 0 and -1 (code 3) or v = 1 and 2 (code 1); follow it on,
-    // counting its pixels in `run`.
+    return !this->AlongInside(l, beyond, code == 3 ? -1 : 1) &&
+      this->CrossingGoesOn(l, crossing, 0, code);
+  }
+
+  // Whether the crossing edge of such a corner, followed away from the line within the search's
+  // reach, ends at a step of its own: where a side meets a steep staircase (the corner of a
+  // polygon in perspective, a checkerboard's squares), the crossing edge goes on one column (row)
+  // over, for two pixels or more, and the line is the flat run of a slanted outline whose corner
+  // the chapter's reading rounds as it should. `run` counts the crossing edge's pixels.
+  template <bool V>
+  bool CrossingEndsInStep(const Line<V>& l, int s, int code, int distance, int& run) const
+  {
+    const int crossing = s < 0 ? -distance : distance + 1;
+    // The crossing edge covers v = 0 and -1 (code 3) or v = 1 and 2 (code 1); follow it on.
     const int away = code == 3 ? -1 : 1;
     const int reach = this->S.CellSize - 1;
     run = 2;
@@ -433,13 +443,13 @@ private:
           if (this->CrossingInside(l, crossing + side, v) &&
             this->CrossingInside(l, crossing + side, v + away))
           {
-            return false;
+            return true;
           }
         }
-        return true;
+        return false;
       }
     }
-    return true;
+    return false;
   }
 
   // Whether that end has crossing edges on both sides (code 4) that both go on for a second pixel

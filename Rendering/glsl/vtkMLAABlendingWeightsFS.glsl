@@ -394,38 +394,39 @@ bool junctionGoesOn(int code, ivec2 p, bool vertical, int crossing, int beyond)
 
 // Whether the end of p's line in direction s (-1 or +1), `distance` pixels away with crossing code
 // `code`, is the corner of a shape: a crossing edge on one side only that goes on for a second
-// pixel away from the line, no line going on one row (column) over past it, and the crossing
-// edge, followed away from the line within the reach, not ending at a step of its own (the next
-// run one column (row) over, for two pixels or more: a side meeting a steep staircase). Issue 50;
-// WeightsComputer::SideEnd.
-bool sideEnd(ivec2 p, bool vertical, int s, int code, int distance, out int run)
+// pixel away from the line, and no line going on one row (column) over past it. Issue 50;
+// WeightsComputer::CornerEnd.
+bool cornerEnd(ivec2 p, bool vertical, int s, int code, int distance)
 {
-  run = 0;
   if (code != 1 && code != 3)
   {
     return false;
   }
   int beyond = s * (distance + 1); // the pixel just past the end
   int crossing = s < 0 ? beyond + 1 : beyond;
-  if (alongAt(p, vertical, beyond, code == 3 ? -1 : 1) ||
-    !crossingGoesOn(p, vertical, crossing, 0, code))
-  {
-    return false;
-  }
-  // The crossing edge covers v = 0 and -1 (code 3) or v = 1 and 2 (code 1); follow it on,
-  // counting its pixels in `run`.
+  return !alongAt(p, vertical, beyond, code == 3 ? -1 : 1) &&
+    crossingGoesOn(p, vertical, crossing, 0, code);
+}
+
+// Whether the crossing edge of such a corner, followed away from the line within the reach, ends
+// in a step of its own (the next run one column (row) over, for two pixels or more: a side meeting
+// a steep staircase); `run` counts its pixels (WeightsComputer::CrossingEndsInStep).
+bool crossingEndsInStep(ivec2 p, bool vertical, int s, int code, int distance, out int run)
+{
+  int crossing = s < 0 ? -distance : distance + 1;
+  // The crossing edge covers v = 0 and -1 (code 3) or v = 1 and 2 (code 1); follow it on.
   int away = code == 3 ? -1 : 1;
   run = 2;
   for (int v = code == 3 ? -2 : 3; abs(v) <= cellSize - 1; v += away, ++run)
   {
     if (!crossingAt(p, vertical, crossing, v))
     {
-      return !((crossingAt(p, vertical, crossing - 1, v) &&
-                 crossingAt(p, vertical, crossing - 1, v + away)) ||
-        (crossingAt(p, vertical, crossing + 1, v) && crossingAt(p, vertical, crossing + 1, v + away)));
+      return (crossingAt(p, vertical, crossing - 1, v) &&
+               crossingAt(p, vertical, crossing - 1, v + away)) ||
+        (crossingAt(p, vertical, crossing + 1, v) && crossingAt(p, vertical, crossing + 1, v + away));
     }
   }
-  return true;
+  return false;
 }
 
 // Whether that end has crossing edges on both sides (code 4) that both go on for a second pixel
@@ -444,19 +445,26 @@ bool wideJunction(ivec2 p, bool vertical, int s, int code, int distance)
 // (issue 50; WeightsComputer::SideWithoutSteps).
 bool sideWithoutSteps(ivec2 p, bool vertical, int e1, int e2, int d1, int d2)
 {
-  int run1, run2;
-  bool side1 = sideEnd(p, vertical, -1, e1, d1, run1);
-  bool side2 = sideEnd(p, vertical, 1, e2, d2, run2);
-  if (!((side1 || side2) && (side1 || e1 == 0 || wideJunction(p, vertical, -1, e1, d1)) &&
-        (side2 || e2 == 0 || wideJunction(p, vertical, 1, e2, d2))))
+  int length = d1 + d2 + 1;
+  if (length == 1)
+  {
+    return false; // a step of the staircase across it, or the end of a one-pixel bar
+  }
+  bool corner1 = cornerEnd(p, vertical, -1, e1, d1);
+  bool corner2 = cornerEnd(p, vertical, 1, e2, d2);
+  if (!((corner1 || corner2) && (corner1 || e1 == 0 || wideJunction(p, vertical, -1, e1, d1)) &&
+        (corner2 || e2 == 0 || wideJunction(p, vertical, 1, e2, d2))))
   {
     return false;
   }
-  // A line of one pixel (a step of a staircase across it, the end of a one-pixel bar) and a small
-  // shape, short in both directions (a rendered point), keep the chapter's reading.
-  int length = d1 + d2 + 1;
-  return length > 1 &&
-    (length >= 4 || d1 >= cellSize - 1 || d2 >= cellSize - 1 || max(run1, run2) >= 4);
+  int run1 = 0, run2 = 0;
+  if ((corner1 && crossingEndsInStep(p, vertical, -1, e1, d1, run1)) ||
+    (corner2 && crossingEndsInStep(p, vertical, 1, e2, d2, run2)))
+  {
+    return false;
+  }
+  // A small shape, short in both directions (a rendered point), keeps the chapter's reading.
+  return length >= 4 || d1 >= cellSize - 1 || d2 >= cellSize - 1 || max(run1, run2) >= 4;
 }
 
 // Whether one of the two pixels across the edgel of p's line (p and the pixel at v + 1) is one
