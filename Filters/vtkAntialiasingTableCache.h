@@ -24,11 +24,15 @@
 #include <mutex>
 #include <vector>
 
+// The largest table that a cache keeps while nobody holds it, unless told otherwise: 1 MB.
+constexpr std::size_t vtkAntialiasingTableCacheKeptBytes = std::size_t(1) << 20;
+
 template <typename Key, typename Table>
 class vtkAntialiasingTableCache
 {
 public:
-  vtkAntialiasingTableCache(std::size_t keep, std::size_t keepBytes)
+  vtkAntialiasingTableCache(
+    std::size_t keep, std::size_t keepBytes = vtkAntialiasingTableCacheKeptBytes)
     : Keep(keep)
     , KeepBytes(keepBytes)
   {

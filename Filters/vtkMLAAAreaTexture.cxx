@@ -50,7 +50,6 @@ using Offset = std::pair<double, double>;
 // no one holds them, in milliseconds).
 using TableCache = vtkAntialiasingTableCache<std::pair<int, Offset>, std::vector<float>>;
 constexpr std::size_t KeptTables = 1;
-constexpr std::size_t KeptTableBytes = 1 << 20;
 }
 
 //------------------------------------------------------------------------------
@@ -176,7 +175,7 @@ std::shared_ptr<const std::vector<float>> vtkMLAAAreaTexture::GetSharedTable(int
 std::shared_ptr<const std::vector<float>> vtkMLAAAreaTexture::GetSharedTable(
   int maxDistance, double across, double along)
 {
-  static TableCache cache(KeptTables, KeptTableBytes);
+  static TableCache cache(KeptTables);
   const int distance = std::max(1, maxDistance);
   const Offset shift = { std::min(0.5, std::max(-0.5, across)),
     std::min(0.5, std::max(-0.5, along)) };
@@ -241,7 +240,7 @@ void vtkMLAAAreaTexture::ComputeDiagonalAreas(int e1, int e2, int d1, int d2, do
 std::shared_ptr<const std::vector<float>> vtkMLAAAreaTexture::GetSharedDiagonalTable(
   int maxDistance)
 {
-  static TableCache cache(KeptTables, KeptTableBytes);
+  static TableCache cache(KeptTables);
   const int distance = std::max(1, maxDistance);
   return cache.Get({ distance, Offset() }, [distance]() {
     const int d = distance + 1;

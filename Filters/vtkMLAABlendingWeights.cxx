@@ -77,8 +77,7 @@ std::vector<unsigned char> Quantised(const std::vector<float>& table)
 std::shared_ptr<const std::vector<unsigned char>> SharedQuantised(
   int maxDistance, bool diagonal, std::shared_ptr<const std::vector<float>> (*table)(int))
 {
-  static vtkAntialiasingTableCache<std::pair<int, bool>, std::vector<unsigned char>> cache(
-    2, 1 << 20);
+  static vtkAntialiasingTableCache<std::pair<int, bool>, std::vector<unsigned char>> cache(2);
   return cache.Get({ maxDistance, diagonal }, [maxDistance, table]() {
     return std::make_shared<const std::vector<unsigned char>>(Quantised(*table(maxDistance)));
   });
