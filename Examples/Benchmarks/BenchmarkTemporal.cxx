@@ -214,7 +214,9 @@ void Usage(const char* program)
             << "Measures temporal stability against a supersampled reference sequence "
                "(MEASURING.md).\n"
             << "  --size WxH        render size (default 400x300)\n"
-            << "  --scenes a,b,c    scenes (default horizon,thin,texture,silhouettes,orbit)\n"
+            << "  --scenes a,b,c    scenes (default horizon,thin,texture,silhouettes,orbit);\n"
+            << "                    \"all\" and \"held-out\" stand for vtkMLAAScenes' lists (the\n"
+            << "                    held-out scenes are kept out of tuning, as in mlaa-quality)\n"
             << "  --frames K        frames of the orbit (default 60)\n"
             << "  --degrees D       camera step per frame (default 0.25): degrees of azimuth,\n"
             << "                    elevation or roll; for dolly, D % closer to the focal point\n"
@@ -291,7 +293,14 @@ int main(int argc, char* argv[])
     }
     else if (arg == "--scenes" && hasValue)
     {
-      scenes = mlaaBenchmark::SplitList(argv[++i]);
+      scenes.clear();
+      for (const std::string& name : mlaaBenchmark::SplitList(argv[++i]))
+      {
+        const std::vector<std::string> group = name == "all" ? vtkMLAAScenes::Names()
+          : name == "held-out"                               ? vtkMLAAScenes::HeldOutNames()
+                                                             : std::vector<std::string>{ name };
+        scenes.insert(scenes.end(), group.begin(), group.end());
+      }
     }
     else if (arg == "--frames" && hasValue && mlaaBenchmark::ParsePositive(argv[i + 1], frames) &&
       frames >= 2)
