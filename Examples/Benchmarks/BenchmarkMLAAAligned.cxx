@@ -55,25 +55,6 @@ using namespace mlaaBenchmark;
 const int Tolerance = 4;
 using Colour = std::array<int, 3>;
 
-// Uniform numbers from the 32-bit Mersenne twister's raw output (whose sequence the standard
-// fixes), so that the set is the same with every standard library.
-class Random
-{
-public:
-  explicit Random(std::uint32_t seed)
-    : Engine(seed)
-  {
-  }
-  double Uniform(double lo, double hi)
-  {
-    return lo + (hi - lo) * (static_cast<double>(this->Engine()) / 4294967296.0);
-  }
-  int Integer(int lo, int hi) { return std::min(hi, static_cast<int>(this->Uniform(lo, hi + 1))); }
-
-private:
-  std::mt19937 Engine;
-};
-
 struct Picture
 {
   std::string Family;
@@ -92,30 +73,6 @@ struct Picture
     }
   }
 };
-
-Colour RandomColour(Random& random)
-{
-  return { random.Integer(0, 255), random.Integer(0, 255), random.Integer(0, 255) };
-}
-
-// A colour whose largest channel difference from `base` is `contrast` (or as near as the range
-// allows).
-Colour Contrasting(Random& random, const Colour& base, int contrast)
-{
-  Colour colour;
-  const int strongest = random.Integer(0, 2);
-  for (int c = 0; c < 3; ++c)
-  {
-    const double share = c == strongest ? 1.0 : random.Uniform(0.0, 1.0);
-    int delta = static_cast<int>(std::lround(share * contrast));
-    if (base[c] + delta > 255 || (base[c] - delta >= 0 && random.Uniform(0, 1) < 0.5))
-    {
-      delta = -delta;
-    }
-    colour[c] = std::min(255, std::max(0, base[c] + delta));
-  }
-  return colour;
-}
 
 Picture MakePicture(int k, int width, int height, Random& random)
 {
@@ -228,14 +185,6 @@ vtkSmartPointer<vtkImageData> ToImage(const Picture& p)
     }
   }
   return image;
-}
-
-void WritePNG(vtkImageData* data, const std::string& path)
-{
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputData(data);
-  writer->SetFileName(path.c_str());
-  writer->Write();
 }
 
 // A crop of `size` x `size` pixels centred on (cx, cy) of the input, the output and the damage

@@ -57,6 +57,10 @@
 
 namespace
 {
+using mlaaBenchmark::Contrasting;
+using mlaaBenchmark::Random;
+using mlaaBenchmark::RandomColour;
+using mlaaBenchmark::WritePNG;
 const double Tolerance = 4.0;
 const double Pi = 3.14159265358979323846;
 
@@ -105,25 +109,6 @@ struct Scene
   }
 };
 
-// Uniform numbers from the 32-bit Mersenne twister's raw output (whose sequence the standard
-// fixes), so that the set is the same with every standard library.
-class Random
-{
-public:
-  explicit Random(std::uint32_t seed)
-    : Engine(seed)
-  {
-  }
-  double Uniform(double lo, double hi)
-  {
-    return lo + (hi - lo) * (static_cast<double>(this->Engine()) / 4294967296.0);
-  }
-  int Integer(int lo, int hi) { return std::min(hi, static_cast<int>(this->Uniform(lo, hi + 1))); }
-
-private:
-  std::mt19937 Engine;
-};
-
 // A rectangle of size length x width centred at (cx, cy), its length along the angle `angle`
 // (radians) from the x axis.
 Shape Rectangle(double cx, double cy, double length, double width, double angle,
@@ -140,34 +125,6 @@ Shape Rectangle(double cx, double cy, double length, double width, double angle,
   }
   shape.Colour = colour;
   return shape;
-}
-
-std::array<int, 3> RandomColour(Random& random)
-{
-  return { random.Integer(0, 255), random.Integer(0, 255), random.Integer(0, 255) };
-}
-
-// A colour whose largest channel difference from `base` is `contrast` (or as near as the range
-// allows).
-std::array<int, 3> Contrasting(Random& random, const std::array<int, 3>& base, int contrast)
-{
-  std::array<int, 3> colour;
-  const int strongest = random.Integer(0, 2);
-  for (int c = 0; c < 3; ++c)
-  {
-    const double share = c == strongest ? 1.0 : random.Uniform(0.0, 1.0);
-    int delta = static_cast<int>(std::lround(share * contrast));
-    if (base[c] + delta > 255 && base[c] - delta >= 0)
-    {
-      delta = -delta;
-    }
-    else if (base[c] + delta <= 255 && base[c] - delta >= 0 && random.Uniform(0, 1) < 0.5)
-    {
-      delta = -delta;
-    }
-    colour[c] = std::min(255, std::max(0, base[c] + delta));
-  }
-  return colour;
 }
 
 // The angle from the axis: log-uniform magnitude in [0.05, 5] degrees, either sign.
@@ -503,14 +460,6 @@ struct Sums
     return none > 0 ? 1.0 - (this->MethodSE - this->SteplessSE - this->OneStepSE) / none : 0.0;
   }
 };
-
-void WritePNG(vtkImageData* data, const std::string& path)
-{
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputData(data);
-  writer->SetFileName(path.c_str());
-  writer->Write();
-}
 
 struct Configuration
 {

@@ -451,14 +451,7 @@ int main(int argc, char* argv[])
     else if (arg == "--scenes" && hasValue)
     {
       // "all" and "held-out" stand for those lists.
-      scenes.clear();
-      for (const std::string& name : mlaaBenchmark::SplitList(argv[++i]))
-      {
-        const std::vector<std::string> group = name == "all" ? vtkMLAAScenes::Names()
-          : name == "held-out"                               ? vtkMLAAScenes::HeldOutNames()
-                                                             : std::vector<std::string>{ name };
-        scenes.insert(scenes.end(), group.begin(), group.end());
-      }
+      scenes = mlaaBenchmark::SceneList(argv[++i]);
     }
     else if (arg == "--samples" && hasValue && mlaaBenchmark::ParsePositive(argv[i + 1], samples))
     {

@@ -293,14 +293,7 @@ int main(int argc, char* argv[])
     }
     else if (arg == "--scenes" && hasValue)
     {
-      scenes.clear();
-      for (const std::string& name : mlaaBenchmark::SplitList(argv[++i]))
-      {
-        const std::vector<std::string> group = name == "all" ? vtkMLAAScenes::Names()
-          : name == "held-out"                               ? vtkMLAAScenes::HeldOutNames()
-                                                             : std::vector<std::string>{ name };
-        scenes.insert(scenes.end(), group.begin(), group.end());
-      }
+      scenes = mlaaBenchmark::SceneList(argv[++i]);
     }
     else if (arg == "--frames" && hasValue && mlaaBenchmark::ParsePositive(argv[i + 1], frames) &&
       frames >= 2)

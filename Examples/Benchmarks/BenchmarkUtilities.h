@@ -1,22 +1,31 @@
 // SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
 // SPDX-License-Identifier: BSD-3-Clause
-// Small helpers shared by the three benchmark programs of Examples/Benchmarks: command-line
-// parsing, a stopwatch and order statistics. Header-only; not part of any library.
+// Small helpers shared by the benchmark programs of Examples/Benchmarks: command-line parsing
+// (scene lists included), a stopwatch, order statistics, and the seeded colours and PNG writing of
+// the synthetic image sets. Header-only; not part of any library.
 #ifndef BenchmarkUtilities_h
 #define BenchmarkUtilities_h
 
 #include "mlaaOptionTable.h"
+#include "vtkMLAAScenes.h"
 
+#include "vtkImageData.h"
 #include "vtkMLAAOptions.h"
+#include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkPNGWriter.h"
 #include "vtkRenderWindow.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <cmath>
+#include <cstdint>
 #include <ctime>
 #include <cstdlib>
 #include <functional>
 #include <iostream>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -237,6 +246,75 @@ inline std::vector<std::string> SplitList(const std::string& text)
     }
   }
   return items;
+}
+
+// The scenes of a --scenes list: "all" and "held-out" stand for vtkMLAAScenes' two lists.
+inline std::vector<std::string> SceneList(const std::string& text)
+{
+  std::vector<std::string> scenes;
+  for (const std::string& name : SplitList(text))
+  {
+    const std::vector<std::string> group = name == "all" ? vtkMLAAScenes::Names()
+      : name == "held-out"                               ? vtkMLAAScenes::HeldOutNames()
+                                                         : std::vector<std::string>{ name };
+    scenes.insert(scenes.end(), group.begin(), group.end());
+  }
+  return scenes;
+}
+
+// Uniform numbers from the 32-bit Mersenne twister's raw output (whose sequence the standard
+// fixes), so that the synthetic sets are the same with every standard library.
+class Random
+{
+public:
+  explicit Random(std::uint32_t seed)
+    : Engine(seed)
+  {
+  }
+  double Uniform(double lo, double hi)
+  {
+    return lo + (hi - lo) * (static_cast<double>(this->Engine()) / 4294967296.0);
+  }
+  int Integer(int lo, int hi) { return std::min(hi, static_cast<int>(this->Uniform(lo, hi + 1))); }
+
+private:
+  std::mt19937 Engine;
+};
+
+inline std::array<int, 3> RandomColour(Random& random)
+{
+  return { random.Integer(0, 255), random.Integer(0, 255), random.Integer(0, 255) };
+}
+
+// A colour whose largest channel difference from `base` is `contrast` (or as near as the range
+// allows).
+inline std::array<int, 3> Contrasting(Random& random, const std::array<int, 3>& base, int contrast)
+{
+  std::array<int, 3> colour;
+  const int strongest = random.Integer(0, 2);
+  for (int c = 0; c < 3; ++c)
+  {
+    const double share = c == strongest ? 1.0 : random.Uniform(0.0, 1.0);
+    int delta = static_cast<int>(std::lround(share * contrast));
+    if (base[c] + delta > 255 && base[c] - delta >= 0)
+    {
+      delta = -delta;
+    }
+    else if (base[c] + delta <= 255 && base[c] - delta >= 0 && random.Uniform(0, 1) < 0.5)
+    {
+      delta = -delta;
+    }
+    colour[c] = std::min(255, std::max(0, base[c] + delta));
+  }
+  return colour;
+}
+
+inline void WritePNG(vtkImageData* data, const std::string& path)
+{
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(data);
+  writer->SetFileName(path.c_str());
+  writer->Write();
 }
 
 // Wall-clock stopwatch in milliseconds (steady clock).
