@@ -795,13 +795,13 @@ vec2 lineWeights(ivec2 p, bool vertical, ivec2 lengths)
   {
     e2 = 0;
   }
-  // With sample areas, a pixel pair whose samples differ measures where the side lies instead.
+  // With sample areas, a pixel pair whose samples differ measures where the side lies instead
+  // (read only for such sides: lineArea reads them for the others).
+  if (sideWithoutSteps(p, vertical, e1, e2, d1, d2)
 #ifdef MLAA_SAMPLE_AREAS
-  bool sampled = samplesDiffer(p) || samplesDiffer(lineToImage(p, vertical, 0, 1));
-#else
-  bool sampled = false;
+    && !(samplesDiffer(p) || samplesDiffer(lineToImage(p, vertical, 0, 1)))
 #endif
-  if (!sampled && sideWithoutSteps(p, vertical, e1, e2, d1, d2))
+  )
   {
     return vec2(0.0);
   }

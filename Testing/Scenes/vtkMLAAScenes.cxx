@@ -865,6 +865,7 @@ struct Scene
 {
   std::string Description;
   std::function<void(vtkRenderer*)> Build;
+  bool AxisAligned = false; // vtkMLAAScenes::AxisAligned
 };
 
 const std::vector<std::pair<std::string, Scene>>& Scenes()
@@ -885,7 +886,7 @@ const std::vector<std::pair<std::string, Scene>>& Scenes()
     { "points", { "point clouds of 1-, 2- and 3-pixel points on a plain and a shaded background",
                   PointCloud } },
     { "voxels", { "32 x 24 random voxels seen straight on, filling the view (no interpolation)",
-                  Voxels } },
+                  Voxels, true } },
   };
   return scenes;
 }
@@ -951,6 +952,12 @@ std::string Describe(const std::string& name)
 {
   const Scene* scene = Find(name);
   return scene ? scene->Description : std::string();
+}
+
+bool AxisAligned(const std::string& name)
+{
+  const Scene* scene = Find(name);
+  return scene && scene->AxisAligned;
 }
 
 bool Build(const std::string& name, vtkRenderer* renderer)

@@ -35,6 +35,13 @@ std::vector<std::string> HeldOutNames();
 std::string Describe(const std::string& name);
 
 /**
+ * Whether every edge of scene `name` is a horizontal or vertical side (voxels seen straight on):
+ * it has no staircase, and MLAA, which leaves sides without steps alone, has nothing to change
+ * there, at any size (issue 50). False for an unknown name.
+ */
+bool AxisAligned(const std::string& name);
+
+/**
  * Adds the actors of scene `name` to `renderer`, sets its background and camera. Returns false
  * for an unknown name.
  */

@@ -34,10 +34,11 @@ void Scenes(const PassMethod& method, MessageObserver* messages)
   // Every shared scene: changes near edges only.
   for (const std::string& name : vtkMLAAScenes::Names())
   {
-    // The voxels fill a 4:3 view; at 320 x 240 their sides lie on pixel boundaries, 10 pixels
-    // apart: nothing is aliased, and MLAA leaves every pixel as rendered (issue 50), in single
-    // sample and with 4 samples. DLAA blurs every edge along itself, sides on boundaries too.
-    const bool exact = name == "voxels";
+    // An axis-aligned scene (the voxels, filling a 4:3 view) is rendered at 320 x 240, where its
+    // sides lie on pixel boundaries, 10 pixels apart: nothing is aliased, and MLAA leaves every
+    // pixel as rendered (issue 50), in single sample and with 4 samples. DLAA blurs every edge
+    // along itself, sides on boundaries too.
+    const bool exact = vtkMLAAScenes::AxisAligned(name);
     SceneWindow scene(name, exact ? 320 : 300, exact ? 240 : 200);
     auto pass = method.Use(scene.Renderer);
     messages->Watch(pass);
