@@ -53,6 +53,7 @@
 #include "vtkRenderingMLAAModule.h" // For export macro
 #include "vtkWeakPointer.h"          // For ResourceWindow
 
+#include <memory> // For std::unique_ptr
 #include <string> // For std::string
 #include <vector> // For std::vector
 
@@ -453,72 +454,30 @@ private:
   vtkTextureObject* AlphaTexture = nullptr;
   ShaderVariant KeepAlphaQuad, RestoreAlphaQuad;
 
-  // Temporal antialiasing (see SetTemporal): the history, its targets and the state of the last
-  // render, defined in the .cxx.
+  // Temporal antialiasing (see SetTemporal): its histories, each the owner of its targets, and the
+  // steps of a temporal frame (vtkOpenGLAntialiasingPassTemporal.h).
   bool Temporal = false;
   double TemporalWeight = 0.1;
   int ConvergedFrames = 16;
   class TemporalHistory;
-  // The histories of the renderers, and of the eyes of stereo renders, that the pass renders;
-  // History is the one of the render under way.
   class TemporalHistories;
-  TemporalHistories* Histories = nullptr;
-  TemporalHistory* History = nullptr;
-  // Points History at the history of the renderer and eye that `s` renders, made when first
-  // needed.
-  void SelectHistory(const vtkRenderState* s);
-  // Before the delegate's render: decides whether the history is kept and jitters the camera.
-  void BeginTemporalFrame(const vtkRenderState* s, const Frame& frame);
-  // After it: puts the camera back and keeps the scene's state for the next render.
-  void EndTemporalJitter(const vtkRenderState* s);
-  // Antialiases the frame into the history's current target, blends it with the history and
-  // writes the result (and the delegate's depth) into the target viewport.
-  bool AntialiasTemporal(const Frame& frame);
-  // The mask of the moving camera's blend (TEMPORAL_MASK in vtkAntialiasingTemporalFS.glsl):
-  // copies the current frame `current` into the history being written (draw buffer 0), marks the
-  // pixels whose blend is not that frame in the history's depth attachment, and leaves the depth
-  // test on for the blend.
-  bool MarkBlendedPixels(vtkOpenGLRenderWindow* renWin, vtkTextureObject* current);
+  std::unique_ptr<TemporalHistories> Histories;
+
   // Renders the delegate into `color` and `depth` through `fbo` (cleared to transparent black
   // first when compositing over the target).
   void RenderDelegateToTextures(const vtkRenderState* s, vtkOpenGLFramebufferObject* fbo,
     vtkTextureObject* color, vtkTextureObject* depth, int width, int height, bool composite);
 
-  // Multisampled rendering (SetMultiSamples; the shaders are vtkAntialiasingSamplesFS.glsl).
+  // Multisampled rendering (SetMultiSamples): the owner of its targets and its shaders, and the
+  // antialiasing of the sample sets (vtkOpenGLAntialiasingPassSamples.h).
   int MultiSamples = 0;
   int RenderedMultiSamples = 0;
   bool SampleShading = true;
   bool RenderedSampleShading = false;
-  bool WarnedSampleShading = false; // sample shading unavailable, said once
-  // Whether the last multisampled render's samples were all shaded on their own (SampleSet).
-  bool SamplesShaded = false;
   int DebugSample = -1;
-  int WarnedMultiSamples = 0; // the count asked for that the last warning was about
   bool WarnedTemporalMultiSamples = false; // MultiSamples unused while Temporal is on, said once
-  // The sample counts the driver offers for the colour and depth formats of the targets, largest
-  // first, queried once per colour type (index 1: floating point) and context.
-  std::vector<int> SupportedSampleCounts[2];
-  // The supported count nearest to MultiSamples (warning once when it differs), 0 for none.
-  int ChooseMultiSamples(vtkOpenGLRenderWindow* renWin, bool floatColor);
-  // Whether the multisampled render shades every sample: SampleShading, where the context has
-  // it (warning once where it has not).
-  bool UsesSampleShading(vtkOpenGLRenderWindow* renWin);
-  // Creates or resizes the multisampled targets and the sample and accumulation textures.
-  void PrepareSampleTargets(const Frame& frame, int samples);
-  // Copies each sample set into ColorTexture and DepthTexture, antialiases it with Antialias
-  // into SampleTexture, accumulates the average and writes it with the nearest depth into the
-  // target viewport (premultiplied "over" when compositing).
-  bool AntialiasSamples(const Frame& frame, int samples);
-  // Copies sample `sample` of the multisampled targets into ColorTexture and DepthTexture.
-  bool CopySample(vtkOpenGLRenderWindow* renWin, int sample, int samples, int width, int height);
-  void ReleaseSampleResources(vtkWindow* w);
-  vtkOpenGLFramebufferObject* SamplesFramebuffer = nullptr; // the delegate's, multisampled
-  vtkOpenGLFramebufferObject* SampleFramebuffer = nullptr;  // one sample's result, accumulation
-  vtkTextureObject* SamplesColorTexture = nullptr;
-  vtkTextureObject* SamplesDepthTexture = nullptr;
-  vtkTextureObject* SampleTexture = nullptr;       // one antialiased sample image
-  vtkTextureObject* AccumulationTexture = nullptr; // the average of the antialiased samples
-  ShaderVariant SampleCopyQuad, AccumulateQuad, ResolveQuad;
+  class SampleTargets;
+  std::unique_ptr<SampleTargets> Samples;
   SampleSet CurrentSampleSet;
 };
 

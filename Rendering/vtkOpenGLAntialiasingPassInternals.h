@@ -1,7 +1,8 @@
 // SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
 // SPDX-License-Identifier: BSD-3-Clause
-// Small helpers of the antialiasing passes (vtkOpenGLAntialiasingPass and its subclasses): render
-// targets that are resized in place, textures bound for a scope, #define lines of shader variants.
+// Small helpers of the antialiasing passes (vtkOpenGLAntialiasingPass, its temporal history and
+// multisampled targets, and its subclasses): render targets that are resized in place, textures
+// bound for a scope, #define lines of shader variants.
 // Private header.
 #ifndef vtkOpenGLAntialiasingPassInternals_h
 #define vtkOpenGLAntialiasingPassInternals_h
@@ -9,6 +10,7 @@
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
+#include "vtkRenderState.h"
 #include "vtkRenderTimerLog.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
@@ -264,6 +266,20 @@ inline void PrepareFramebuffers(vtkOpenGLRenderWindow* renWin, bool reset,
       (*fbo)->SetContext(renWin);
     }
   }
+}
+
+// Whether `predicate` holds for one of the props a render draws.
+template <typename Predicate>
+inline bool AnyProp(const vtkRenderState* s, Predicate predicate)
+{
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    if (predicate(s->GetPropArray()[i]))
+    {
+      return true;
+    }
+  }
+  return false;
 }
 } // namespace vtkOpenGLAntialiasingPassInternals
 

@@ -35,7 +35,8 @@
 //                       history at every pixel, and marks with depth 1 the pixels the
 //                       reprojecting blend does not discard (flatFrame), 0 the others, so that
 //                       the blend then runs on them only, the depth test dropping the others
-//                       before their shader runs (vtkOpenGLAntialiasingPass::MarkBlendedPixels).
+//                       before their shader runs (TemporalHistories::MarkBlendedPixels in
+//                       vtkOpenGLAntialiasingPassTemporal.cxx).
 //                       One pass for both: every pixel writes the same, with no discard.
 //   TEMPORAL_KEEP_UNCHANGED  actors moved under a still camera (currentTexture is the frame
 //                       antialiased by the method): nothing is reprojected; a pixel whose 3 x 3
