@@ -542,18 +542,10 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
   // everything back.
   // Temporal antialiasing reads the delegate's depth (reprojection). A debug output of the method
   // is shown as it is. A multisampled render (SetMultiSamples) renders the delegate into the
-  // multisampled targets; temporal antialiasing does not combine with it (it renders one sample,
-  // and converges to the supersampled picture by itself): with both on, Temporal wins.
+  // multisampled targets; with Temporal on too, the history blends their antialiased resolve.
   const bool temporal = this->Temporal && this->DrawsDeferredOverlays();
-  if (temporal && this->MultiSamples > 1 && !this->WarnedTemporalMultiSamples)
-  {
-    vtkWarningMacro("MultiSamples " << this->MultiSamples
-                                    << " is not used while Temporal is on: the pass renders one "
-                                       "sample per pixel and accumulates jittered frames instead");
-    this->WarnedTemporalMultiSamples = true;
-  }
-  const int samples = temporal ? 0 : this->Samples->Choose(renWin, frame.FloatColor);
-  this->RenderedMultiSamples = samples;
+  const int chosenSamples = this->Samples->Choose(renWin, frame.FloatColor);
+  int samples = chosenSamples;
   this->RenderedSampleShading = false;
   frame.InPlace = !frame.Composite && !this->NeedsDelegateDepth() && !temporal && !samples;
   unsigned int targetBinding = 0, targetBuffer = 0;
@@ -575,10 +567,23 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
     vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
     vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
 
-    this->PrepareTargets(frame, !frame.InPlace);
-    if (samples)
+    if (temporal)
     {
-      this->Samples->Prepare(frame, samples);
+      // Whether the history is kept, and the camera jittered for a still accumulation (put back
+      // by EndJitter below). The renders of a still accumulation and a converged still render
+      // one sample per pixel: their jittered renders average to the supersampled picture, which
+      // the spread of a multisampled render's samples would blur.
+      this->Histories->BeginFrame(s, frame);
+      if (!this->Histories->RendersMethodFrame())
+      {
+        samples = 0;
+      }
+    }
+    this->RenderedMultiSamples = samples;
+    this->PrepareTargets(frame, !frame.InPlace);
+    if (chosenSamples)
+    {
+      this->Samples->Prepare(frame, chosenSamples);
     }
     else
     {
@@ -597,10 +602,6 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
     }
     const StepsChange stepsChange =
       steps ? this->UseRendererTranslucency(s, steps, frame.Composite, samples > 0) : StepsChange();
-    if (temporal)
-    {
-      this->Histories->BeginFrame(s, frame);
-    }
     TimedStage delegateStage(renWin, "delegate");
     if (frame.InPlace)
     {
@@ -636,7 +637,7 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
     }
 
     TimedStage methodStage(renWin, "antialiasing");
-    done = temporal   ? this->Histories->Antialias(frame)
+    done = temporal   ? this->Histories->Antialias(frame, samples)
       : samples       ? this->Samples->Antialias(frame, samples)
                       : this->Antialias(frame);
   }

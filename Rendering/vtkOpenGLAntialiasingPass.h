@@ -156,8 +156,13 @@ public:
    * The renderer is rendered into the pass's own textures (its depth is read). Hardware selection
    * renders bypass the pass and leave the history alone. A debug output of the method (MLAA)
    * shows the current frame alone. The camera's parameters are the same after a render as before
-   * it; its modified time advances. Switching it on resets the history. Temporal antialiasing
-   * renders one sample per pixel: with it on, MultiSamples is not used (a warning says so once).
+   * it; its modified time advances. Switching it on resets the history. With MultiSamples too,
+   * the renders whose blend takes the method's frame (a reset, a moving camera or moving actors)
+   * render the samples, and the method's frame is their antialiased resolve (see
+   * SetMultiSamples; the history is reprojected with the nearest depth of each pixel's samples
+   * and clamped to their plain average); the renders of a still accumulation and of a converged
+   * still render one sample per pixel (a multisampled render's sample spread would blur the
+   * average of the jittered renders), so stills converge as without samples.
    * The history is kept per renderer (a pass shared by several renderers) and, in stereo
    * (vtkRenderWindow::StereoRenderOn), per eye: each eye's renders are a sequence of frames of
    * their own (the right eye's history is dropped when the window renders in mono again).
@@ -223,7 +228,8 @@ public:
    * OpenGL driver does not offer the count asked for (for the colour and depth formats the pass
    * renders with), the nearest count it offers is used (the smaller of two equally near ones) and
    * a warning says so once per count asked for; GetRenderedMultiSamples() tells which count the
-   * last render used. Cost: the method runs once per sample. Not used while Temporal is on.
+   * last render used (0 for the single-sample renders of a temporal still accumulation). Cost:
+   * the method runs once per sample. With Temporal on, see SetTemporal.
    *
    * Everything else works as in the single-sample pass (overlays drawn after, layers, picking,
    * KeepAlpha, viewports, resizes, floating-point targets). Translucent geometry is drawn into
@@ -475,7 +481,6 @@ private:
   bool SampleShading = true;
   bool RenderedSampleShading = false;
   int DebugSample = -1;
-  bool WarnedTemporalMultiSamples = false; // MultiSamples unused while Temporal is on, said once
   class SampleTargets;
   std::unique_ptr<SampleTargets> Samples;
   SampleSet CurrentSampleSet;

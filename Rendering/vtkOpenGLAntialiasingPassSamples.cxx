@@ -259,18 +259,37 @@ bool vtkOpenGLAntialiasingPass::SampleTargets::CopySample(vtkOpenGLRenderWindow*
   fbo->AddDepthAttachment(pass->DepthTexture);
   // No blending; the sample's depth is copied.
   SetTargetWriteState(ostate, 0, 0, width, height, false, true);
-  if (!pass->ReadyQuad(
-        renWin, this->SampleCopyQuad, vtkAntialiasingSamplesFS, Define("SAMPLES_COPY", true)))
+  const bool plain = sample < 0;
+  ShaderVariant& quad = plain ? this->PlainQuad : this->SampleCopyQuad;
+  if (!pass->ReadyQuad(renWin, quad, vtkAntialiasingSamplesFS,
+        Define(plain ? "SAMPLES_PLAIN" : "SAMPLES_COPY", true)))
   {
     return false;
   }
-  vtkShaderProgram* program = this->SampleCopyQuad.Quad->Program;
+  vtkShaderProgram* program = quad.Quad->Program;
   const ScopedTextures textures(program,
     { { "samplesColor", this->SamplesColorTexture },
       { "samplesDepth", this->SamplesDepthTexture } });
-  program->SetUniformi("sampleIndex", std::min(sample, samples - 1));
-  this->SampleCopyQuad.Quad->Render();
+  if (plain)
+  {
+    program->SetUniformi("numberOfSamples", samples);
+  }
+  else
+  {
+    program->SetUniformi("sampleIndex", std::min(sample, samples - 1));
+  }
+  quad.Quad->Render();
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLAntialiasingPass::SampleTargets::ResolvePlain(const Frame& frame, int samples)
+{
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  ostate->PushFramebufferBindings();
+  const bool done = this->CopySample(frame.Window, -1, samples, frame.Width, frame.Height);
+  ostate->PopFramebufferBindings();
+  return done;
 }
 
 //------------------------------------------------------------------------------
@@ -389,6 +408,7 @@ void vtkOpenGLAntialiasingPass::SampleTargets::Release(vtkWindow* w)
     DeleteObject(*texture, w);
   }
   this->SampleCopyQuad.Release(w);
+  this->PlainQuad.Release(w);
   this->AccumulateQuad.Release(w);
   this->ResolveQuad.Release(w);
 }

@@ -39,6 +39,10 @@ public:
   // method (Antialias) into SampleTexture, accumulates the average and writes it with the nearest
   // depth into the target viewport (premultiplied "over" when compositing).
   bool Antialias(const Frame& frame, int samples);
+  // Writes the plain average of each pixel's samples (multisampling's own resolve) into the
+  // pass's ColorTexture and the nearest of their depths into its DepthTexture: the frame that
+  // temporal antialiasing with samples blends and clamps to.
+  bool ResolvePlain(const Frame& frame, int samples);
   // Frees the GL objects (only deletes them where `w` is null: their context is gone).
   void Release(vtkWindow* w);
   // Forgets the sample counts the context offered (the next context may offer others).
@@ -51,7 +55,7 @@ private:
   // it (warning once where it has not).
   bool UsesSampleShading(vtkOpenGLRenderWindow* renWin);
   // Copies sample `sample` of the multisampled targets into the pass's ColorTexture and
-  // DepthTexture.
+  // DepthTexture; with `sample` -1, the samples' plain average and nearest depth.
   bool CopySample(vtkOpenGLRenderWindow* renWin, int sample, int samples, int width, int height);
 
   vtkOpenGLAntialiasingPass* const Pass;                    // not held: the pass holds this
@@ -61,7 +65,7 @@ private:
   vtkTextureObject* SamplesDepthTexture = nullptr;
   vtkTextureObject* SampleTexture = nullptr;       // one antialiased sample image
   vtkTextureObject* AccumulationTexture = nullptr; // the average of the antialiased samples
-  ShaderVariant SampleCopyQuad, AccumulateQuad, ResolveQuad;
+  ShaderVariant SampleCopyQuad, PlainQuad, AccumulateQuad, ResolveQuad;
   // Whether the last render's samples were all shaded on their own (SampleSet::Shaded).
   bool Shaded = false;
   bool WarnedSampleShading = false; // sample shading unavailable, said once

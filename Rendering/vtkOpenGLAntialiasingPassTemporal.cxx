@@ -11,6 +11,7 @@
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkOpenGLAntialiasingPassInternals.h"
+#include "vtkOpenGLAntialiasingPassSamples.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -475,21 +476,24 @@ void vtkOpenGLAntialiasingPass::TemporalHistories::EndJitter(const vtkRenderStat
 }
 
 //------------------------------------------------------------------------------
-bool vtkOpenGLAntialiasingPass::TemporalHistories::Antialias(const Frame& frame)
+bool vtkOpenGLAntialiasingPass::TemporalHistories::Antialias(const Frame& frame, int samples)
 {
   vtkOpenGLAntialiasingPass* pass = this->Pass;
   TemporalHistory& h = *this->History;
   vtkOpenGLRenderWindow* renWin = frame.Window;
   vtkOpenGLState* ostate = renWin->GetState();
   const int width = frame.Width, height = frame.Height;
-  h.PrepareTargets(frame, pass->HasMotionFrame());
+  // With samples, the method's frame is the multisampled render's antialiased resolve, which
+  // needs no motion frame (its sample images are not blurred by the method alone).
+  const bool methodMotionFrame = pass->HasMotionFrame() && !samples;
+  h.PrepareTargets(frame, methodMotionFrame);
   // This render's kind of blend (the mode is final from here on): a moving camera's reprojects
   // the history and, for a method with one, reads its motion frame (written at every such
   // render).
   const bool moving = h.FrameMode == TemporalHistory::MOVING;
   const bool keep = moving && h.KeepUnchanged;
   const bool reproject = moving && !keep;
-  const bool motionFrame = reproject && pass->HasMotionFrame();
+  const bool motionFrame = reproject && methodMotionFrame;
 
   auto bindTarget = [&](vtkTextureObject* texture)
   {
@@ -530,7 +534,12 @@ bool vtkOpenGLAntialiasingPass::TemporalHistories::Antialias(const Frame& frame)
       ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
       ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
     }
-    else
+    if (samples)
+    {
+      // The sample sets antialiased and resolved into Current (every pixel written).
+      done = pass->Samples->Antialias(local, samples);
+    }
+    else if (!frame.Composite)
     {
       // Current takes the delegate's image as it is (a copy; bindTarget set the whole texture as
       // the scissor box), and the method writes only the pixels it changes, as in place in the
@@ -542,7 +551,17 @@ bool vtkOpenGLAntialiasingPass::TemporalHistories::Antialias(const Frame& frame)
       local.InPlace = true;
       local.OwnTarget = h.Framebuffer;
     }
-    done = pass->Antialias(local); // (bindTarget below detaches the motion frame)
+    if (!samples)
+    {
+      done = pass->Antialias(local); // (bindTarget below detaches the motion frame)
+    }
+  }
+  if (done && samples)
+  {
+    // The frame as multisampling resolves it, and the nearest depth of each pixel's samples, in
+    // ColorTexture and DepthTexture, where the blend reads the frame before the method (the
+    // still accumulation's jittered renders, the clamp's range) and the depth it reprojects with.
+    done = pass->Samples->ResolvePlain(frame, samples);
   }
 
   // The blend into the other history.

@@ -109,11 +109,22 @@ public:
   // Before the delegate's render: selects the history of the renderer and eye that `s` renders,
   // decides whether it is kept, and jitters the camera.
   void BeginFrame(const vtkRenderState* s, const Frame& frame);
+  // Whether this render's blend reads the method's frame (the history reset, or the camera or
+  // actors moving), decided by BeginFrame; not during a still accumulation or a converged still.
+  bool RendersMethodFrame() const
+  {
+    return this->History &&
+      (this->History->FrameMode == TemporalHistory::RESET ||
+        this->History->FrameMode == TemporalHistory::MOVING);
+  }
   // After it: puts the camera back and keeps the scene's state for the next render.
   void EndJitter(const vtkRenderState* s);
   // Antialiases the frame into the history's current target, blends it with the history and
-  // writes the result (and the delegate's depth) into the target viewport.
-  bool Antialias(const Frame& frame);
+  // writes the result (and the delegate's depth) into the target viewport. With `samples` (2 or
+  // more) the delegate rendered into the multisampled targets: the frame antialiased is their
+  // resolve (SampleTargets::Antialias), and the frame before the method and its depth are their
+  // plain average and nearest depth (SampleTargets::ResolvePlain).
+  bool Antialias(const Frame& frame, int samples);
 
   // Frees every history (only deletes their objects where `w` is null: their context is gone).
   void Release(vtkWindow* w);

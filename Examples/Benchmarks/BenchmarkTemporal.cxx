@@ -20,9 +20,10 @@
 //
 // Methods: none (single-sample), FXAA (VTK's built-in, renderer->UseFXAAOn()), MSAA4
 // (window->SetMultiSamples(4)) and vtkOpenGLMLAAPass at each preset of vtkMLAAOptions
-// (MLAA-low ... MLAA-ultra; overlays drawn after the antialiasing), vtkOpenGLDLAAPass with
-// its default options (DLAA), and both passes with temporal antialiasing (SetTemporal;
-// MLAA-temporal, DLAA-temporal), each one pass kept from frame to frame of a scene, as an
+// (MLAA-low ... MLAA-ultra; overlays drawn after the antialiasing), the MLAA pass with 4 samples
+// (SetMultiSamples(4): MLAA-S4), vtkOpenGLDLAAPass with its default options (DLAA), and both
+// passes with temporal antialiasing (SetTemporal; MLAA-temporal, DLAA-temporal; the MLAA pass
+// with 4 samples too: MLAA-temporal-S4), each one pass kept from frame to frame of a scene, as an
 // application renders an orbit. Frames are read back as 8-bit RGB.
 // Per method it also reports the still AAR: the AAR of the last frame once the camera stops, after
 // 16 renders of the unchanged scene (methods without history give the same image at every render).
@@ -85,19 +86,20 @@ struct Method
 // would render it, frame after frame; the other methods' renders in between change neither the
 // camera nor the scene).
 template <class Pass>
-Method TemporalMethod(const std::string& name)
+Method TemporalMethod(const std::string& name, int samples = 0)
 {
   auto pass = std::make_shared<vtkSmartPointer<Pass>>();
   Method method;
   method.Name = name;
   method.Temporal = true;
-  method.Enable = [pass](vtkRenderer* r, vtkRenderWindow*) {
+  method.Enable = [pass, samples](vtkRenderer* r, vtkRenderWindow*) {
     if (!*pass)
     {
       *pass = vtkSmartPointer<Pass>::New();
       vtkNew<vtkRenderStepsPass> steps;
       (*pass)->SetDelegatePass(steps);
       (*pass)->TemporalOn();
+      (*pass)->SetMultiSamples(samples);
     }
     r->SetPass(*pass);
   };
@@ -139,6 +141,21 @@ std::vector<Method> Methods()
         r->SetPass(nullptr);
       }, false, nullptr });
   }
+  methods.push_back(Method{ "MLAA-S4",
+    [](vtkRenderer* r, vtkRenderWindow*) {
+      vtkNew<vtkRenderStepsPass> steps;
+      vtkNew<vtkOpenGLMLAAPass> pass;
+      pass->SetDelegatePass(steps);
+      pass->SetMultiSamples(4);
+      r->SetPass(pass);
+    },
+    [](vtkRenderer* r, vtkRenderWindow* w) {
+      if (r->GetPass())
+      {
+        r->GetPass()->ReleaseGraphicsResources(w);
+      }
+      r->SetPass(nullptr);
+    }, false, nullptr });
   methods.push_back(Method{ "DLAA",
     [](vtkRenderer* r, vtkRenderWindow*) {
       vtkNew<vtkRenderStepsPass> steps;
@@ -155,6 +172,7 @@ std::vector<Method> Methods()
     }, false, nullptr });
   methods.push_back(TemporalMethod<vtkOpenGLMLAAPass>("MLAA-temporal"));
   methods.push_back(TemporalMethod<vtkOpenGLDLAAPass>("DLAA-temporal"));
+  methods.push_back(TemporalMethod<vtkOpenGLMLAAPass>("MLAA-temporal-S4", 4));
   return methods;
 }
 

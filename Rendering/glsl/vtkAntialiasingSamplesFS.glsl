@@ -16,6 +16,10 @@
 // Compile-time variants (#defines prepended by vtkOpenGLAntialiasingPass):
 //   SAMPLES_COPY        writes sample `sampleIndex` of `samplesColor` and its depth (of
 //                       `samplesDepth`) unchanged: the image the method's passes read;
+//   SAMPLES_PLAIN       writes the plain average of the pixel's samples of `samplesColor` and the
+//                       nearest of their depths: the multisampled render as multisampling
+//                       resolves it, which temporal antialiasing with samples blends and clamps
+//                       to (SetTemporal with SetMultiSamples);
 //   SAMPLES_ACCUMULATE  writes `source` (one antialiased sample image) scaled by `scale` (1 / N),
 //                       added to the accumulation target by blending (one, one);
 //   SAMPLES_RESOLVE     writes `source` (the accumulated average) and, as depth, the nearest of
@@ -34,9 +38,12 @@
 
 in vec2 texCoord; // over the viewport, which is the size of the textures
 
-#if defined(SAMPLES_COPY) || defined(SAMPLES_RESOLVE)
+#if defined(SAMPLES_COPY) || defined(SAMPLES_RESOLVE) || defined(SAMPLES_PLAIN)
 uniform sampler2DMS samplesColor;
 uniform sampler2DMS samplesDepth;
+#endif
+#ifdef SAMPLES_PLAIN
+uniform int numberOfSamples;
 #endif
 #ifdef SAMPLES_RESOLVE
 uniform int numberOfSamples;
@@ -44,7 +51,7 @@ uniform float resolveWeight;
 #endif
 #ifdef SAMPLES_COPY
 uniform int sampleIndex;
-#else
+#elif !defined(SAMPLES_PLAIN)
 uniform sampler2D source;
 #endif
 #ifdef SAMPLES_ACCUMULATE
@@ -53,10 +60,21 @@ uniform float scale;
 
 void main()
 {
-#ifdef SAMPLES_COPY
+#if defined(SAMPLES_COPY)
   ivec2 p = ivec2(texCoord * vec2(textureSize(samplesColor)));
   gl_FragData[0] = texelFetch(samplesColor, p, sampleIndex);
   gl_FragDepth = texelFetch(samplesDepth, p, sampleIndex).r;
+#elif defined(SAMPLES_PLAIN)
+  ivec2 p = ivec2(texCoord * vec2(textureSize(samplesColor)));
+  vec4 sum = vec4(0.0);
+  float depth = 1.0;
+  for (int s = 0; s < numberOfSamples; ++s)
+  {
+    sum += texelFetch(samplesColor, p, s);
+    depth = min(depth, texelFetch(samplesDepth, p, s).r);
+  }
+  gl_FragData[0] = sum / float(numberOfSamples);
+  gl_FragDepth = depth;
 #else
   ivec2 p = ivec2(texCoord * vec2(textureSize(source, 0)));
   vec4 c = texelFetch(source, p, 0);

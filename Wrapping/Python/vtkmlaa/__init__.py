@@ -263,7 +263,9 @@ def enable(renderer, method="mlaa", preset=None, temporal=False, multisamples=0,
     the method's cost once per sample). Where the driver does not offer the count, the pass uses
     the nearest one it offers and warns once (pass.GetRenderedMultiSamples() tells which). The
     window's own multisampling is turned off either way. An integer 0 to 16, else ValueError.
-    Not used with temporal=True (temporal antialiasing renders one sample per pixel). Every
+    With temporal=True too, the renders that the history takes a frame from (the first, and
+    those of a moving camera) render the samples and blend their antialiased resolve; a still
+    accumulation renders one sample per pixel, as without samples. Every
     sample is shaded at its own position, so that texture and colour edges are sampled too;
     sample_shading=False (an option of the pass) shades once per pixel, as multisampling does.
 
