@@ -114,6 +114,29 @@ Method TemporalMethod(const std::string& name, int samples = 0)
   return method;
 }
 
+// A single-frame pass of class `Pass`, made afresh for each frame with `configure` applied, and
+// released after it.
+template <class Pass, class Configure>
+Method FramePassMethod(const std::string& name, Configure configure)
+{
+  return Method{ name,
+    [configure](vtkRenderer* r, vtkRenderWindow*) {
+      vtkNew<vtkRenderStepsPass> steps;
+      vtkNew<Pass> pass;
+      pass->SetDelegatePass(steps);
+      configure(pass.Get());
+      r->SetPass(pass);
+    },
+    [](vtkRenderer* r, vtkRenderWindow* w) {
+      if (r->GetPass())
+      {
+        r->GetPass()->ReleaseGraphicsResources(w);
+      }
+      r->SetPass(nullptr);
+    },
+    false, nullptr };
+}
+
 std::vector<Method> Methods()
 {
   std::vector<Method> methods;
@@ -125,51 +148,13 @@ std::vector<Method> Methods()
     [](vtkRenderer*, vtkRenderWindow* w) { w->SetMultiSamples(0); }, false, nullptr });
   for (int preset = vtkMLAAOptions::LOW; preset <= vtkMLAAOptions::ULTRA; ++preset)
   {
-    methods.push_back(Method{ std::string("MLAA-") + vtkMLAAOptions::GetPresetAsString(preset),
-      [preset](vtkRenderer* r, vtkRenderWindow*) {
-        vtkNew<vtkRenderStepsPass> steps;
-        vtkNew<vtkOpenGLMLAAPass> pass;
-        pass->SetDelegatePass(steps);
-        pass->GetOptions()->SetPreset(preset);
-        r->SetPass(pass);
-      },
-      [](vtkRenderer* r, vtkRenderWindow* w) {
-        if (r->GetPass())
-        {
-          r->GetPass()->ReleaseGraphicsResources(w);
-        }
-        r->SetPass(nullptr);
-      }, false, nullptr });
+    methods.push_back(FramePassMethod<vtkOpenGLMLAAPass>(
+      std::string("MLAA-") + vtkMLAAOptions::GetPresetAsString(preset),
+      [preset](vtkOpenGLMLAAPass* pass) { pass->GetOptions()->SetPreset(preset); }));
   }
-  methods.push_back(Method{ "MLAA-S4",
-    [](vtkRenderer* r, vtkRenderWindow*) {
-      vtkNew<vtkRenderStepsPass> steps;
-      vtkNew<vtkOpenGLMLAAPass> pass;
-      pass->SetDelegatePass(steps);
-      pass->SetMultiSamples(4);
-      r->SetPass(pass);
-    },
-    [](vtkRenderer* r, vtkRenderWindow* w) {
-      if (r->GetPass())
-      {
-        r->GetPass()->ReleaseGraphicsResources(w);
-      }
-      r->SetPass(nullptr);
-    }, false, nullptr });
-  methods.push_back(Method{ "DLAA",
-    [](vtkRenderer* r, vtkRenderWindow*) {
-      vtkNew<vtkRenderStepsPass> steps;
-      vtkNew<vtkOpenGLDLAAPass> pass;
-      pass->SetDelegatePass(steps);
-      r->SetPass(pass);
-    },
-    [](vtkRenderer* r, vtkRenderWindow* w) {
-      if (r->GetPass())
-      {
-        r->GetPass()->ReleaseGraphicsResources(w);
-      }
-      r->SetPass(nullptr);
-    }, false, nullptr });
+  methods.push_back(FramePassMethod<vtkOpenGLMLAAPass>(
+    "MLAA-S4", [](vtkOpenGLMLAAPass* pass) { pass->SetMultiSamples(4); }));
+  methods.push_back(FramePassMethod<vtkOpenGLDLAAPass>("DLAA", [](vtkOpenGLDLAAPass*) {}));
   methods.push_back(TemporalMethod<vtkOpenGLMLAAPass>("MLAA-temporal"));
   methods.push_back(TemporalMethod<vtkOpenGLDLAAPass>("DLAA-temporal"));
   methods.push_back(TemporalMethod<vtkOpenGLMLAAPass>("MLAA-temporal-S4", 4));
