@@ -263,7 +263,9 @@ public:
    * render shifted by the sample's offset would be, so the method and the resolve antialias
    * every edge, not only the edges of the geometry; and where a pixel's samples all agree, an
    * edge beside it lies within 1/2 less the largest sample offset of the pixel's border, which
-   * MLAA's SampleAreas then also applies to lines whose ends show no sample difference. Cost: the
+   * MLAA's SampleAreas then also applies to lines whose ends show no sample difference, and the
+   * samples' average measures every edge's coverage, which DLAA's ShortEdgesFromSamples relies
+   * on (it leaves the short-edge blur out of the sample images). Cost: the
    * fragment shaders run once per sample (as many times as MultiSamples) instead of once per
    * pixel. Needs OpenGL 4.0 (elsewhere the samples are shaded per pixel; a warning says so once).
    * Translucent geometry (order-independent translucency) is still blended per pixel.

@@ -167,9 +167,14 @@ bool vtkOpenGLDLAAPass::Filter(const Frame& frame)
   // only the changed pixels are written, and no depth; otherwise the delegate's depth is copied.
   SetTargetWriteState(ostate, frame.X, frame.Y, frame.Width, frame.Height, frame.Composite,
     !frame.InPlace);
+  // A sample image of a render whose samples were each shaded on its own (ShortEdgesFromSamples):
+  // the samples' average measures what the short-edge blur estimates.
+  const SampleSet& set = this->GetCurrentSampleSet();
+  const bool noShortEdges = this->ShortEdgesFromSamples && set.Index >= 0 && set.Shaded;
   const std::string defines = Define("DLAA_LUMA", this->Options->GetLumaFunction()) +
     Define("DLAA_LONG_EDGES", this->Options->GetLongEdges()) +
-    Define("DLAA_IN_PLACE", frame.InPlace) + Define("DLAA_MOTION_FRAME", frame.MotionFrame);
+    Define("DLAA_IN_PLACE", frame.InPlace) + Define("DLAA_MOTION_FRAME", frame.MotionFrame) +
+    Define("DLAA_NO_SHORT_EDGES", noShortEdges);
   // In place, with long edges, only the squares of pixels that may change are drawn
   // (vtkDLAATilesVS.glsl): the others keep the delegate's image, which the target holds.
   // Otherwise every pixel is written.
@@ -247,6 +252,8 @@ vtkIdType vtkOpenGLDLAAPass::GetMethodTargetMemorySize()
 void vtkOpenGLDLAAPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "ShortEdgesFromSamples: " << (this->ShortEdgesFromSamples ? "On" : "Off")
+     << "\n";
   os << indent << "Options:\n";
   this->Options->PrintSelf(os, indent.GetNextIndent());
 }

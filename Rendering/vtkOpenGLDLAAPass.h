@@ -71,6 +71,26 @@ public:
    */
   vtkMTimeType GetMTime() override;
 
+  ///@{
+  /**
+   * With vtkOpenGLAntialiasingPass::SetMultiSamples and every sample shaded on its own
+   * (vtkOpenGLAntialiasingPass::SampleShading, with no translucent geometry or volumes in the
+   * render): whether the short edges take their softening from the samples (default on). The
+   * short-edge blur (vtkDLAAOptions, step 1) stands in for the coverage of pixels that an edge
+   * crosses, which one sample per pixel cannot see; with several samples each sample image is the
+   * scene point-sampled at its own position, and the average of the sample images measures that
+   * coverage. Blurring each sample image as well blurs the edges twice. On: each sample image gets
+   * the long-edge step alone (vtkDLAAOptions::LongEdges), which still finds the gradients along
+   * nearly horizontal and vertical edges that a few samples a pixel cannot resolve, and sides that
+   * lie on pixel borders stay as rendered. Off: each sample image is filtered exactly as the
+   * single-sample pass, and so as vtkImageDLAA, would. Measured in docs/measurements.md
+   * ("DLAA with samples: the short edges from the samples").
+   */
+  vtkSetMacro(ShortEdgesFromSamples, bool);
+  vtkGetMacro(ShortEdgesFromSamples, bool);
+  vtkBooleanMacro(ShortEdgesFromSamples, bool);
+  ///@}
+
   /**
    * Bytes of the DLAA-specific targets alone: the RG32F masks texture (8 bytes per pixel, of an
    * image 16 pixels wider and higher with LongEdges) and, with LongEdges, the 8-bit texture of
@@ -83,6 +103,7 @@ protected:
   ~vtkOpenGLDLAAPass() override;
 
   vtkDLAAOptions* Options = nullptr;
+  bool ShortEdgesFromSamples = true;
 
   // The hooks of vtkOpenGLAntialiasingPass.
   bool PrepareMethodTargets(const Frame& frame) override;

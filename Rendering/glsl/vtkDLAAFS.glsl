@@ -29,6 +29,10 @@
 //                    motion frame: the same without the short-edge blur (c where s is, then the
 //                    same long-edge step), which the temporal blend uses where the history moved
 //                    a pixel or more.
+//   DLAA_NO_SHORT_EDGES  defined: a sample image of a multisampled render whose samples were
+//                    each shaded on its own (vtkOpenGLDLAAPass::ShortEdgesFromSamples): no
+//                    short-edge blur (s = c), the long-edge step alone; the average of the sample
+//                    images measures the coverage that the blur estimates.
 //
 // Must match vtkImageDLAA.
 
@@ -200,7 +204,11 @@ void main()
   // that is not finite among them would leave it too). Such pixels near an edge read 9 pairs of
   // masks instead of 17, with the same result. (The bound is the uniform `padding`, 8 here, so
   // that the loop is not unrolled and ends once every pixel shaded with this one is done.)
+#ifdef DLAA_NO_SHORT_EDGES
+  bool shortEdge = false; // only a long mask changes the pixel
+#else
   bool shortEdge = m.x > 0.0 || m.y > 0.0;
+#endif
   float sumX = 0.0;
   float sumY = 0.0;
   bool bad = false;
@@ -244,7 +252,11 @@ void main()
     (colorAt(p - ivec2(2, 0)) + left + right + colorAt(p + ivec2(2, 0)) + 2.0 * c) / 6.0;
   vec4 blurY =
     (colorAt(p - ivec2(0, 2)) + below + above + colorAt(p + ivec2(0, 2)) + 2.0 * c) / 6.0;
+#ifdef DLAA_NO_SHORT_EDGES
+  vec4 result = c;
+#else
   vec4 result = mix(mix(c, blurX, m.x), blurY, m.y / 2.0);
+#endif
   vec4 motionFrame = c; // (DLAA_MOTION_FRAME) no short-edge blur
 
 #ifdef DLAA_LONG_EDGES

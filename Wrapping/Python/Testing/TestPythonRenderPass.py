@@ -6,10 +6,10 @@ edge alone, and gives the image vtkImageMLAA gives on the screenshot without ant
 2/255 on at least 99.5 % of the pixels, as the C++ test TestMLAAPassMatchesFilter requires), also
 with translucent geometry, depth peeling off and on (issue 21); with temporal=True, render_still
 gives a converged still closer to a supersampled reference than the single-frame pass (issue 23);
-with multisamples=4 (MLAA's SampleAreas off), the pass equals the filter run on each plain sample image
-(pass.SetDebugSample), averaged, and half and half with the plain samples' average where they
-differ (issue 22), every sample is shaded unless sample_shading=False, and bad multisamples
-values raise ValueError.
+with multisamples=4 (MLAA's SampleAreas and DLAA's ShortEdgesFromSamples off), the pass equals
+the filter run on each plain sample image (pass.SetDebugSample), averaged, and half and half with
+the plain samples' average where they differ (issue 22), every sample is shaded unless
+sample_shading=False, and bad multisamples values raise ValueError.
 Needs a display (ctest runs under scripts/with-xvfb.sh). Usage: TestPythonRenderPass.py OUT_DIR"""
 import os
 import sys
@@ -209,9 +209,12 @@ for method in ("mlaa", "dlaa"):
     single = screenshot(window)
     vtkmlaa.disable(renderer)
     aa_pass = vtkmlaa.enable(renderer, method=method, multisamples=4)
+    # The filter has one sample per pixel: compared without MLAA's per-sample areas and with
+    # DLAA's short-edge blur on every sample image.
     if method == "mlaa":
-        # The filter has one sample per pixel: compared without the per-sample areas.
         aa_pass.SampleAreasOff()
+    else:
+        aa_pass.ShortEdgesFromSamplesOff()
     shot = screenshot(window)
     samples = aa_pass.GetRenderedMultiSamples()
     check(aa_pass.GetMultiSamples() == 4 and samples >= 2,
