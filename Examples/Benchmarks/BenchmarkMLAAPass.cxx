@@ -33,7 +33,10 @@
 // at every frame (--azimuth, default 0.2 degree) every frame reprojects and blends the history,
 // with --azimuth 0 every frame is a jittered render of a still accumulation. Reported as
 // overhead(X-temporal) / overhead(X-pass) (the single-frame pass of the same method, same rounds),
-// with the temporal pass's render-target memory.
+// with the temporal pass's render-target memory. With --multisamples too, the MLAA pass with both
+// (SetTemporal and SetMultiSamples(4): MLAA-temporal-S4, whose moving frames render the samples),
+// and the multisampling report then lists every configuration's frame time / that of MSAA4 (the
+// README's column).
 // Stages (--stages wall|gl): after the timed rounds, each configuration with one of the project's
 // passes renders a round's frames again with the window's render timings on (vtkRenderTimerLog:
 // each pass times its stages as events, waiting for the GL work at each start and end;
@@ -394,11 +397,13 @@ int main(int argc, char* argv[])
   // Temporal antialiasing: one pass per method, kept from frame to frame.
   vtkNew<vtkOpenGLMLAAPass> mlaaTemporal;
   vtkNew<vtkOpenGLDLAAPass> dlaaTemporal;
+  vtkNew<vtkOpenGLMLAAPass> mlaaTemporalSamples;
   if (temporal)
   {
     for (vtkOpenGLAntialiasingPass* pass :
       { static_cast<vtkOpenGLAntialiasingPass*>(mlaaTemporal.Get()),
-        static_cast<vtkOpenGLAntialiasingPass*>(dlaaTemporal.Get()) })
+        static_cast<vtkOpenGLAntialiasingPass*>(dlaaTemporal.Get()),
+        static_cast<vtkOpenGLAntialiasingPass*>(mlaaTemporalSamples.Get()) })
     {
       vtkNew<vtkRenderStepsPass> delegate;
       pass->SetDelegatePass(delegate);
@@ -407,6 +412,12 @@ int main(int argc, char* argv[])
     mlaaTemporal->SetOptions(options);
     configurations.push_back({ "MLAA-temporal", mlaaTemporal, false, {} });
     configurations.push_back({ "DLAA-temporal", dlaaTemporal, false, {} });
+    if (multisamples)
+    {
+      mlaaTemporalSamples->SetOptions(options);
+      mlaaTemporalSamples->SetMultiSamples(4);
+      configurations.push_back({ "MLAA-temporal-S4", mlaaTemporalSamples, false, {} });
+    }
   }
 
   vtkCamera* camera = renderer->GetActiveCamera();
@@ -572,15 +583,16 @@ int main(int argc, char* argv[])
         msaa4 = mlaaBenchmark::Median(c.Times);
       }
     }
-    std::cout << "multisampling: frame time / frame time of MSAA4 (" << msaa4 << " ms)\n";
+    std::cout << "multisampling: frame time / frame time of MSAA4 (" << msaa4 << " ms)"
+              << (temporal ? ", every configuration" : "") << "\n";
     for (const auto& c : configurations)
     {
       auto* pass = vtkOpenGLAntialiasingPass::SafeDownCast(c.Pass);
-      if (c.WindowSamples || (pass && pass->GetMultiSamples()))
+      if (temporal || c.WindowSamples || (pass && pass->GetMultiSamples()))
       {
-        std::cout << "  " << std::left << std::setw(11) << c.Name << std::right << std::setw(8)
+        std::cout << "  " << std::left << std::setw(16) << c.Name << std::right << std::setw(8)
                   << mlaaBenchmark::Median(c.Times) / msaa4;
-        if (pass)
+        if (pass && pass->GetMultiSamples())
         {
           std::cout << "  (" << pass->GetRenderedMultiSamples() << " samples used)";
         }
@@ -709,6 +721,7 @@ int main(int argc, char* argv[])
   dlaa->ReleaseGraphicsResources(window);
   mlaaTemporal->ReleaseGraphicsResources(window);
   dlaaTemporal->ReleaseGraphicsResources(window);
+  mlaaTemporalSamples->ReleaseGraphicsResources(window);
   steps->ReleaseGraphicsResources(window);
   return EXIT_SUCCESS;
 }

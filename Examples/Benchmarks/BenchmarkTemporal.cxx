@@ -21,7 +21,8 @@
 // Methods: none (single-sample), FXAA (VTK's built-in, renderer->UseFXAAOn()), MSAA4
 // (window->SetMultiSamples(4)) and vtkOpenGLMLAAPass at each preset of vtkMLAAOptions
 // (MLAA-low ... MLAA-ultra; overlays drawn after the antialiasing), the MLAA pass with 4 samples
-// (SetMultiSamples(4): MLAA-S4), vtkOpenGLDLAAPass with its default options (DLAA), and both
+// (SetMultiSamples(4): MLAA-S4), vtkOpenGLDLAAPass with its default options (DLAA; with 4
+// samples: DLAA-S4), and both
 // passes with temporal antialiasing (SetTemporal; MLAA-temporal, DLAA-temporal; the MLAA pass
 // with 4 samples too: MLAA-temporal-S4), each one pass kept from frame to frame of a scene, as an
 // application renders an orbit. Frames are read back as 8-bit RGB.
@@ -155,6 +156,8 @@ std::vector<Method> Methods()
   methods.push_back(FramePassMethod<vtkOpenGLMLAAPass>(
     "MLAA-S4", [](vtkOpenGLMLAAPass* pass) { pass->SetMultiSamples(4); }));
   methods.push_back(FramePassMethod<vtkOpenGLDLAAPass>("DLAA", [](vtkOpenGLDLAAPass*) {}));
+  methods.push_back(FramePassMethod<vtkOpenGLDLAAPass>(
+    "DLAA-S4", [](vtkOpenGLDLAAPass* pass) { pass->SetMultiSamples(4); }));
   methods.push_back(TemporalMethod<vtkOpenGLMLAAPass>("MLAA-temporal"));
   methods.push_back(TemporalMethod<vtkOpenGLDLAAPass>("DLAA-temporal"));
   methods.push_back(TemporalMethod<vtkOpenGLMLAAPass>("MLAA-temporal-S4", 4));
