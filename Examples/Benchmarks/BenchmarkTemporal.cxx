@@ -22,10 +22,10 @@
 // (window->SetMultiSamples(4)) and vtkOpenGLMLAAPass at each preset of vtkMLAAOptions
 // (MLAA-low ... MLAA-ultra; overlays drawn after the antialiasing), the MLAA pass with 4 samples
 // (SetMultiSamples(4): MLAA-S4), vtkOpenGLDLAAPass with its default options (DLAA; with 4
-// samples: DLAA-S4), and both
-// passes with temporal antialiasing (SetTemporal; MLAA-temporal, DLAA-temporal; the MLAA pass
-// with 4 samples too: MLAA-temporal-S4), each one pass kept from frame to frame of a scene, as an
-// application renders an orbit. Frames are read back as 8-bit RGB.
+// samples: DLAA-S4), and both passes with temporal antialiasing (SetTemporal; MLAA-temporal,
+// DLAA-temporal; with 4 samples too: MLAA-temporal-S4, DLAA-temporal-S4), each one pass kept from
+// frame to frame of a scene, as an application renders an orbit. Frames are read back as 8-bit
+// RGB.
 // Per method it also reports the still AAR: the AAR of the last frame once the camera stops, after
 // 16 renders of the unchanged scene (methods without history give the same image at every render).
 #include "BenchmarkUtilities.h"
@@ -161,6 +161,7 @@ std::vector<Method> Methods()
   methods.push_back(TemporalMethod<vtkOpenGLMLAAPass>("MLAA-temporal"));
   methods.push_back(TemporalMethod<vtkOpenGLDLAAPass>("DLAA-temporal"));
   methods.push_back(TemporalMethod<vtkOpenGLMLAAPass>("MLAA-temporal-S4", 4));
+  methods.push_back(TemporalMethod<vtkOpenGLDLAAPass>("DLAA-temporal-S4", 4));
   return methods;
 }
 
