@@ -26,6 +26,7 @@
 #include "vtkVersionMacros.h"
 
 #include "vtkAntialiasingAlphaFS.h"
+#include "vtkAntialiasingSamplesDiffer.h"
 
 #include "vtkAntialiasingOpenGL.h" // For GL enums, and the calls VTK has no wrapper for
 
@@ -444,6 +445,8 @@ bool vtkOpenGLAntialiasingPass::ReadyQuad(vtkOpenGLRenderWindow* renWin, ShaderV
   {
     std::string source = fs;
     vtkShaderProgram::Substitute(source, "//VTK::Antialiasing::Dec", defines, false);
+    vtkShaderProgram::Substitute(
+      source, "//VTK::Antialiasing::SamplesDiffer", vtkAntialiasingSamplesDiffer, false);
     this->SubstituteShaderSnippets(source);
     quad = new vtkOpenGLQuadHelper(renWin, vs, source.c_str(), "");
     variant.Defines = defines;

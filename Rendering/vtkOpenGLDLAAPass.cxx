@@ -170,7 +170,8 @@ bool vtkOpenGLDLAAPass::Filter(const Frame& frame)
   // A sample image of a render whose samples were each shaded on its own (ShortEdgesFromSamples):
   // the samples' average measures what the short-edge blur estimates.
   const SampleSet& set = this->GetCurrentSampleSet();
-  const bool noShortEdges = this->ShortEdgesFromSamples && set.Index >= 0 && set.Shaded;
+  const bool noShortEdges =
+    this->ShortEdgesFromSamples && set.Index >= 0 && set.Shaded && set.Colors;
   const std::string defines = Define("DLAA_LUMA", this->Options->GetLumaFunction()) +
     Define("DLAA_LONG_EDGES", this->Options->GetLongEdges()) +
     Define("DLAA_IN_PLACE", frame.InPlace) + Define("DLAA_MOTION_FRAME", frame.MotionFrame) +
@@ -192,6 +193,11 @@ bool vtkOpenGLDLAAPass::Filter(const Frame& frame)
   if (this->Options->GetLongEdges())
   {
     textures.Bind(program, "tilesTexture", this->TilesTexture);
+  }
+  if (noShortEdges)
+  {
+    textures.Bind(program, "samplesColor", set.Colors);
+    program->SetUniformi("numberOfSamples", static_cast<int>(set.Offsets.size() / 2));
   }
   if (!frame.InPlace)
   {

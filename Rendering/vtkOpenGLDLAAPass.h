@@ -81,8 +81,10 @@ public:
    * scene point-sampled at its own position, and the average of the sample images measures that
    * coverage. Blurring each sample image as well blurs the edges twice. On: each sample image gets
    * the long-edge step alone (vtkDLAAOptions::LongEdges), which still finds the gradients along
-   * nearly horizontal and vertical edges that a few samples a pixel cannot resolve, and sides that
-   * lie on pixel borders stay as rendered. Off: each sample image is filtered exactly as the
+   * nearly horizontal and vertical edges that a few samples a pixel cannot resolve; and the step
+   * is taken only where some pixel of its window has samples that differ (a step of the edge
+   * crosses their sample patterns), so that sides that lie on pixel borders and end at corners
+   * or junctions (voxels, bars) stay as rendered. Off: each sample image is filtered exactly as the
    * single-sample pass, and so as vtkImageDLAA, would. Measured in docs/measurements.md
    * ("DLAA with samples: the short edges from the samples").
    */

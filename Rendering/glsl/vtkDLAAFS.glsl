@@ -32,7 +32,8 @@
 //   DLAA_NO_SHORT_EDGES  defined: a sample image of a multisampled render whose samples were
 //                    each shaded on its own (vtkOpenGLDLAAPass::ShortEdgesFromSamples): no
 //                    short-edge blur (s = c), the long-edge step alone; the average of the sample
-//                    images measures the coverage that the blur estimates.
+//                    images measures the coverage that the blur estimates. The long-edge step is
+//                    taken only where the samples see a step within its window (stepSeen).
 //
 // Must match vtkImageDLAA.
 
@@ -149,6 +150,34 @@ int stepHalfLength(ivec2 p, ivec2 along, ivec2 across)
 {
   return max(1, stepReach(p, -along, across, stepReach(p, along, across, 8)));
 }
+
+#ifdef DLAA_NO_SHORT_EDGES
+// samplesColor, numberOfSamples and samplesDiffer (vtkAntialiasingSamplesDiffer.glsl).
+//VTK::Antialiasing::SamplesDiffer
+
+// Whether the samples see a step of the long edge that the pixel p is on, within the window of
+// its long-edge step (h pixels each way along it): some pixel of the window, on the pixel's row
+// (or column) or on either side across, has samples that differ. Where none has, every sample
+// of those pixels agrees, so the edge lies within the gap between the sample pattern and the
+// pixel border all along the window: a side that lies on pixel borders and ends at a corner or a
+// junction of other sides (voxels, bars), which the step would ramp from that end. A step of a
+// real staircase crosses the sample patterns of the pixels where it is.
+// (From the pixel outwards: the nearest pixels are read first.)
+bool stepSeen(ivec2 p, ivec2 along, ivec2 across, int h)
+{
+  for (int d = 0; d <= h; ++d)
+  {
+    for (int j = -1; j <= 1; ++j)
+    {
+      if (samplesDiffer(p + d * along + j * across) || samplesDiffer(p - d * along + j * across))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+#endif
 
 void leave(vec4 c)
 {
@@ -270,6 +299,9 @@ void main()
       sum += colorAt(p + ivec2(i, 0));
     }
     vec4 stepped = towards(c, above, below, luma(sum / float(2 * h + 1)));
+#ifdef DLAA_NO_SHORT_EDGES
+    stepped = stepped == c || stepSeen(p, ivec2(1, 0), ivec2(0, 1), h) ? stepped : c;
+#endif
     result = mix(result, stepped, longX);
     motionFrame = mix(motionFrame, stepped, longX);
   }
@@ -282,6 +314,9 @@ void main()
       sum += colorAt(p + ivec2(0, i));
     }
     vec4 stepped = towards(c, left, right, luma(sum / float(2 * h + 1)));
+#ifdef DLAA_NO_SHORT_EDGES
+    stepped = stepped == c || stepSeen(p, ivec2(0, 1), ivec2(1, 0), h) ? stepped : c;
+#endif
     result = mix(result, stepped, longY);
     motionFrame = mix(motionFrame, stepped, longY);
   }

@@ -68,8 +68,6 @@ uniform sampler2D diagonalAreaTexture; // vtkMLAAAreaTexture's diagonal table, R
 // Per sample s, the area table of horizontal lines (rows 2 s T...) then of vertical lines,
 // T = 5 D texels high each; RG32F (texelFetch only).
 uniform sampler2D sampleAreaTexture;
-uniform sampler2DMS samplesColor; // the multisampled render
-uniform int numberOfSamples;
 uniform int sampleIndex;
 uniform float sampleGap; // 1/2 less the largest |offset| of a sample from the pixel centre
 #ifdef MLAA_SAMPLES_SHADED
@@ -221,23 +219,8 @@ vec2 area(int e1, int e2, int d1, int d2)
 }
 
 #ifdef MLAA_SAMPLE_AREAS
-// Whether the samples of pixel q differ (a geometric edge crosses it); none outside the image.
-bool samplesDiffer(ivec2 q)
-{
-  if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, textureSize(samplesColor))))
-  {
-    return false;
-  }
-  vec4 first = texelFetch(samplesColor, q, 0);
-  for (int s = 1; s < numberOfSamples; ++s)
-  {
-    if (any(notEqual(texelFetch(samplesColor, q, s), first)))
-    {
-      return true;
-    }
-  }
-  return false;
-}
+// samplesColor, numberOfSamples and samplesDiffer (vtkAntialiasingSamplesDiffer.glsl).
+//VTK::Antialiasing::SamplesDiffer
 #endif
 
 #ifdef MLAA_SAMPLES_SHADED

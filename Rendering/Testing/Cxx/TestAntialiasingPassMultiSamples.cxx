@@ -33,8 +33,9 @@
 //   scenes, the resolve is nearer the supersampled reference (AAR higher by 0.03) than with the
 //   short-edge blur run on every sample image;
 // - with sample shading, MLAA and DLAA leave squares whose sides lie on pixel borders exactly
-//   as rendered (no ramp from their corners, where MLAA's single-sample pass would draw the
-//   chapter's L shapes, and no blur along them, which DLAA's short edges would draw);
+//   as rendered, on a checkerboard and on voxels of twelve colours (no ramp from their corners,
+//   where MLAA's single-sample pass would draw the chapter's L shapes, and no blur or ramp along
+//   them, which DLAA's short edges and its long-edge step from a junction would draw);
 // - with Temporal on, the first render (and those of a moving camera) blend the multisampled
 //   resolve (the first equals the multisampled pass's image within 1/255), a still
 //   accumulation renders one sample per pixel, and no warning is printed;
@@ -45,6 +46,7 @@
 
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkCubeSource.h"
 #include "vtkDataObject.h"
 #include "vtkHardwareSelector.h"
@@ -57,6 +59,7 @@
 #include "vtkSelection.h"
 #include "vtkSelectionNode.h"
 #include "vtkSphereSource.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <set>
 
@@ -715,28 +718,21 @@ void ShortEdgesFromSamples(const PassMethod& method, MessageObserver* messages)
   }
 }
 
-// MLAA with sample shading: where no pixel's samples straddle an edge, the edge lies within
-// 1/2 less the largest sample offset of the pixel border, and where no end of its line shows a
-// step either, no ramp is drawn. Rectangles whose sides lie on pixel borders (two colours
-// meeting at corners, as a checkerboard's squares do) come out exactly as rendered, and with a
-// single sample too: their sides, 30 pixels long, end at corners and junctions, with no step seen
-// (issue 50; the chapter's L shapes ramped them from their corners). DLAA with samples
-// (ShortEdgesFromSamples) leaves them too: its long-edge step moves no pixel of a side that is
-// one row (or column) all along; the short-edge blur on each sample image would blur the
-// squares' corners.
-void PixelAlignedSides(const PassMethod& method, MessageObserver* messages)
+// A 4 x 3 board of 30-pixel squares from (20, 15) on a pixel camera (PixelScene): every other
+// square in white (a checkerboard: two colours meeting at every corner), or, with `voxels`, all
+// twelve in colours of their own (cell scalars: four colours meeting at every inner corner, as the
+// voxels of an image seen straight on).
+vtkSmartPointer<vtkPolyData> AlignedBoard(bool voxels)
 {
-  const bool mlaa = std::string(method.Name) == "vtkOpenGLMLAAPass";
-  const int width = 160, height = 120;
   vtkNew<vtkPoints> points;
   vtkNew<vtkCellArray> quads;
-  // A 4 x 3 board of 30-pixel squares from (20, 15), every other square drawn white over a
-  // black background.
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetNumberOfComponents(3);
   for (int j = 0; j < 3; ++j)
   {
     for (int i = 0; i < 4; ++i)
     {
-      if ((i + j) % 2)
+      if (!voxels && (i + j) % 2)
       {
         continue;
       }
@@ -748,36 +744,62 @@ void PixelAlignedSides(const PassMethod& method, MessageObserver* messages)
       points->InsertNextPoint(x0, y0 + 30, 0.0);
       const vtkIdType ids[4] = { first, first + 1, first + 2, first + 3 };
       quads->InsertNextCell(4, ids);
+      const int k = 4 * j + i;
+      colors->InsertNextTuple3((37 * k + 60) % 256, (91 * k + 30) % 256, (53 * k + 120) % 256);
     }
   }
-  vtkNew<vtkPolyData> board;
+  auto board = vtkSmartPointer<vtkPolyData>::New();
   board->SetPoints(points);
   board->SetPolys(quads);
-  const PixelScene scene(board, width, height);
-  vtkRenderWindow* window = scene.Window;
-  vtkRenderer* renderer = scene.Renderer;
-  auto plain = vtkMLAAScenes::Capture(window);
-  auto* pass = method.Use(renderer);
-  messages->Watch(pass);
-  const Difference single = Compare(plain, vtkMLAAScenes::Capture(window), 4.0);
-  pass->SetMultiSamples(Samples);
-  const Difference shaded = Compare(plain, vtkMLAAScenes::Capture(window), 0.0);
-  MLAA_CHECK(pass->GetRenderedSampleShading());
-  std::cout << method.Name << ", pixel-aligned squares: the single-sample pass changes "
-            << single.Pixels << " pixels by more than 4/255, " << Samples
-            << " samples with sample shading " << shaded.Pixels;
-  if (auto* dlaa = vtkOpenGLDLAAPass::SafeDownCast(pass))
+  if (voxels)
   {
-    dlaa->ShortEdgesFromSamplesOff();
-    const Difference blurred = Compare(plain, vtkMLAAScenes::Capture(window), 4.0);
-    std::cout << " (" << blurred.Pixels << " by more than 4/255 with the short-edge blur on every "
-              << "sample image)";
-    MLAA_CHECK(blurred.Pixels > 50);
+    board->GetCellData()->SetScalars(colors);
   }
-  std::cout << std::endl;
-  MLAA_CHECK(!mlaa || single.Pixels == 0);
-  MLAA_CHECK(shaded.Pixels == 0);
-  StopPass(renderer, window);
+  return board;
+}
+
+// Sides that lie on pixel borders, with sample shading: where no pixel's samples straddle an edge,
+// the edge lies within 1/2 less the largest sample offset of the pixel border. MLAA draws no ramp
+// where no end of a line shows a step either; DLAA (ShortEdgesFromSamples) gives each sample
+// image its long-edge step alone, and takes none where no pixel of the step's window has samples
+// that differ. So squares whose sides lie on pixel borders come out exactly as rendered with 4
+// samples, for both methods, on a checkerboard and on a board of voxels of twelve colours; and,
+// for MLAA, with a single sample too: their sides, 30 pixels long, end at corners and junctions,
+// with no step seen (issue 50; the chapter's L shapes ramped them from their corners). With the
+// short-edge blur on every sample image, DLAA blurs the squares' corners; without the window's
+// test, its long-edge step ramped the voxels' sides from the junctions where four colours meet.
+void PixelAlignedSides(const PassMethod& method, MessageObserver* messages)
+{
+  const bool mlaa = std::string(method.Name) == "vtkOpenGLMLAAPass";
+  const int width = 160, height = 120;
+  for (bool voxels : { false, true })
+  {
+    const PixelScene scene(AlignedBoard(voxels), width, height);
+    vtkRenderWindow* window = scene.Window;
+    vtkRenderer* renderer = scene.Renderer;
+    auto plain = vtkMLAAScenes::Capture(window);
+    auto* pass = method.Use(renderer);
+    messages->Watch(pass);
+    const Difference single = Compare(plain, vtkMLAAScenes::Capture(window), 4.0);
+    pass->SetMultiSamples(Samples);
+    const Difference shaded = Compare(plain, vtkMLAAScenes::Capture(window), 0.0);
+    MLAA_CHECK(pass->GetRenderedSampleShading());
+    std::cout << method.Name << ", pixel-aligned " << (voxels ? "voxels" : "squares")
+              << ": the single-sample pass changes " << single.Pixels << " pixels by more than "
+              << "4/255, " << Samples << " samples with sample shading " << shaded.Pixels;
+    if (auto* dlaa = vtkOpenGLDLAAPass::SafeDownCast(pass))
+    {
+      dlaa->ShortEdgesFromSamplesOff();
+      const Difference blurred = Compare(plain, vtkMLAAScenes::Capture(window), 4.0);
+      std::cout << " (" << blurred.Pixels << " by more than 4/255 with the short-edge blur on "
+                << "every sample image)";
+      MLAA_CHECK(blurred.Pixels > 50);
+    }
+    std::cout << std::endl;
+    MLAA_CHECK(!mlaa || single.Pixels == 0);
+    MLAA_CHECK(shaded.Pixels == 0);
+    StopPass(renderer, window);
+  }
 }
 
 void BackToSingleSample(const PassMethod& method, MessageObserver* messages)
