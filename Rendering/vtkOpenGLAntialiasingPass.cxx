@@ -586,6 +586,8 @@ void vtkOpenGLAntialiasingPass::Render(const vtkRenderState* s)
     this->PrepareTargets(frame, !frame.InPlace);
     if (chosenSamples)
     {
+      // Also while a temporal still renders one sample per pixel: the next moving render uses
+      // them again.
       this->Samples->Prepare(frame, chosenSamples);
     }
     else

@@ -539,20 +539,20 @@ bool vtkOpenGLAntialiasingPass::TemporalHistories::Antialias(const Frame& frame,
       // The sample sets antialiased and resolved into Current (every pixel written).
       done = pass->Samples->Antialias(local, samples);
     }
-    else if (!frame.Composite)
+    else
     {
-      // Current takes the delegate's image as it is (a copy; bindTarget set the whole texture as
-      // the scissor box), and the method writes only the pixels it changes, as in place in the
-      // target: the same image, without a shader writing every pixel.
-      pass->DelegateFramebuffer->Bind(GL_READ_FRAMEBUFFER);
-      pass->DelegateFramebuffer->ActivateReadBuffer(0);
-      const int box[4] = { 0, width, 0, height };
-      vtkOpenGLFramebufferObject::Blit(box, box, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-      local.InPlace = true;
-      local.OwnTarget = h.Framebuffer;
-    }
-    if (!samples)
-    {
+      if (!frame.Composite)
+      {
+        // Current takes the delegate's image as it is (a copy; bindTarget set the whole texture
+        // as the scissor box), and the method writes only the pixels it changes, as in place in
+        // the target: the same image, without a shader writing every pixel.
+        pass->DelegateFramebuffer->Bind(GL_READ_FRAMEBUFFER);
+        pass->DelegateFramebuffer->ActivateReadBuffer(0);
+        const int box[4] = { 0, width, 0, height };
+        vtkOpenGLFramebufferObject::Blit(box, box, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        local.InPlace = true;
+        local.OwnTarget = h.Framebuffer;
+      }
       done = pass->Antialias(local); // (bindTarget below detaches the motion frame)
     }
   }

@@ -42,11 +42,28 @@ in vec2 texCoord; // over the viewport, which is the size of the textures
 uniform sampler2DMS samplesColor;
 uniform sampler2DMS samplesDepth;
 #endif
-#ifdef SAMPLES_PLAIN
+#if defined(SAMPLES_PLAIN) || defined(SAMPLES_RESOLVE)
 uniform int numberOfSamples;
+
+// The plain average of the samples of pixel p (multisampling's own resolve), the nearest of their
+// depths, and whether they differ.
+vec4 PlainAverage(ivec2 p, out float depth, out bool differ)
+{
+  vec4 first = texelFetch(samplesColor, p, 0);
+  vec4 sum = first;
+  differ = false;
+  depth = texelFetch(samplesDepth, p, 0).r;
+  for (int s = 1; s < numberOfSamples; ++s)
+  {
+    vec4 sample = texelFetch(samplesColor, p, s);
+    sum += sample;
+    differ = differ || any(notEqual(sample, first));
+    depth = min(depth, texelFetch(samplesDepth, p, s).r);
+  }
+  return sum / float(numberOfSamples);
+}
 #endif
 #ifdef SAMPLES_RESOLVE
-uniform int numberOfSamples;
 uniform float resolveWeight;
 #endif
 #ifdef SAMPLES_COPY
@@ -66,14 +83,9 @@ void main()
   gl_FragDepth = texelFetch(samplesDepth, p, sampleIndex).r;
 #elif defined(SAMPLES_PLAIN)
   ivec2 p = ivec2(texCoord * vec2(textureSize(samplesColor)));
-  vec4 sum = vec4(0.0);
-  float depth = 1.0;
-  for (int s = 0; s < numberOfSamples; ++s)
-  {
-    sum += texelFetch(samplesColor, p, s);
-    depth = min(depth, texelFetch(samplesDepth, p, s).r);
-  }
-  gl_FragData[0] = sum / float(numberOfSamples);
+  float depth;
+  bool differ;
+  gl_FragData[0] = PlainAverage(p, depth, differ);
   gl_FragDepth = depth;
 #else
   ivec2 p = ivec2(texCoord * vec2(textureSize(source, 0)));
@@ -81,18 +93,9 @@ void main()
 #ifdef SAMPLES_ACCUMULATE
   gl_FragData[0] = c * scale;
 #else
-  vec4 first = texelFetch(samplesColor, p, 0);
-  vec4 plain = first;
-  bool differ = false;
-  float depth = texelFetch(samplesDepth, p, 0).r;
-  for (int s = 1; s < numberOfSamples; ++s)
-  {
-    vec4 sample = texelFetch(samplesColor, p, s);
-    plain += sample;
-    differ = differ || any(notEqual(sample, first));
-    depth = min(depth, texelFetch(samplesDepth, p, s).r);
-  }
-  plain /= float(numberOfSamples);
+  float depth;
+  bool differ;
+  vec4 plain = PlainAverage(p, depth, differ);
   gl_FragData[0] = differ ? mix(c, plain, resolveWeight) : c;
   gl_FragDepth = depth;
 #endif
