@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) the vtkMLAA developers
 // SPDX-License-Identifier: BSD-3-Clause
-// mlaa-aligned: damage (shared/docs/MEASURING.md) of vtkImageMLAA on exact pictures whose every
-// side lies on a pixel boundary, with no rendering.
+// mlaa-aligned: damage (shared/docs/MEASURING.md) of vtkImageMLAA, and of vtkImageDLAA, on exact
+// pictures whose every side lies on a pixel boundary, with no rendering.
 //
 // Such a picture has no aliasing: its 8 x 8 supersampling is the picture itself, so every pixel is
 // in MEASURING.md's set F and the damage is the share of all pixels that the filter changes by more
@@ -23,11 +23,14 @@
 // crops.png (the three magnified 8 times around the first damaged pixel).
 //
 // Configurations: the five presets, the high preset with 1 to 128 search steps, and the high
-// preset with corner extrapolation at 16 and 128 steps; with MLAA settings on the command line,
-// those settings instead ("given"). --require-damage P fails (exit 1) where any configuration
+// preset with corner extrapolation at 16 and 128 steps, then vtkImageDLAA with its defaults
+// ("DLAA") and without long edges ("DLAA-short"); with MLAA settings on the command line, those
+// settings instead ("given"). --require-damage P fails (exit 1) where any configuration
 // damages more than P percent.
 #include "BenchmarkUtilities.h"
 
+#include "vtkDLAAOptions.h"
+#include "vtkImageDLAA.h"
 #include "vtkImageData.h"
 #include "vtkImageMLAA.h"
 #include "vtkMLAAOptions.h"
@@ -224,8 +227,31 @@ vtkSmartPointer<vtkImageData> Crops(
 struct Configuration
 {
   std::string Name;
-  std::function<void(vtkMLAAOptions*)> Configure;
+  std::function<void(vtkMLAAOptions*)> Configure; // a vtkImageMLAA's settings
+  std::function<void(vtkDLAAOptions*)> ConfigureDLAA = nullptr; // if set: a vtkImageDLAA's
 };
+
+// The filter of a configuration, its input set, updated.
+vtkSmartPointer<vtkImageAlgorithm> RunFilter(
+  const Configuration& configuration, vtkImageData* input)
+{
+  vtkSmartPointer<vtkImageAlgorithm> result;
+  if (configuration.ConfigureDLAA)
+  {
+    auto filter = vtkSmartPointer<vtkImageDLAA>::New();
+    configuration.ConfigureDLAA(filter->GetOptions());
+    result = filter;
+  }
+  else
+  {
+    auto filter = vtkSmartPointer<vtkImageMLAA>::New();
+    configuration.Configure(filter->GetOptions());
+    result = filter;
+  }
+  result->SetInputData(input);
+  result->Update();
+  return result;
+}
 
 std::vector<Configuration> Configurations()
 {
@@ -255,6 +281,8 @@ std::vector<Configuration> Configurations()
         o->CornerExtrapolationOn();
       } });
   }
+  list.push_back({ "DLAA", nullptr, [](vtkDLAAOptions*) {} });
+  list.push_back({ "DLAA-short", nullptr, [](vtkDLAAOptions* o) { o->LongEdgesOff(); } });
   return list;
 }
 
@@ -374,10 +402,7 @@ int main(int argc, char* argv[])
     {
       const Picture& p = pictures[k];
       auto input = ToImage(p);
-      vtkNew<vtkImageMLAA> filter;
-      configuration.Configure(filter->GetOptions());
-      filter->SetInputData(input);
-      filter->Update();
+      auto filter = RunFilter(configuration, input);
       vtkImageData* output = filter->GetOutput();
       const auto* in = static_cast<const unsigned char*>(input->GetScalarPointer());
       const auto* out = static_cast<const unsigned char*>(output->GetScalarPointer());
