@@ -27,6 +27,10 @@
  *      my = saturate((Lambda * l(Hx) - Epsilon) / l(By))   (a vertical edge: blur along y),
  *    with 0 where the numerator is not positive and 1 where it is positive and the divisor is 0.
  *    The short-edge result is s = lerp(lerp(c, Bx, mx), By, my / 2).
+ *    Corners (an addition of ours, issue 50): a blur reads no pixel past the side of a corner
+ *    (below); a read beyond such a side, 1 or 2 pixels from p, reads the last pixel before it.
+ *    Without this, the blur along a side that lies on pixel borders brought the next shape's
+ *    colour into the pixels at its ends (bars, rectangles, voxels seen straight on).
  * 2. Long edges (slides 25 to 31, 44 to 47; LongEdges on). A long horizontal edge is a run of
  *    horizontal-edge responses along x: the long mask Mx = saturate(2 * a - 1), where a is the
  *    mean of mx over the 17 pixels p - 8 .. p + 8 along x; My likewise along y with my. Near
@@ -49,6 +53,28 @@
  *    this window for steps of 17 pixels and more; on shorter steps (edges a few pixels off
  *    horizontal or vertical) a longer window would spread each step's transition across more
  *    than the pixels it covers, and make it flicker in motion (docs/measurements.md).
+ *    The reach also stops before the first place along the edge where the pixel's row changes
+ *    luminosity across the side of a corner (3, below). Where that side is next to the pixel,
+ *    h = 0 (the mean of the pixel alone: q = c).
+ * 3. The side of a corner (issue 50). A boundary between two pixels a and b next to each other along a
+ *    direction (the blur's, or the edge's) separates luminosities l(a) and l(b); with
+ *    tolerance half their difference, the pair goes on across that direction as far as the
+ *    pixels beside a and b keep l(a) and l(b) within the tolerance (followed up to
+ *    CornerSearch = 8 pixels each way). The boundary is the side of a corner when l(a) and l(b)
+ *    differ; the colours of a and b differ by more than 2 Epsilon / Lambda in some channel that
+ *    l reads (the contrast at which the masks see an edge: a step of that height gives the pixel
+ *    beside it a high-pass of half of it; in colour, since voxels of different colours may have
+ *    nearly the same luminosity; fainter boundaries, such as the bands of flat shading along a
+ *    silhouette, are none); the pair goes on for 4 pixels or more in all (a and b included); and
+ *    at each end where it stops within the 8 pixels: the pair does not go on one pixel over
+ *    along the direction (one pixel further or back: a staircase's run goes on so at each of
+ *    its steps); on a's side or on
+ *    b's, the two pixels at the end (the last of the run and the first past it) differ, and the
+ *    3 pairs next to them further from the boundary keep their luminosities within half that
+ *    difference (a side crossing the boundary's line that goes on for 4 pixels: a shorter
+ *    crossing, such as the end of a line one pixel wide, is a step as well); and both of the
+ *    end's luminosities are finite. MLAA's "sides without steps" (docs/methods.md) reads the
+ *    same kind of picture from its edges.
  * Flat regions (every response 0) and faint noise (Lambda * response <= Epsilon) are left
  * exactly as they are. Pixels whose neighbourhood holds NaN or infinity are left as they are.
  * Details both back ends follow: "above" is the next row (y + 1, up on screen in VTK images and
@@ -91,6 +117,8 @@ public:
 
   /** Pixels each way of the long-edge masks and blurs (a 17-pixel window). */
   static constexpr int LongEdgeRadius = 8;
+  /** Pixels each way over which the side of a corner is followed (method step 3). */
+  static constexpr int CornerSearch = 8;
 
   ///@{
   /** Offset of the contrast curve of the blend masks. Default 0.1, range [0, 1]. */

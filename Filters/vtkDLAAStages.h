@@ -59,6 +59,10 @@ using vtkAntialiasingKit::Rect;
 constexpr int ShortEdgeRadius = 2;
 /** Pixels each way of the long-edge means (17 pixels). */
 constexpr int LongEdgeRadius = vtkDLAAOptions::LongEdgeRadius;
+/** Pixels each way across a boundary over which CornerSide follows the side. */
+constexpr int CornerSearch = vtkDLAAOptions::CornerSearch;
+/** Pixels, the first included, for which a side crossing a corner's side at its end must go on. */
+constexpr int CornerCrossing = 4;
 /**
  * Output rows per task: each task also reads Halo() rows each side and computes my on
  * LongEdgeRadius rows each side (64 rows: 12 % slower at 1080p, one thread).
@@ -79,9 +83,27 @@ struct Settings
 
   /**
    * How far, in pixels along x and y, an output pixel reads: the short-edge kernels (2), and
-   * with LongEdges the 17-pixel means of masks that themselves read 2 pixels further (8 + 2).
+   * with LongEdges the 17-pixel means of masks that themselves read 2 pixels further (8 + 2);
+   * the tests of corners' sides (CornerSide) of boundaries up to 2 pixels away (8 with LongEdges)
+   * read CornerCrossing - 1 pixels past them, and CornerSearch + 1 across.
    */
-  int Halo() const { return ShortEdgeRadius + (this->LongEdges ? LongEdgeRadius : 0); }
+  int Halo() const
+  {
+    const int reach = this->LongEdges ? LongEdgeRadius : ShortEdgeRadius;
+    return std::max({ ShortEdgeRadius + (this->LongEdges ? LongEdgeRadius : 0),
+      reach + CornerCrossing - 1, CornerSearch + 1 });
+  }
+
+  /**
+   * 2 Epsilon / Lambda: the smallest difference of luminosity across a side for which the blend
+   * masks see an edge (a step of that height gives the pixel beside it a high-pass of half of
+   * it); the largest float where Lambda is 0. As a float, as the pass's uniform.
+   */
+  float SideContrast() const
+  {
+    return this->Lambda > 0.0 ? static_cast<float>(2.0 * this->Epsilon / this->Lambda)
+                              : std::numeric_limits<float>::max();
+  }
 };
 VTKFILTERSMLAA_EXPORT Settings MakeSettings(
   vtkDLAAOptions* options, int components, double lo, double hi);
@@ -148,6 +170,109 @@ inline Acc LuminosityMatch(Acc t, Acc lc, Acc ln)
 }
 
 /**
+ * Corners of sides that lie on pixel borders (issue 50). The short-edge blur along an edge reads
+ * two pixels each way, and the long-edge step takes the mean over up to 8; where those reads
+ * cross a side that meets the edge at a corner (the end of a bar, a junction of voxels), they
+ * bring the next shape's colour into a side that was exact. The accessor `at(d, i)` gives the
+ * luminosity d pixels from the pixel along the blur (or the edge; d < 0 behind it) and i pixels
+ * across. The pass's vtkDLAAFS.glsl computes the same.
+ *
+ * CrossingGoesOn: whether, d pixels along, the pixels i0 and i1 across differ and the pixels 1 to
+ * CornerCrossing - 1 further along in the direction `away` (1 or -1) differ alike (each within
+ * half the difference of its own at d): a side crossing the line between i0 and i1 that goes on
+ * for CornerCrossing pixels.
+ */
+template <typename Acc, typename Luma>
+inline bool CrossingGoesOn(const Luma& at, int d, int i0, int i1, int away)
+{
+  const Acc l0 = at(d, i0);
+  const Acc l1 = at(d, i1);
+  const Acc difference = std::abs(l0 - l1);
+  if (!(difference > Acc(0)))
+  {
+    return false;
+  }
+  const Acc tolerance = Acc(0.5) * difference;
+  for (int m = 1; m < CornerCrossing; ++m)
+  {
+    if (!(std::abs(at(d + m * away, i0) - l0) <= tolerance &&
+          std::abs(at(d + m * away, i1) - l1) <= tolerance))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/**
+ * Whether the boundary between the pixels k - 1 and k along the blur (or the edge) is the side
+ * of a corner: the two luminosities it separates, lP and lQ, differ, their colours differ by more
+ * than `minimum` (Settings::SideContrast) in some channel that the luminosity reads
+ * (`contrast(d0, d1)`: the largest difference of those channels between the pixels d0 and d1
+ * along), and
+ * the pair goes on across (each within half their difference; followed up to CornerSearch pixels
+ * each way) for 4 pixels or more, and at each end where it stops, it neither goes on one pixel
+ * over along the blur (as a staircase's run goes on at its steps) nor meets a crossing side
+ * shorter than CornerCrossing pixels (a crossing one pixel long is the end of a line one pixel
+ * wide, a step as well). A luminosity that is not finite at an end makes it a step.
+ */
+template <typename Acc, typename Luma, typename Contrast>
+inline bool CornerSide(const Luma& at, const Contrast& contrast, int k, Acc minimum)
+{
+  const Acc lP = at(k - 1, 0);
+  const Acc lQ = at(k, 0);
+  const Acc difference = std::abs(lP - lQ);
+  if (!(difference > Acc(0)) || !(contrast(k - 1, k) > minimum))
+  {
+    return false; // no side the masks would see (or a value that is not finite)
+  }
+  const Acc tolerance = Acc(0.5) * difference;
+  auto pairAt = [&](int d, int i) {
+    return std::abs(at(d - 1, i) - lP) <= tolerance && std::abs(at(d, i) - lQ) <= tolerance;
+  };
+  int run = 1;
+  for (int side = -1; side <= 1; side += 2)
+  {
+    int end = 1;
+    for (; end <= CornerSearch; ++end)
+    {
+      if (!pairAt(k, side * end))
+      {
+        break;
+      }
+    }
+    run += end - 1;
+    if (end <= CornerSearch)
+    {
+      const int i = side * end;
+      if (!std::isfinite(at(k - 1, i)) || !std::isfinite(at(k, i)) || pairAt(k - 1, i) ||
+        pairAt(k + 1, i))
+      {
+        return false;
+      }
+      if (!(CrossingGoesOn<Acc>(at, k - 1, i - side, i, -1) ||
+            CrossingGoesOn<Acc>(at, k, i - side, i, 1)))
+      {
+        return false;
+      }
+    }
+  }
+  return run >= 4;
+}
+
+/**
+ * How many pixels, 0 to 2, the short-edge blur of a pixel reads in the direction of `at` before
+ * a corner's side (CornerSide): reads beyond it read the last pixel before it.
+ */
+template <typename Acc, typename Luma, typename Contrast>
+inline int BlurReach(const Luma& at, const Contrast& contrast, Acc sideContrast)
+{
+  return CornerSide<Acc>(at, contrast, 1, sideContrast)
+    ? 0
+    : (CornerSide<Acc>(at, contrast, 2, sideContrast) ? 1 : 2);
+}
+
+/**
  * How far the step of a long edge that a pixel is on reaches from it in the direction `sign`
  * (1 or -1) along the edge, at most `limit` pixels. `at(d, k)` is the luminosity d pixels along
  * the edge from the pixel and k (-1, 0 or 1) across it: below or left for -1, the pixel's own row
@@ -159,20 +284,33 @@ inline Acc LuminosityMatch(Acc t, Acc lc, Acc ln)
  * its step end at the very place where the line reaches them. The pass's vtkDLAAFS.glsl
  * computes the same.
  */
-template <typename Acc, typename Luma>
-inline int StepReach(const Luma& at, int sign, int limit)
+template <typename Acc, typename Luma, typename Contrast>
+inline int StepReach(
+  const Luma& at, const Contrast& contrast, int sign, int limit, Acc sideContrast, bool& corner)
 {
+  corner = false;
   Acc e0 = at(0, -1);
   Acc e1 = at(0, 0);
   Acc e2 = at(0, 1);
   const Acc tolerance = Acc(0.5) * std::abs(e0 - e2);
   auto near = [tolerance](Acc x, Acc y) { return std::abs(x - y) <= tolerance; };
   bool swap = near(e0, e1) != near(e2, e1);
+  Acc row = e1; // the luminosity of the pixel's row (or column) d - 1 pixels along
+  auto ahead = [&at, sign](int d, int i) { return at(sign * d, i); };
+  auto aheadContrast = [&contrast, sign](int d0, int d1) {
+    return contrast(sign * d0, sign * d1);
+  };
   for (int d = 1; d <= limit; ++d)
   {
     const Acc m0 = at(sign * d, -1);
     const Acc m1 = at(sign * d, 0);
     const Acc m2 = at(sign * d, 1);
+    if (m1 != row && CornerSide<Acc>(ahead, aheadContrast, d, sideContrast))
+    {
+      corner = true;
+      return d - 1; // the window stops before a corner's side
+    }
+    row = m1;
     if (near(m0, e0) && near(m2, e2))
     {
       continue;
@@ -202,12 +340,21 @@ inline int StepReach(const Luma& at, int sign, int limit)
  * is on (StepReach). A window longer than the step spreads the step's transition over the whole
  * window, which on an edge a few pixels from vertical or horizontal (steps of 2 to 16 pixels)
  * blurs it across more than the pixels it covers and makes it flicker as the edge moves
- * (docs/measurements.md).
+ * (docs/measurements.md). 0 where a corner's side lies next to the pixel (StepReach stopped
+ * there): the window would cross it, and the mean of the pixel alone leaves it as it is.
  */
-template <typename Acc, typename Luma>
-inline int StepHalfLength(const Luma& at)
+template <typename Acc, typename Luma, typename Contrast>
+inline int StepHalfLength(const Luma& at, const Contrast& contrast, Acc sideContrast)
 {
-  return std::max(1, StepReach<Acc>(at, -1, StepReach<Acc>(at, 1, LongEdgeRadius)));
+  bool cornerAhead = false;
+  bool cornerBehind = false;
+  const int ahead = StepReach<Acc>(at, contrast, 1, LongEdgeRadius, sideContrast, cornerAhead);
+  // (At least 1 pixel behind: a corner's side there sets 0 whatever the reach ahead.)
+  const int behind =
+    StepReach<Acc>(at, contrast, -1, std::max(ahead, 1), sideContrast, cornerBehind);
+  return (cornerAhead && ahead == 0) || (cornerBehind && behind == 0)
+    ? 0
+    : std::max(1, std::min(ahead, behind));
 }
 
 /**
@@ -337,6 +484,7 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
   const int paddedWidth = width + 2 * halo; // column i is x = out.X0 - halo + i
   const Acc lambda = static_cast<Acc>(s.Lambda);
   const Acc epsilon = static_cast<Acc>(s.Epsilon);
+  const Acc sideContrast = static_cast<Acc>(s.SideContrast());
   const Acc lo = static_cast<Acc>(s.Lo);
   const Acc range = static_cast<Acc>(s.Hi - s.Lo);
   // The channels that the luminosity reads, with their weights.
@@ -787,15 +935,45 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
         {
           continue; // copied
         }
-        // The short-edge result: s = lerp(lerp(c, Bx, mx), By, my / 2).
+        // The short-edge result: s = lerp(lerp(c, Bx, mx), By, my / 2), each blur reading no
+        // farther than the corners' sides it meets (BlurReach; only where its mask is not 0).
         const int i = x + halo;
+        // The largest difference, in the channels the luminosity reads, between the pixels
+        // (padded column, band row) (i0, j0) and (i1, j1).
+        auto colourContrast = [&](int i0, int j0, int i1, int j1) {
+          Acc largest = 0;
+          for (int n = 0; n < lumaCount; ++n)
+          {
+            const int k = lumaChannels[n];
+            largest = std::max(largest, std::abs(plane(j0, k)[i0] - plane(j1, k)[i1]));
+          }
+          return largest;
+        };
+        int right = 2, left = 2, up = 2, down = 2;
+        if (mxp != Acc(0))
+        {
+          right = BlurReach<Acc>([&](int d, int k) { return luma(j + k)[i + d]; },
+            [&](int d0, int d1) { return colourContrast(i + d0, j, i + d1, j); }, sideContrast);
+          left = BlurReach<Acc>([&](int d, int k) { return luma(j + k)[i - d]; },
+            [&](int d0, int d1) { return colourContrast(i - d0, j, i - d1, j); }, sideContrast);
+        }
+        if (myp != Acc(0))
+        {
+          up = BlurReach<Acc>([&](int d, int k) { return luma(j + d)[i + k]; },
+            [&](int d0, int d1) { return colourContrast(i, j + d0, i, j + d1); }, sideContrast);
+          down = BlurReach<Acc>([&](int d, int k) { return luma(j - d)[i + k]; },
+            [&](int d0, int d1) { return colourContrast(i, j - d0, i, j - d1); }, sideContrast);
+        }
         for (int k = 0; k < c; ++k)
         {
           const Acc* row = plane(j, k) + i;
           const Acc cv = row[0];
-          const Acc bx = (row[-2] + row[-1] + row[1] + row[2] + Acc(2) * cv) * sixth;
-          const Acc by = (plane(j - 2, k)[i] + plane(j - 1, k)[i] + plane(j + 1, k)[i] +
-                           plane(j + 2, k)[i] + Acc(2) * cv) *
+          const Acc bx = (row[-std::min(2, left)] + row[-std::min(1, left)] +
+                           row[std::min(1, right)] + row[std::min(2, right)] + Acc(2) * cv) *
+            sixth;
+          const Acc by = (plane(j - std::min(2, down), k)[i] + plane(j - std::min(1, down), k)[i] +
+                           plane(j + std::min(1, up), k)[i] + plane(j + std::min(2, up), k)[i] +
+                           Acc(2) * cv) *
             sixth;
           const Acc h = cv + (bx - cv) * mxp;
           result[k] = h + (by - h) * (myp * Acc(0.5));
@@ -810,7 +988,8 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
           int half = 0;
           if (alongX)
           {
-            half = StepHalfLength<Acc>([&](int d, int k) { return luma(j + k)[i + d]; });
+            half = StepHalfLength<Acc>([&](int d, int k) { return luma(j + k)[i + d]; },
+              [&](int d0, int d1) { return colourContrast(i + d0, j, i + d1, j); }, sideContrast);
             for (int d = -half; d <= half; ++d)
             {
               t += l0[x + d];
@@ -822,7 +1001,8 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
           }
           else
           {
-            half = StepHalfLength<Acc>([&](int d, int k) { return luma(j + d)[i + k]; });
+            half = StepHalfLength<Acc>([&](int d, int k) { return luma(j + d)[i + k]; },
+              [&](int d0, int d1) { return colourContrast(i, j + d0, i, j + d1); }, sideContrast);
             for (int d = -half; d <= half; ++d)
             {
               t += luma(j + d)[i];

@@ -14,6 +14,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
+#include "vtkDLAACornersFS.h"
 #include "vtkDLAAFS.h"
 #include "vtkDLAALuma.h"
 #include "vtkDLAAMasksFS.h"
@@ -21,6 +22,7 @@
 #include "vtkDLAATilesVS.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <string>
 
 #include "vtkAntialiasingOpenGL.h" // For glDrawArraysInstanced (VTK has no instanced quad) and GL enums
@@ -96,6 +98,12 @@ bool vtkOpenGLDLAAPass::PrepareMethodTargets(const Frame& frame)
   const int height = frame.Height + 2 * padding;
   bool reallocated =
     AllocateColorTarget(this->MasksTexture, width, height, 2, VTK_FLOAT, false, GL_RG32F);
+  if (!this->CornersTexture)
+  {
+    this->CornersTexture = NewTexture(frame.Window);
+  }
+  reallocated |= AllocateColorTarget(
+    this->CornersTexture, frame.Width, frame.Height, 4, VTK_UNSIGNED_CHAR, false);
   if (padding > 0)
   {
     if (!this->TilesTexture)
@@ -140,7 +148,45 @@ bool vtkOpenGLDLAAPass::ComputeMasks(const Frame& frame)
     TimedStage stage(frame.Window, "edge masks");
     this->MasksQuad.Quad->Render();
   }
-  return padding == 0 || this->ComputeTiles(frame);
+  return (padding == 0 || this->ComputeTiles(frame)) && this->ComputeCorners(frame);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLDLAAPass::ComputeCorners(const Frame& frame)
+{
+  this->BeginWorkPass(frame.Window, this->CornersTexture, frame.Width, frame.Height);
+  // With long edges, only the squares of tiles near a mask other than 0 are drawn
+  // (vtkDLAATilesVS.glsl, two tiles around), over flags cleared to 0: pass 2 reads no others.
+  const bool tiled = this->Options->GetLongEdges();
+  if (!this->ReadyQuad(frame.Window, this->CornersQuad, vtkDLAACornersFS,
+        Define("DLAA_LUMA", this->Options->GetLumaFunction()) + Define("DLAA_TILED", tiled),
+        tiled ? vtkDLAATilesVS : nullptr))
+  {
+    return false;
+  }
+  vtkShaderProgram* program = this->CornersQuad.Quad->Program;
+  ScopedTextures textures(program, { { "colorTexture", this->ColorTexture } });
+  program->SetUniformi("cornerSearch", vtkDLAAOptions::CornerSearch);
+  program->SetUniformi("runEnds", 2);
+  program->SetUniformi("crossingLength", 4);
+  // 2 Epsilon / Lambda (vtkDLAAStages::Settings::SideContrast).
+  const double lambda = this->Options->GetLambda();
+  program->SetUniformf("sideContrast",
+    lambda > 0.0 ? static_cast<float>(2.0 * this->Options->GetEpsilon() / lambda) : FLT_MAX);
+  TimedStage stage(frame.Window, "corners");
+  if (tiled)
+  {
+    textures.Bind(program, "tilesTexture", this->TilesTexture);
+    vtkOpenGLState* ostate = frame.Window->GetState();
+    ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+    ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+    DrawSquares(this->CornersQuad, frame, 2);
+  }
+  else
+  {
+    this->CornersQuad.Quad->Render();
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -190,6 +236,7 @@ bool vtkOpenGLDLAAPass::Filter(const Frame& frame)
   ScopedTextures textures(program,
     { { "colorTexture", this->ColorTexture }, { "masksTexture", this->MasksTexture } });
   program->SetUniformi("padding", this->GetMasksPadding());
+  textures.Bind(program, "cornersTexture", this->CornersTexture);
   if (this->Options->GetLongEdges())
   {
     textures.Bind(program, "tilesTexture", this->TilesTexture);
@@ -206,19 +253,27 @@ bool vtkOpenGLDLAAPass::Filter(const Frame& frame)
   TimedStage stage(frame.Window, "filter");
   if (tiled)
   {
-    // One instance of the screen quad per square (vtkOpenGLQuadHelper draws one).
-    program->SetUniformi("drawTiles", DrawTiles);
-    const int side = TileSize * DrawTiles;
-    const int squares = ((frame.Width + side - 1) / side) * ((frame.Height + side - 1) / side);
-    variant.Quad->VAO->Bind();
-    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, squares);
-    variant.Quad->VAO->Release();
+    DrawSquares(variant, frame, 1);
   }
   else
   {
     variant.Quad->Render();
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLDLAAPass::DrawSquares(ShaderVariant& variant, const Frame& frame, int margin)
+{
+  // One instance of the screen quad per square (vtkOpenGLQuadHelper draws one).
+  vtkShaderProgram* program = variant.Quad->Program;
+  program->SetUniformi("drawTiles", DrawTiles);
+  program->SetUniformi("margin", margin);
+  const int side = TileSize * DrawTiles;
+  const int squares = ((frame.Width + side - 1) / side) * ((frame.Height + side - 1) / side);
+  variant.Quad->VAO->Bind();
+  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, squares);
+  variant.Quad->VAO->Release();
 }
 
 //------------------------------------------------------------------------------
@@ -236,16 +291,19 @@ void vtkOpenGLDLAAPass::ReleaseMethodResources(vtkWindow* w)
 {
   this->MasksQuad.Release(w);
   this->TilesQuad.Release(w);
+  this->CornersQuad.Release(w);
   this->FilterQuad.Release(w);
   this->FilterTilesQuad.Release(w);
   DeleteObject(this->MasksTexture, w);
   DeleteObject(this->TilesTexture, w);
+  DeleteObject(this->CornersTexture, w);
 }
 
 //------------------------------------------------------------------------------
 vtkIdType vtkOpenGLDLAAPass::GetDLAATargetMemorySize()
 {
-  return TextureBytes(this->MasksTexture, 8) + TextureBytes(this->TilesTexture, 1);
+  return TextureBytes(this->MasksTexture, 8) + TextureBytes(this->TilesTexture, 1) +
+    TextureBytes(this->CornersTexture, 4);
 }
 
 //------------------------------------------------------------------------------

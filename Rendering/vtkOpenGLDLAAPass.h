@@ -122,17 +122,25 @@ private:
 
   // Pixels of MasksTexture beyond each side of the image: 8 with long edges, else 0.
   int GetMasksPadding();
-  // Pass 1 into MasksTexture, and with LongEdges its tiles into TilesTexture.
+  // Pass 1 into MasksTexture, with LongEdges its tiles into TilesTexture, and the sides of
+  // corners into CornersTexture.
   bool ComputeMasks(const Frame& frame);
+  // The sides of corners (vtkDLAACornersFS.glsl).
+  bool ComputeCorners(const Frame& frame);
   // Which tiles of 8 x 8 masks hold a mask other than 0 (vtkDLAATilesFS.glsl).
   bool ComputeTiles(const Frame& frame);
   // Pass 2 into the target viewport.
   bool Filter(const Frame& frame);
+  // Draws `variant` (with vtkDLAATilesVS) over the squares of tiles with a mask other than 0
+  // within `margin` tiles.
+  void DrawSquares(ShaderVariant& variant, const Frame& frame, int margin);
 
   vtkTextureObject* MasksTexture = nullptr;
   vtkTextureObject* TilesTexture = nullptr;
+  vtkTextureObject* CornersTexture = nullptr; // RGBA8, the image's size
   ShaderVariant MasksQuad;
   ShaderVariant TilesQuad;
+  ShaderVariant CornersQuad;
   ShaderVariant FilterQuad;      // over the whole viewport
   ShaderVariant FilterTilesQuad; // in place with LongEdges: a quad per square of tiles
                                  // (vtkDLAATilesVS)

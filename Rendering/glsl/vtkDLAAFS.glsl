@@ -46,6 +46,7 @@ uniform sampler2D masksTexture; // pass 1 output, `padding` pixels larger each s
 uniform sampler2D tilesTexture; // which tiles of 8 x 8 masks hold one other than 0
 #endif
 uniform int padding;
+uniform sampler2D cornersTexture; // the sides of corners (vtkDLAACornersFS)
 //VTK::DLAA::Luma
 
 ivec2 last;
@@ -84,6 +85,36 @@ vec4 towards(vec4 c, vec4 n0, vec4 n1, float t)
   return q;
 }
 
+// The sides of corners (vtkDLAACornersFS, vtkDLAAOptions step 3): whether the boundary between q
+// and q + step (one pixel along x or y, either way) is one. Boundaries with the border are none.
+bool cornerBetween(ivec2 q, ivec2 step)
+{
+  ivec2 r = step.x + step.y < 0 ? q + step : q; // the pixel left of or below the boundary
+  if (any(lessThan(r, ivec2(0))) || any(greaterThan(r, last)))
+  {
+    return false;
+  }
+  vec4 flags = texelFetch(cornersTexture, r, 0);
+  return (step.x != 0 ? flags.r : flags.g) > 0.5;
+}
+
+// How many pixels, 0 to 2, the short-edge blur of p reads along `along` before a corner's side.
+int blurReach(ivec2 p, ivec2 along)
+{
+  return cornerBetween(p, along) ? 0 : (cornerBetween(p + along, along) ? 1 : 2);
+}
+
+// The short-edge blur of p along `along`: its 5 pixels, each read no farther than the blur
+// reaches on its side.
+vec4 shortBlur(ivec2 p, vec4 c, ivec2 along)
+{
+  int ahead = blurReach(p, along);
+  int behind = blurReach(p, -along);
+  return (colorAt(p - min(2, behind) * along) + colorAt(p - min(1, behind) * along) +
+           colorAt(p + min(1, ahead) * along) + colorAt(p + min(2, ahead) * along) + 2.0 * c) /
+    6.0;
+}
+
 // How far the step of a long edge that the pixel p is on reaches from p in the direction
 // `along`, at most `limit` pixels: as far as the two neighbours across the edge (p - across and
 // p + across) keep their luminosity, within half their difference. One exception: where the
@@ -113,19 +144,27 @@ bool swapped(inout float side, inout float middle, float other, float mSide, flo
   return false;
 }
 
-int stepReach(ivec2 p, ivec2 along, ivec2 across, int limit)
+int stepReach(ivec2 p, ivec2 along, ivec2 across, int limit, out bool corner)
 {
+  corner = false;
   float e0 = luma(colorAt(p - across));
   float e1 = luma(colorAt(p));
   float e2 = luma(colorAt(p + across));
   float tolerance = 0.5 * abs(e0 - e2);
   bool swap = near(e0, e1, tolerance) != near(e2, e1, tolerance);
+  float row = e1; // the luminosity of the pixel's row (or column) at i - 1
   for (int i = 1; i <= limit; ++i)
   {
     ivec2 q = p + i * along;
     float m0 = luma(colorAt(q - across));
     float m1 = luma(colorAt(q));
     float m2 = luma(colorAt(q + across));
+    if (m1 != row && cornerBetween(p + (i - 1) * along, along))
+    {
+      corner = true;
+      return i - 1; // the window stops before a corner's side
+    }
+    row = m1;
     if (near(m0, e0, tolerance) && near(m2, e2, tolerance))
     {
       continue;
@@ -145,10 +184,18 @@ int stepReach(ivec2 p, ivec2 along, ivec2 across, int limit)
 // step takes its mean: the shorter of the step's two reaches from p. The mean along the edge over
 // a window longer than the step would spread the step's transition over the whole window: on an
 // edge a few pixels from vertical or horizontal (steps of 2 to 16 pixels) that blurs it across
-// more than the pixels it covers, and as the edge moves the steps' windows flicker.
+// more than the pixels it covers, and as the edge moves the steps' windows flicker. 0 where a
+// corner's side lies next to p: the window would cross it, and the mean of p alone leaves p as it
+// is.
 int stepHalfLength(ivec2 p, ivec2 along, ivec2 across)
 {
-  return max(1, stepReach(p, -along, across, stepReach(p, along, across, 8)));
+  bool cornerAhead;
+  bool cornerBehind;
+  int ahead = stepReach(p, along, across, 8, cornerAhead);
+  // (At least 1 pixel behind: a corner's side there sets 0 whatever the reach ahead.)
+  int behind = stepReach(p, -along, across, max(ahead, 1), cornerBehind);
+  return (cornerAhead && ahead == 0) || (cornerBehind && behind == 0) ? 0
+                                                                      : max(1, min(ahead, behind));
 }
 
 #ifdef DLAA_NO_SHORT_EDGES
@@ -277,13 +324,11 @@ void main()
   vec4 right = colorAt(p + ivec2(1, 0));
   vec4 below = colorAt(p - ivec2(0, 1));
   vec4 above = colorAt(p + ivec2(0, 1));
-  vec4 blurX =
-    (colorAt(p - ivec2(2, 0)) + left + right + colorAt(p + ivec2(2, 0)) + 2.0 * c) / 6.0;
-  vec4 blurY =
-    (colorAt(p - ivec2(0, 2)) + below + above + colorAt(p + ivec2(0, 2)) + 2.0 * c) / 6.0;
 #ifdef DLAA_NO_SHORT_EDGES
   vec4 result = c;
 #else
+  vec4 blurX = m.x > 0.0 ? shortBlur(p, c, ivec2(1, 0)) : c;
+  vec4 blurY = m.y > 0.0 ? shortBlur(p, c, ivec2(0, 1)) : c;
   vec4 result = mix(mix(c, blurX, m.x), blurY, m.y / 2.0);
 #endif
   vec4 motionFrame = c; // (DLAA_MOTION_FRAME) no short-edge blur

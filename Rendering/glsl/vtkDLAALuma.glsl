@@ -11,6 +11,17 @@ float luma(vec4 c)
 #endif
 }
 
+// The largest difference between two colours in the channels the luminosity reads.
+float lumaChannelsContrast(vec4 a, vec4 b)
+{
+#if DLAA_LUMA == 1
+  return abs(a.g - b.g);
+#else
+  vec3 d = abs(a.rgb - b.rgb);
+  return max(max(d.r, d.g), d.b);
+#endif
+}
+
 // Whether every channel of a colour is a finite number.
 bool finite(vec4 c)
 {

@@ -11,7 +11,9 @@
 // 8 pixels of padding), and their windows touch that tile and its four neighbours. The square
 // reads the tiles of masks around its own (corners included, which only draws a little more).
 // A rasteriser then shades only the squares near edges; the pixels of the others keep the
-// delegate's image, as the fragment shader would have left them.
+// delegate's image, as the fragment shader would have left them. The pass of the sides of corners
+// (vtkDLAACornersFS) is drawn the same way, reading tiles two further (`margin`), over a texture
+// cleared to 0.
 
 in vec4 ndCoordIn;  // a corner of VTK's screen quad, in [-1, 1]^2
 in vec2 texCoordIn; // the same corner in [0, 1]^2
@@ -20,6 +22,9 @@ out vec2 texCoord;  // over the image, as the screen quad gives it
 uniform sampler2D colorTexture; // the delegate's image (its size)
 uniform sampler2D tilesTexture;
 uniform int drawTiles; // tiles a side of a square
+// Tiles of masks around the square's own that are read: 1 for pass 2; 2 for the sides of corners
+// (vtkDLAACornersFS), whose flags pass 2 reads up to 8 pixels from the pixels it shades.
+uniform int margin;
 
 void main()
 {
@@ -32,11 +37,12 @@ void main()
   // with their neighbours, masks tiles square * drawTiles + (0 .. drawTiles + 1).
   ivec2 first = square * drawTiles;
   bool changes = false;
-  for (int j = 0; j <= drawTiles + 1; ++j)
+  for (int j = 1 - margin; j <= drawTiles + margin; ++j)
   {
-    for (int i = 0; i <= drawTiles + 1; ++i)
+    for (int i = 1 - margin; i <= drawTiles + margin; ++i)
     {
-      changes = changes || texelFetch(tilesTexture, min(first + ivec2(i, j), last), 0).r != 0.0;
+      ivec2 t = clamp(first + ivec2(i, j), ivec2(0), last);
+      changes = changes || texelFetch(tilesTexture, t, 0).r != 0.0;
     }
   }
   // The square's pixels (the last row and column of squares may reach past the image).

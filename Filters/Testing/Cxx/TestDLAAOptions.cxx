@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Tests of vtkDLAAOptions: defaults (the talk's), clamping, names, copying, ownership; and the
 // options of vtkImageDLAA: never null, shared, and a change re-executes the filter and sets its
-// reach (the input padding: 10 pixels, 2 without long edges).
+// reach (the input padding: 11 pixels, 9 without long edges, which the tests of corners' sides
+// set).
 #include "vtkDLAAOptions.h"
 #include "vtkAntialiasingTestUtilities.h"
 #include "vtkNew.h"
@@ -20,7 +21,7 @@ using namespace vtkMLAATest;
 // in TestAntialiasingAlgorithmStreaming.)
 void FilterOptions()
 {
-  MLAA_CHECK(vtkNew<vtkImageDLAA>()->GetInputPadding() == 10);
+  MLAA_CHECK(vtkNew<vtkImageDLAA>()->GetInputPadding() == 11);
   vtkNew<vtkImageDLAA> filter;
   MLAA_CHECK(filter->GetOptions() != nullptr);
   filter->SetOptions(nullptr);
@@ -50,7 +51,7 @@ void FilterOptions()
   const vtkMTimeType before = filter->GetMTime();
   shared->LongEdgesOff(); // only the options change
   MLAA_CHECK(filter->GetMTime() > before);
-  MLAA_CHECK(filter->GetInputPadding() == 2);
+  MLAA_CHECK(filter->GetInputPadding() == 9);
   filter->Update();
   MLAA_CHECK(Compare(withLong, filter->GetOutput()).Count > 0);
   MLAA_CHECK(Compare(RunDLAA(picture, shared), filter->GetOutput()).Count == 0);

@@ -68,17 +68,107 @@ struct Reference
     }
     return std::min(std::max(n / blur, 0.0), 1.0);
   }
+  // The luminosity d pixels from (x, y) in the direction (ax, ay) and i pixels across it, as a
+  // float, as both back ends compare them: the tests of corners compare differences with half of
+  // other differences, and in one-component images of 64 random grey levels exact midpoints
+  // (a + c = 2 b) are frequent; double and float put them on either side.
+  double At(int x, int y, int ax, int ay, int d, int i) const
+  {
+    return static_cast<float>(this->L(x + d * ax + i * ay, y + d * ay + i * ax));
+  }
+  // Whether, d pixels along, the pixels i0 and i1 across differ, and do alike (each within half
+  // the difference) for 3 more pixels in the direction `away`.
+  bool CrossingGoesOn(int x, int y, int ax, int ay, int d, int i0, int i1, int away) const
+  {
+    const double l0 = this->At(x, y, ax, ay, d, i0);
+    const double l1 = this->At(x, y, ax, ay, d, i1);
+    const double tolerance = std::abs(l0 - l1) / 2;
+    if (!(tolerance > 0))
+    {
+      return false;
+    }
+    for (int m = 1; m <= 3; ++m)
+    {
+      if (std::abs(this->At(x, y, ax, ay, d + m * away, i0) - l0) > tolerance ||
+        std::abs(this->At(x, y, ax, ay, d + m * away, i1) - l1) > tolerance)
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+  // Whether the boundary between the pixels k - 1 and k from (x, y) in the direction (ax, ay)
+  // is the side of a corner (vtkDLAAOptions, "Corners").
+  bool CornerSide(int x, int y, int ax, int ay, int k, double minimum) const
+  {
+    const double p = this->At(x, y, ax, ay, k - 1, 0);
+    const double q = this->At(x, y, ax, ay, k, 0);
+    // The largest difference of the two colours in a channel the luminosity reads.
+    double contrast = 0;
+    for (int c = 0; c < this->C; ++c)
+    {
+      if (this->Weights[c] != 0)
+      {
+        contrast = std::max(contrast,
+          static_cast<double>(static_cast<float>(std::abs(
+            this->V(x + (k - 1) * ax, y + (k - 1) * ay, c) - this->V(x + k * ax, y + k * ay, c)))));
+      }
+    }
+    if (!(std::abs(p - q) > 0) || !(contrast > minimum))
+    {
+      return false;
+    }
+    const double tolerance = std::abs(p - q) / 2;
+    auto pair = [&](int d, int i) {
+      return std::abs(this->At(x, y, ax, ay, d - 1, i) - p) <= tolerance &&
+        std::abs(this->At(x, y, ax, ay, d, i) - q) <= tolerance;
+    };
+    int length = 1;
+    for (int side : { -1, 1 })
+    {
+      int i = side;
+      while (std::abs(i) <= 8 && pair(k, i))
+      {
+        i += side;
+        ++length;
+      }
+      if (std::abs(i) <= 8 &&
+        (pair(k - 1, i) || pair(k + 1, i) ||
+          !(this->CrossingGoesOn(x, y, ax, ay, k - 1, i - side, i, -1) ||
+            this->CrossingGoesOn(x, y, ax, ay, k, i - side, i, 1))))
+      {
+        return false; // a step
+      }
+    }
+    return length >= 4;
+  }
+  // 2 Epsilon / Lambda, as a float: the contrast at which the masks see an edge.
+  double SideContrast() const { return static_cast<float>(2 * this->Epsilon / this->Lambda); }
+  // How far, 0 to 2 pixels, the short-edge blur reads in the direction (ax, ay).
+  int BlurReach(int x, int y, int ax, int ay) const
+  {
+    const double minimum = this->SideContrast();
+    return this->CornerSide(x, y, ax, ay, 1, minimum)
+      ? 0
+      : (this->CornerSide(x, y, ax, ay, 2, minimum) ? 1 : 2);
+  }
   void Pixel(int x, int y, double* out) const
   {
     const double mx = this->Mask(x, y, true);
     const double my = this->Mask(x, y, false);
+    const int right = this->BlurReach(x, y, 1, 0), left = this->BlurReach(x, y, -1, 0);
+    const int up = this->BlurReach(x, y, 0, 1), down = this->BlurReach(x, y, 0, -1);
     for (int k = 0; k < this->C; ++k)
     {
       const double c = this->V(x, y, k);
-      const double bx = (this->V(x - 2, y, k) + this->V(x - 1, y, k) + this->V(x + 1, y, k) +
-                          this->V(x + 2, y, k) + 2 * c) / 6;
-      const double by = (this->V(x, y - 2, k) + this->V(x, y - 1, k) + this->V(x, y + 1, k) +
-                          this->V(x, y + 2, k) + 2 * c) / 6;
+      const double bx =
+        (this->V(x - std::min(2, left), y, k) + this->V(x - std::min(1, left), y, k) +
+          this->V(x + std::min(1, right), y, k) + this->V(x + std::min(2, right), y, k) + 2 * c) /
+        6;
+      const double by =
+        (this->V(x, y - std::min(2, down), k) + this->V(x, y - std::min(1, down), k) +
+          this->V(x, y + std::min(1, up), k) + this->V(x, y + std::min(2, up), k) + 2 * c) /
+        6;
       const double h = c + (bx - c) * mx;
       out[k] = h + (by - h) * my / 2;
     }
@@ -108,15 +198,29 @@ struct Reference
     };
     const double tolerance = std::abs(at(0, -1) - at(0, 1)) / 2;
     auto same = [&](double u, double v) { return std::abs(u - v) <= tolerance; };
+    // The window also stops before a corner's side that the masks would see as an edge, and is
+    // empty where one lies next to the pixel.
+    const double sideContrast = this->SideContrast();
     int reach[2] = { 8, 8 };
+    bool cornerNext = false;
     for (int way = 0; way < 2; ++way)
     {
       double e[3] = { at(0, -1), at(0, 0), at(0, 1) };
       bool swapLeft = same(e[0], e[1]) != same(e[2], e[1]);
+      double row = e[1];
       for (int d = 1; d <= 8; ++d)
       {
         const int along = way ? -d : d;
         const double m[3] = { at(along, -1), at(along, 0), at(along, 1) };
+        const int sign = way ? -1 : 1;
+        if (m[1] != row &&
+          this->CornerSide(x, y, alongX ? sign : 0, alongX ? 0 : sign, d, sideContrast))
+        {
+          reach[way] = d - 1;
+          cornerNext = cornerNext || d == 1;
+          break;
+        }
+        row = m[1];
         if (same(m[0], e[0]) && same(m[2], e[2]))
         {
           continue;
@@ -140,7 +244,7 @@ struct Reference
         }
       }
     }
-    const int half = std::max(1, std::min(reach[0], reach[1]));
+    const int half = cornerNext ? 0 : std::max(1, std::min(reach[0], reach[1]));
     double t = 0;
     for (int d = -half; d <= half; ++d)
     {

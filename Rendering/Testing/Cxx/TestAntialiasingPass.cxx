@@ -35,9 +35,11 @@ void Scenes(const PassMethod& method, MessageObserver* messages)
   for (const std::string& name : vtkMLAAScenes::Names())
   {
     // An axis-aligned scene (the voxels, filling a 4:3 view) is rendered at 320 x 240, where its
-    // sides lie on pixel boundaries, 10 pixels apart: nothing is aliased, and MLAA leaves every
-    // pixel as rendered (issue 50), in single sample and with 4 samples. DLAA blurs every edge
-    // along itself, sides on boundaries too.
+    // sides lie on pixel boundaries, 10 pixels apart: nothing is aliased, and both methods leave
+    // the pixels as rendered (issue 50), in single sample and with 4 samples: MLAA every pixel
+    // exactly (it reads the sides as lines without steps); DLAA, whose blurs and long-edge
+    // windows stop at the sides of corners, none by more than 4/255 (a window may cross a
+    // junction of sides too faint for its masks: 1/255).
     const bool exact = vtkMLAAScenes::AxisAligned(name);
     SceneWindow scene(name, exact ? 320 : 300, exact ? 240 : 200);
     auto pass = method.Use(scene.Renderer);
@@ -47,12 +49,15 @@ void Scenes(const PassMethod& method, MessageObserver* messages)
     std::cout << name << ": " << c.Changed << " pixels changed, " << c.FlatChanged
               << " of them in flat regions" << std::endl;
     MLAA_CHECK(c.FlatChanged == 0);
-    if (exact && std::string(method.Name) == "vtkOpenGLMLAAPass")
+    if (exact)
     {
-      MLAA_CHECK(Compare(scene.Plain, result, 0.0).Count == 0);
+      const double tolerance = std::string(method.Name) == "vtkOpenGLMLAAPass" ? 0.0 : 4.0;
+      MLAA_CHECK(Compare(scene.Plain, result, tolerance).Count == 0);
       pass->SetMultiSamples(4);
-      const Difference sampled = Compare(scene.Plain, vtkMLAAScenes::Capture(scene.Window), 0.0);
-      std::cout << name << ", 4 samples: " << sampled.Pixels << " pixels changed" << std::endl;
+      const Difference sampled =
+        Compare(scene.Plain, vtkMLAAScenes::Capture(scene.Window), tolerance);
+      std::cout << name << ", 4 samples: " << sampled.Pixels << " pixels changed by more than "
+                << tolerance << "/255" << std::endl;
       MLAA_CHECK(sampled.Count == 0);
       continue;
     }

@@ -4,7 +4,8 @@
 // vtkOpenGLDLAAPass equals vtkImageDLAA run on the single-sample screenshot of the same scene
 // within 2/255 (on llvmpipe on every pixel; the check allows 0.1 % of the pixels, where another
 // driver's rounding may flip one of the method's thresholds: the ends of (0, 1] for k, the noise
-// rejection's Mx, My > 0), and the pass changes the image. Default options on every scene; on
+// rejection's Mx, My > 0), and the pass changes the image (but for the axis-aligned voxels, which
+// both leave as they are). Default options on every scene; on
 // a few scenes LongEdges off, the green luminosity and other thresholds; and with KeepAlpha the
 // RGBA result equals the filter on the RGBA screenshot. The windows are opaque ordinary windows
 // (the filter runs on the RGB screenshot); overlays are antialiased, as the filter sees them.
@@ -44,7 +45,10 @@ void CheckScene(const std::string& name, vtkDLAAOptions* options, const char* va
   }
   Check(d.Count >= 0 && share >= 0.999, (what + ": the pass equals vtkImageDLAA").c_str(),
     __FILE__, __LINE__);
-  Check(changed.Pixels > 50, (what + ": antialiased").c_str(), __FILE__, __LINE__);
+  // An axis-aligned scene (the voxels) has only sides on pixel borders, which end at the sides of
+  // corners: nothing changes there (issue 50); on every other scene the parity is not trivial.
+  Check(changed.Pixels > 50 || vtkMLAAScenes::AxisAligned(name),
+    (what + ": antialiased").c_str(), __FILE__, __LINE__);
 }
 }
 
