@@ -101,6 +101,8 @@
 #include "vtkFiltersMLAAModule.h" // For export macro
 #include "vtkObject.h"
 
+#include <cfloat> // For FLT_MAX
+
 class VTKFILTERSMLAA_EXPORT vtkDLAAOptions : public vtkObject
 {
 public:
@@ -119,6 +121,18 @@ public:
   static constexpr int LongEdgeRadius = 8;
   /** Pixels each way over which the side of a corner is followed (method step 3). */
   static constexpr int CornerSearch = 8;
+  /** Pixels, the first included, for which a side crossing a corner's side must go on (step 3). */
+  static constexpr int CornerCrossing = 4;
+
+  /**
+   * 2 epsilon / lambda as a float, the largest float where lambda is 0: the contrast at which the
+   * blend masks see an edge, above which a boundary may be the side of a corner (method step 3).
+   * Both back ends take it from here.
+   */
+  static float SideContrast(double epsilon, double lambda)
+  {
+    return lambda > 0.0 ? static_cast<float>(2.0 * epsilon / lambda) : FLT_MAX;
+  }
 
   ///@{
   /** Offset of the contrast curve of the blend masks. Default 0.1, range [0, 1]. */

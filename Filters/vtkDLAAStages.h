@@ -62,7 +62,7 @@ constexpr int LongEdgeRadius = vtkDLAAOptions::LongEdgeRadius;
 /** Pixels each way across a boundary over which CornerSide follows the side. */
 constexpr int CornerSearch = vtkDLAAOptions::CornerSearch;
 /** Pixels, the first included, for which a side crossing a corner's side at its end must go on. */
-constexpr int CornerCrossing = 4;
+constexpr int CornerCrossing = vtkDLAAOptions::CornerCrossing;
 /**
  * Output rows per task: each task also reads Halo() rows each side and computes my on
  * LongEdgeRadius rows each side (64 rows: 12 % slower at 1080p, one thread).
@@ -94,16 +94,8 @@ struct Settings
       reach + CornerCrossing - 1, CornerSearch + 1 });
   }
 
-  /**
-   * 2 Epsilon / Lambda: the smallest difference of luminosity across a side for which the blend
-   * masks see an edge (a step of that height gives the pixel beside it a high-pass of half of
-   * it); the largest float where Lambda is 0. As a float, as the pass's uniform.
-   */
-  float SideContrast() const
-  {
-    return this->Lambda > 0.0 ? static_cast<float>(2.0 * this->Epsilon / this->Lambda)
-                              : std::numeric_limits<float>::max();
-  }
+  /** vtkDLAAOptions::SideContrast of these settings. */
+  float SideContrast() const { return vtkDLAAOptions::SideContrast(this->Epsilon, this->Lambda); }
 };
 VTKFILTERSMLAA_EXPORT Settings MakeSettings(
   vtkDLAAOptions* options, int components, double lo, double hi);
@@ -175,7 +167,7 @@ inline Acc LuminosityMatch(Acc t, Acc lc, Acc ln)
  * cross a side that meets the edge at a corner (the end of a bar, a junction of voxels), they
  * bring the next shape's colour into a side that was exact. The accessor `at(d, i)` gives the
  * luminosity d pixels from the pixel along the blur (or the edge; d < 0 behind it) and i pixels
- * across. The pass's vtkDLAAFS.glsl computes the same.
+ * across. The pass's vtkDLAACornersFS.glsl computes the same, once a boundary.
  *
  * CrossingGoesOn: whether, d pixels along, the pixels i0 and i1 across differ and the pixels 1 to
  * CornerCrossing - 1 further along in the direction `away` (1 or -1) differ alike (each within

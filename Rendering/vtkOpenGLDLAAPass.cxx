@@ -22,7 +22,6 @@
 #include "vtkDLAATilesVS.h"
 
 #include <algorithm>
-#include <cfloat>
 #include <string>
 
 #include "vtkAntialiasingOpenGL.h" // For glDrawArraysInstanced (VTK has no instanced quad) and GL enums
@@ -168,11 +167,9 @@ bool vtkOpenGLDLAAPass::ComputeCorners(const Frame& frame)
   ScopedTextures textures(program, { { "colorTexture", this->ColorTexture } });
   program->SetUniformi("cornerSearch", vtkDLAAOptions::CornerSearch);
   program->SetUniformi("runEnds", 2);
-  program->SetUniformi("crossingLength", 4);
-  // 2 Epsilon / Lambda (vtkDLAAStages::Settings::SideContrast).
-  const double lambda = this->Options->GetLambda();
+  program->SetUniformi("crossingLength", vtkDLAAOptions::CornerCrossing);
   program->SetUniformf("sideContrast",
-    lambda > 0.0 ? static_cast<float>(2.0 * this->Options->GetEpsilon() / lambda) : FLT_MAX);
+    vtkDLAAOptions::SideContrast(this->Options->GetEpsilon(), this->Options->GetLambda()));
   TimedStage stage(frame.Window, "corners");
   if (tiled)
   {

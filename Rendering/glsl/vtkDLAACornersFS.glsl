@@ -7,13 +7,12 @@
 // DLAA, between its two passes: the sides of corners (vtkDLAAOptions, step 3; issue 50), into an
 // RGBA8 texture the size of the image, which vtkDLAAFS reads. For pixel p:
 //   r: the boundary between p and its right neighbour is the side of a corner;
-//   g: the boundary between p and the pixel above it is;
-//   b, a: the same, where the two colours also differ by more than `sideContrast` in some channel
-//   the luminosity reads (the sides that stop the long-edge window).
+//   g: the boundary between p and the pixel above it is.
 // The short-edge blur along an edge reads two pixels each way, the long-edge step a window of up
 // to 8; where they cross a side that meets the edge at a corner (the end of a bar, a junction of
 // voxels), they bring the next shape's colour into a side that was exact. A boundary is such a
-// side when the pair of luminosities it separates runs on across it for 4 pixels or more (within
+// side when its colours differ by more than `sideContrast` in some channel the luminosity reads,
+// the pair of luminosities it separates runs on across it for 4 pixels or more (within
 // half their difference, looked at up to 8 pixels each way) and, at each end within those 8, the
 // pair does not go on one pixel over (as a staircase's run goes on at each of its steps) and the
 // side crossing there goes on for 4 pixels (a shorter one, such as the end of a line one pixel
@@ -32,16 +31,17 @@
 in vec2 texCoord;
 
 uniform sampler2D colorTexture; // the delegate's image
-// 2 Epsilon / Lambda: the contrast at which the blend masks see an edge (a step of that height
-// gives the pixel beside it a high-pass of half of it).
+// vtkDLAAOptions::SideContrast: 2 Epsilon / Lambda, the contrast at which the blend masks see an
+// edge (a step of that height gives the pixel beside it a high-pass of half of it).
 uniform float sideContrast;
-// 8, 2 and 4, as uniforms: the GLSL compiler unrolls loops of a constant length, and llvmpipe, whose
-// branches run for every pixel shaded with this one, then runs all of their bodies; a loop with a
-// uniform bound ends as soon as none of those pixels needs it (most pixels have no boundary, and
-// most boundaries a run shorter than 4).
+// vtkDLAAOptions::CornerSearch (8), the 2 ends of a run, vtkDLAAOptions::CornerCrossing (4), as
+// uniforms: the GLSL compiler unrolls loops of a constant length, and llvmpipe, whose branches
+// run for every pixel shaded with this one, then runs all of their bodies; a loop with a uniform
+// bound ends as soon as none of those pixels needs it (most pixels have no boundary, and most
+// boundaries a run shorter than 4).
 uniform int cornerSearch;
 uniform int runEnds;
-uniform int crossingLength; // 4
+uniform int crossingLength;
 
 //VTK::DLAA::Luma
 
@@ -64,8 +64,9 @@ float lumaAt(ivec2 p, ivec2 along, ivec2 across, int d, int i)
 }
 
 // Whether, at d pixels along `along` from p, the pixels i0 and i1 across it differ and the pixels
-// one further along (d + away) differ from each other alike (within half the difference): a side
-// crossing the line between i0 and i1 that goes on for two pixels.
+// 1 to crossingLength - 1 further along (in the direction `away`) keep their luminosities within
+// half that difference: a side crossing the line between i0 and i1 that goes on for
+// crossingLength pixels.
 bool crossingGoesOn(ivec2 p, ivec2 along, ivec2 across, int d, int i0, int i1, int away)
 {
   float l0 = lumaAt(p, along, across, d, i0);
