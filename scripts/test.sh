@@ -17,31 +17,45 @@ source_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 quick=0
 [ "${1:-}" = "--quick" ] && quick=1
 
-"$source_dir/scripts/install-deps.sh"
+# Each stage's wall time, printed as it ends and again at the end, so that a slow run says where
+# its time went.
+stage_times=()
+stage() {
+  local name="$1" start=$SECONDS
+  shift
+  "$@"
+  stage_times+=("$(printf '%-28s %5d s' "$name" $((SECONDS - start)))")
+  echo "test: stage '$name' took $((SECONDS - start)) s"
+}
+
+stage install "$source_dir/scripts/install-deps.sh"
 jobs="$(nproc)"
 
-"$source_dir/scripts/build.sh" "$source_dir/build" -DBUILD_TESTING=ON
-(cd "$source_dir/build" &&
-  "$source_dir/scripts/with-xvfb.sh" ctest --output-on-failure --parallel "$jobs")
+stage build "$source_dir/scripts/build.sh" "$source_dir/build" -DBUILD_TESTING=ON
+cd "$source_dir/build"
+stage tests "$source_dir/scripts/with-xvfb.sh" ctest --output-on-failure --parallel "$jobs"
+cd "$source_dir"
 
 # The ParaView plugin (its own project; installs ParaView and unpacks its Python privately).
-"$source_dir/scripts/test-paraview.sh" "$source_dir/build"
+stage paraview-plugin "$source_dir/scripts/test-paraview.sh" "$source_dir/build"
 
 # The current stack, in its Debian testing root (made on first use: minutes and about 4 GB).
-"$source_dir/scripts/test-testing-root.sh"
+stage testing-root "$source_dir/scripts/test-testing-root.sh"
 
 if ((quick == 0)); then
-  "$source_dir/scripts/build.sh" "$source_dir/build-asan" -DBUILD_TESTING=ON \
+  stage asan-build "$source_dir/scripts/build.sh" "$source_dir/build-asan" -DBUILD_TESTING=ON \
     -DvtkMLAA_ENABLE_ASAN=ON
   # CMake gives each test its sanitizer environment (cmake/vtkMLAASanitizers.cmake). The
   # quality measurement (label benchmark-quality: T-AAR of rendered orbits) is left out: it adds
   # no code path that the pass's own tests do not run here.
-  (cd "$source_dir/build-asan" &&
-    "$source_dir/scripts/with-xvfb.sh" ctest --output-on-failure --parallel "$jobs" \
-      --label-exclude "package|benchmark-quality")
+  cd "$source_dir/build-asan"
+  stage asan-tests "$source_dir/scripts/with-xvfb.sh" ctest --output-on-failure --parallel "$jobs" \
+    --label-exclude "package|benchmark-quality"
+  cd "$source_dir"
 
   # A new corpus each time, in the build directory, where a finding's input stays to replay.
   rm -rf "$source_dir/build-fuzz/ci-run"
-  "$source_dir/scripts/fuzz.sh" "${MLAA_FUZZ_SECONDS:-90}" "$source_dir/build-fuzz/ci-run"
+  stage fuzz "$source_dir/scripts/fuzz.sh" "${MLAA_FUZZ_SECONDS:-90}" "$source_dir/build-fuzz/ci-run"
 fi
-echo "test: all tests passed"
+printf 'test: %s\n' "${stage_times[@]}"
+echo "test: all tests passed in $SECONDS s"
