@@ -103,6 +103,12 @@ bool vtkOpenGLDLAAPass::PrepareMethodTargets(const Frame& frame)
   }
   reallocated |= AllocateColorTarget(
     this->CornersTexture, frame.Width, frame.Height, 4, VTK_UNSIGNED_CHAR, false);
+  if (!this->CornersMask)
+  {
+    this->CornersMask = NewTexture(frame.Window);
+  }
+  reallocated |=
+    AllocateDepthTarget(this->CornersMask, frame.Width, frame.Height, vtkTextureObject::Fixed16);
   if (padding > 0)
   {
     if (!this->TilesTexture)
@@ -153,35 +159,65 @@ bool vtkOpenGLDLAAPass::ComputeMasks(const Frame& frame)
 //------------------------------------------------------------------------------
 bool vtkOpenGLDLAAPass::ComputeCorners(const Frame& frame)
 {
+  vtkOpenGLState* ostate = frame.Window->GetState();
   this->BeginWorkPass(frame.Window, this->CornersTexture, frame.Width, frame.Height);
-  // With long edges, only the squares of tiles near a mask other than 0 are drawn
-  // (vtkDLAATilesVS.glsl, two tiles around), over flags cleared to 0: pass 2 reads no others.
+  this->WorkFramebuffer->AddDepthAttachment(this->CornersMask);
+  // Two draws of vtkDLAACornersFS.glsl over flags and a depth mask cleared to 0: the candidates
+  // write the quad's depth (1/2), then the test runs with the quad at depth 0 tested LESS, on the
+  // candidates only. With long edges, only the squares of tiles near a mask other than 0 are
+  // drawn (vtkDLAATilesVS.glsl, two tiles around): pass 2 reads no others.
   const bool tiled = this->Options->GetLongEdges();
-  if (!this->ReadyQuad(frame.Window, this->CornersQuad, vtkDLAACornersFS,
-        Define("DLAA_LUMA", this->Options->GetLumaFunction()) + Define("DLAA_TILED", tiled),
-        tiled ? vtkDLAATilesVS : nullptr))
+  const std::string defines =
+    Define("DLAA_LUMA", this->Options->GetLumaFunction()) + Define("DLAA_TILED", tiled);
+  const char* vertexShader = tiled ? vtkDLAATilesVS : nullptr;
+  ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+  ostate->vtkglClearDepth(0.0);
+  ostate->vtkglDepthMask(GL_TRUE);
+  ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_ALWAYS);
+  ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  bool ready = this->DrawCorners(frame, this->CornerCandidatesQuad,
+    defines + Define("DLAA_CORNER_CANDIDATES", true), vertexShader, "corner candidates");
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  ostate->vtkglDepthMask(GL_FALSE);
+  ostate->vtkglDepthFunc(GL_LESS);
+  if (ready)
+  {
+    // (The depth range is not tracked by vtkOpenGLState: restored at once.)
+    glDepthRange(0.0, 0.0);
+    ready = this->DrawCorners(frame, this->CornersQuad, defines, vertexShader, "corners");
+    glDepthRange(0.0, 1.0);
+  }
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  this->WorkFramebuffer->RemoveDepthAttachment();
+  return ready;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLDLAAPass::DrawCorners(const Frame& frame, ShaderVariant& variant,
+  const std::string& defines, const char* vertexShader, const char* stageName)
+{
+  if (!this->ReadyQuad(frame.Window, variant, vtkDLAACornersFS, defines, vertexShader))
   {
     return false;
   }
-  vtkShaderProgram* program = this->CornersQuad.Quad->Program;
+  vtkShaderProgram* program = variant.Quad->Program;
   ScopedTextures textures(program, { { "colorTexture", this->ColorTexture } });
+  program->SetUniformf("sideContrast",
+    vtkDLAAOptions::SideContrast(this->Options->GetEpsilon(), this->Options->GetLambda()));
   program->SetUniformi("cornerSearch", vtkDLAAOptions::CornerSearch);
   program->SetUniformi("runEnds", 2);
   program->SetUniformi("crossingLength", vtkDLAAOptions::CornerCrossing);
-  program->SetUniformf("sideContrast",
-    vtkDLAAOptions::SideContrast(this->Options->GetEpsilon(), this->Options->GetLambda()));
-  TimedStage stage(frame.Window, "corners");
-  if (tiled)
+  TimedStage stage(frame.Window, stageName);
+  if (vertexShader)
   {
     textures.Bind(program, "tilesTexture", this->TilesTexture);
-    vtkOpenGLState* ostate = frame.Window->GetState();
-    ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
-    ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
-    DrawSquares(this->CornersQuad, frame, 2);
+    DrawSquares(variant, frame, 2);
   }
   else
   {
-    this->CornersQuad.Quad->Render();
+    variant.Quad->Render();
   }
   return true;
 }
@@ -288,19 +324,21 @@ void vtkOpenGLDLAAPass::ReleaseMethodResources(vtkWindow* w)
 {
   this->MasksQuad.Release(w);
   this->TilesQuad.Release(w);
+  this->CornerCandidatesQuad.Release(w);
   this->CornersQuad.Release(w);
   this->FilterQuad.Release(w);
   this->FilterTilesQuad.Release(w);
   DeleteObject(this->MasksTexture, w);
   DeleteObject(this->TilesTexture, w);
   DeleteObject(this->CornersTexture, w);
+  DeleteObject(this->CornersMask, w);
 }
 
 //------------------------------------------------------------------------------
 vtkIdType vtkOpenGLDLAAPass::GetDLAATargetMemorySize()
 {
   return TextureBytes(this->MasksTexture, 8) + TextureBytes(this->TilesTexture, 1) +
-    TextureBytes(this->CornersTexture, 4);
+    TextureBytes(this->CornersTexture, 4) + TextureBytes(this->CornersMask, 2);
 }
 
 //------------------------------------------------------------------------------

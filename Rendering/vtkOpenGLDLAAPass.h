@@ -125,8 +125,12 @@ private:
   // Pass 1 into MasksTexture, with LongEdges its tiles into TilesTexture, and the sides of
   // corners into CornersTexture.
   bool ComputeMasks(const Frame& frame);
-  // The sides of corners (vtkDLAACornersFS.glsl).
+  // The sides of corners (vtkDLAACornersFS.glsl): the candidates into CornersMask, then the test.
   bool ComputeCorners(const Frame& frame);
+  // One draw of vtkDLAACornersFS.glsl (`variant` built with `defines`), over squares when
+  // `vertexShader` (vtkDLAATilesVS) is given, else over the whole image; timed as `stageName`.
+  bool DrawCorners(const Frame& frame, ShaderVariant& variant, const std::string& defines,
+    const char* vertexShader, const char* stageName);
   // Which tiles of 8 x 8 masks hold a mask other than 0 (vtkDLAATilesFS.glsl).
   bool ComputeTiles(const Frame& frame);
   // Pass 2 into the target viewport.
@@ -138,8 +142,10 @@ private:
   vtkTextureObject* MasksTexture = nullptr;
   vtkTextureObject* TilesTexture = nullptr;
   vtkTextureObject* CornersTexture = nullptr; // RGBA8, the image's size
+  vtkTextureObject* CornersMask = nullptr;    // 16-bit depth: the candidates for the corners pass
   ShaderVariant MasksQuad;
   ShaderVariant TilesQuad;
+  ShaderVariant CornerCandidatesQuad;
   ShaderVariant CornersQuad;
   ShaderVariant FilterQuad;      // over the whole viewport
   ShaderVariant FilterTilesQuad; // in place with LongEdges: a quad per square of tiles

@@ -19,12 +19,19 @@
 // wide, is a step as well). The test is the same seen from either pixel. Exact texel reads,
 // clamped to the border: a boundary with the border is none.
 //
-// With long edges it is drawn only over the squares of tiles near a mask other than 0
-// (vtkDLAATilesVS, two tiles around), over flags cleared to 0: pass 2 reads no others.
+// Drawn twice, over flags cleared to 0 and a depth mask cleared to 0. First with
+// DLAA_CORNER_CANDIDATES: the pixels with a boundary the masks would see (the test's first step,
+// sideSeen) write the quad's depth, and the others are discarded. Then the whole test, tested
+// against that mask, runs on the candidates only: a rasteriser that shades pixels in groups in
+// lock-step (llvmpipe, which runs both sides of every branch for the group and ends no group on
+// a discard) skips the groups without a candidate before shading them, as the MLAA pass's change
+// mask does; most of a picture has none. With long edges both are drawn only over the squares of
+// tiles near a mask other than 0 (vtkDLAATilesVS, two tiles around): pass 2 reads no others.
 //
 // Compile-time variants (#defines prepended by vtkOpenGLDLAAPass):
-//   DLAA_LUMA   0 Rec. 709 luma, 1 green (vtkDLAAOptions::LumaFunction)
-//   DLAA_TILED  defined: drawn by squares (vtkDLAATilesVS), with long edges
+//   DLAA_LUMA               0 Rec. 709 luma, 1 green (vtkDLAAOptions::LumaFunction)
+//   DLAA_TILED              defined: drawn by squares (vtkDLAATilesVS), with long edges
+//   DLAA_CORNER_CANDIDATES  defined: the depth mask of candidates (no colour is written)
 //
 // Must match vtkDLAAStages::CornerSide.
 
@@ -112,19 +119,27 @@ bool endIsStep(ivec2 p, ivec2 along, ivec2 across, float lP, float lQ, float tol
     crossingGoesOn(p, along, across, 1, i - side, i, 1));
 }
 
-// Whether the boundary between p and p + along is the side of a corner: the run first (most
-// boundaries, the steps of staircases, are shorter than 4), then its ends within 8 pixels.
+// Whether the masks would see the boundary between colours a and b as an edge (false where a
+// value is not finite).
+bool sideSeen(vec4 a, vec4 b)
+{
+  return abs(luma(a) - luma(b)) > 0.0 && lumaChannelsContrast(a, b) > sideContrast;
+}
+
+// Whether the boundary between p and p + along is the side of a corner: a side the masks see,
+// then the run (most boundaries, the steps of staircases, are shorter than 4), then its ends
+// within 8 pixels.
 bool cornerSide(ivec2 p, ivec2 along, ivec2 across)
 {
   vec4 a = colorAt(p);
   vec4 b = colorAt(p + along);
+  if (!sideSeen(a, b))
+  {
+    return false;
+  }
   float lP = luma(a);
   float lQ = luma(b);
   float difference = abs(lP - lQ);
-  if (!(difference > 0.0) || !(lumaChannelsContrast(a, b) > sideContrast))
-  {
-    return false; // no side the masks would see (or a value that is not finite)
-  }
   float tolerance = 0.5 * difference;
   int ends[2];
   for (int n = 0; n < 2; ++n)
@@ -156,7 +171,16 @@ void main()
   ivec2 size = textureSize(colorTexture, 0);
   last = size - ivec2(1);
   ivec2 p = ivec2(texCoord * vec2(size));
+#ifdef DLAA_CORNER_CANDIDATES
+  vec4 c = colorAt(p);
+  if (!sideSeen(c, colorAt(p + ivec2(1, 0))) && !sideSeen(c, colorAt(p + ivec2(0, 1))))
+  {
+    discard;
+  }
+  gl_FragData[0] = vec4(0.0); // (colour writes are off)
+#else
   bool right = cornerSide(p, ivec2(1, 0), ivec2(0, 1));
   bool up = cornerSide(p, ivec2(0, 1), ivec2(1, 0));
   gl_FragData[0] = vec4(right ? 1.0 : 0.0, up ? 1.0 : 0.0, 0.0, 0.0);
+#endif
 }

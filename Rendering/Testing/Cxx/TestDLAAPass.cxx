@@ -23,16 +23,17 @@ int TestDLAAPass(int, char*[])
   messages->Watch(pass);
   MLAA_CHECK(pass->GetTargetMemorySize() == 0);
   auto defaults = vtkMLAAScenes::Capture(scene.Window);
-  // Masks (8 bytes, 8 pixels of padding each side), tiles and the sides of corners (RGBA8).
-  MLAA_CHECK(pass->GetDLAATargetMemorySize() == 316 * 216 * 8 + 40 * 27 + 300 * 200 * 4);
-  MLAA_CHECK(pass->GetTargetMemorySize() == 316 * 216 * 8 + 40 * 27 + 2 * 300 * 200 * 4);
+  // Masks (8 bytes, 8 pixels of padding each side), tiles, the sides of corners (RGBA8) and
+  // their candidates (16-bit depth).
+  MLAA_CHECK(pass->GetDLAATargetMemorySize() == 316 * 216 * 8 + 40 * 27 + 300 * 200 * 6);
+  MLAA_CHECK(pass->GetTargetMemorySize() == 316 * 216 * 8 + 40 * 27 + 300 * 200 * (6 + 4));
 
   pass->GetOptions()->SetLambda(0.0);
   MLAA_CHECK(Compare(scene.Plain, vtkMLAAScenes::Capture(scene.Window), 0.0).Count == 0);
   pass->GetOptions()->SetLambda(3.0);
   pass->GetOptions()->LongEdgesOff();
   auto shortOnly = vtkMLAAScenes::Capture(scene.Window);
-  MLAA_CHECK(pass->GetDLAATargetMemorySize() == 300 * 200 * (8 + 4)); // no padding, no tiles
+  MLAA_CHECK(pass->GetDLAATargetMemorySize() == 300 * 200 * (8 + 6)); // no padding, no tiles
   const Difference longEdges = Compare(defaults, shortOnly, 0.0);
   std::cout << "LongEdges off changes " << longEdges.Pixels << " pixels" << std::endl;
   MLAA_CHECK(longEdges.Pixels > 20);
@@ -51,7 +52,7 @@ int TestDLAAPass(int, char*[])
 
   scene.Window->SetSize(321, 243);
   auto resized = vtkMLAAScenes::Capture(scene.Window);
-  MLAA_CHECK(pass->GetDLAATargetMemorySize() == 337 * 259 * 8 + 43 * 33 + 321 * 243 * 4);
+  MLAA_CHECK(pass->GetDLAATargetMemorySize() == 337 * 259 * 8 + 43 * 33 + 321 * 243 * 6);
   pass->ReleaseGraphicsResources(scene.Window);
   MLAA_CHECK(pass->GetTargetMemorySize() == 0);
   MLAA_CHECK(Compare(resized, vtkMLAAScenes::Capture(scene.Window), 0.0).Count == 0);
