@@ -334,36 +334,29 @@ void main()
   vec4 motionFrame = c; // (DLAA_MOTION_FRAME) no short-edge blur
 
 #ifdef DLAA_LONG_EDGES
-  // Long edges, unless both directions have one (noise, texture).
-  if (longX > 0.0 && !(longY > 0.0))
+  // Long edges, unless both directions have one (noise, texture). One code path for either
+  // direction: llvmpipe runs every branch that a pixel of its group takes, so two branches, one
+  // a direction, would each cost every group with a long edge.
+  if ((longX > 0.0) != (longY > 0.0))
   {
-    int h = stepHalfLength(p, ivec2(1, 0), ivec2(0, 1));
+    bool horizontal = longX > 0.0; // the edge runs along x
+    ivec2 along = horizontal ? ivec2(1, 0) : ivec2(0, 1);
+    ivec2 across = horizontal ? ivec2(0, 1) : ivec2(1, 0);
+    float longMask = horizontal ? longX : longY;
+    int h = stepHalfLength(p, along, across);
     vec4 sum = vec4(0.0);
     for (int i = -h; i <= h; ++i)
     {
-      sum += colorAt(p + ivec2(i, 0));
+      sum += colorAt(p + i * along);
     }
-    vec4 stepped = towards(c, above, below, luma(sum / float(2 * h + 1)));
+    // Towards the neighbour across the edge: above or below, left or right.
+    vec4 stepped = towards(c, horizontal ? above : left, horizontal ? below : right,
+      luma(sum / float(2 * h + 1)));
 #ifdef DLAA_NO_SHORT_EDGES
-    stepped = stepped == c || stepSeen(p, ivec2(1, 0), ivec2(0, 1), h) ? stepped : c;
+    stepped = stepped == c || stepSeen(p, along, across, h) ? stepped : c;
 #endif
-    result = mix(result, stepped, longX);
-    motionFrame = mix(motionFrame, stepped, longX);
-  }
-  else if (longY > 0.0 && !(longX > 0.0))
-  {
-    int h = stepHalfLength(p, ivec2(0, 1), ivec2(1, 0));
-    vec4 sum = vec4(0.0);
-    for (int i = -h; i <= h; ++i)
-    {
-      sum += colorAt(p + ivec2(0, i));
-    }
-    vec4 stepped = towards(c, left, right, luma(sum / float(2 * h + 1)));
-#ifdef DLAA_NO_SHORT_EDGES
-    stepped = stepped == c || stepSeen(p, ivec2(0, 1), ivec2(1, 0), h) ? stepped : c;
-#endif
-    result = mix(result, stepped, longY);
-    motionFrame = mix(motionFrame, stepped, longY);
+    result = mix(result, stepped, longMask);
+    motionFrame = mix(motionFrame, stepped, longMask);
   }
 #endif
 
