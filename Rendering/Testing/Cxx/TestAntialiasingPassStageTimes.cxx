@@ -107,7 +107,8 @@ int TestAntialiasingPassStageTimes(int, char*[])
     const std::vector<std::string> methodStages = mlaa
       ? std::vector<std::string>{ "change mask", "edges", "local contrast", "blending weights",
           "neighbourhood blending" }
-      : std::vector<std::string>{ "edge masks", "mask tiles", "filter" };
+      : std::vector<std::string>{ "edge masks", "mask tiles", "corner candidates", "corners",
+          "filter" };
     for (const std::string& stage : methodStages)
     {
       expected.insert("antialiasing/" + stage);
