@@ -56,8 +56,8 @@
  *    The reach also stops before the first place along the edge where the pixel's row changes
  *    luminosity across the side of a corner (3, below). Where that side is next to the pixel,
  *    h = 0 (the mean of the pixel alone: q = c).
- * 3. The side of a corner (issue 50). A boundary between two pixels a and b next to each other along a
- *    direction (the blur's, or the edge's) separates luminosities l(a) and l(b); with
+ * 3. The side of a corner (issue 50). A boundary between two pixels a and b next to each other
+ *    along a direction (the blur's, or the edge's) separates luminosities l(a) and l(b); with
  *    tolerance half their difference, the pair goes on across that direction as far as the
  *    pixels beside a and b keep l(a) and l(b) within the tolerance (followed up to
  *    CornerSearch = 8 pixels each way). The boundary is the side of a corner when l(a) and l(b)
@@ -65,7 +65,8 @@
  *    l reads (the contrast at which the masks see an edge: a step of that height gives the pixel
  *    beside it a high-pass of half of it; in colour, since voxels of different colours may have
  *    nearly the same luminosity; fainter boundaries, such as the bands of flat shading along a
- *    silhouette, are none); the pair goes on for 4 pixels or more in all (a and b included); and
+ *    silhouette, are none); the pair goes on for CornerRun = 4 pixels or more in all (a and b
+ *    included); and
  *    at each end where it stops within the 8 pixels: the pair does not go on one pixel over
  *    along the direction (one pixel further or back: a staircase's run goes on so at each of
  *    its steps); on a's side or on
@@ -123,6 +124,8 @@ public:
   static constexpr int CornerSearch = 8;
   /** Pixels, the first included, for which a side crossing a corner's side must go on (step 3). */
   static constexpr int CornerCrossing = 4;
+  /** Pixels, both of the boundary's included, for which a corner's side must go on (step 3). */
+  static constexpr int CornerRun = 4;
 
   /**
    * 2 epsilon / lambda as a float, the largest float where lambda is 0: the contrast at which the

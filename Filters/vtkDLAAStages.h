@@ -63,6 +63,8 @@ constexpr int LongEdgeRadius = vtkDLAAOptions::LongEdgeRadius;
 constexpr int CornerSearch = vtkDLAAOptions::CornerSearch;
 /** Pixels, the first included, for which a side crossing a corner's side at its end must go on. */
 constexpr int CornerCrossing = vtkDLAAOptions::CornerCrossing;
+/** Pixels, the boundary's included, for which a corner's side must go on. */
+constexpr int CornerRun = vtkDLAAOptions::CornerRun;
 /**
  * Output rows per task: each task also reads Halo() rows each side and computes my on
  * LongEdgeRadius rows each side (64 rows: 12 % slower at 1080p, one thread).
@@ -203,8 +205,8 @@ inline bool CrossingGoesOn(const Luma& at, int d, int i0, int i1, int away)
  * (`contrast(d0, d1)`: the largest difference of those channels between the pixels d0 and d1
  * along), and
  * the pair goes on across (each within half their difference; followed up to CornerSearch pixels
- * each way) for 4 pixels or more, and at each end where it stops, it neither goes on one pixel
- * over along the blur (as a staircase's run goes on at its steps) nor meets a crossing side
+ * each way) for CornerRun pixels or more, and at each end where it stops, it neither goes on one
+ * pixel over along the blur (as a staircase's run goes on at its steps) nor meets a crossing side
  * shorter than CornerCrossing pixels (a crossing one pixel long is the end of a line one pixel
  * wide, a step as well). A luminosity that is not finite at an end makes it a step.
  */
@@ -249,7 +251,7 @@ inline bool CornerSide(const Luma& at, const Contrast& contrast, int k, Acc mini
       }
     }
   }
-  return run >= 4;
+  return run >= CornerRun;
 }
 
 /**
@@ -586,7 +588,8 @@ void RunSlice(const SliceSetup& setup, const T* input, vtkIdType inputRowStride,
     // longRadius rows each side of the band; mx (a horizontal edge: blur along x) on the band's
     // rows and longRadius columns each side of the output.
     const int myRows = bandRows + 2 * longRadius; // my row m is band row j = m + halo - longRadius
-    const int mxWidth = width + 2 * longRadius; // mx column m is padded column i = m + halo - longRadius
+    // mx column m is padded column i = m + halo - longRadius
+    const int mxWidth = width + 2 * longRadius;
     // The numerators of the masks at padded column i of row j: Lambda l(Hx) - Epsilon and
     // Lambda l(Hy) - Epsilon, l(H) summed as 0 + t0 + t1 + ... (AddTerms).
     auto xTerm = [](const Acc* ck, int i, Acc w) {

@@ -209,6 +209,7 @@ bool vtkOpenGLDLAAPass::DrawCorners(const Frame& frame, ShaderVariant& variant,
   program->SetUniformi("cornerSearch", vtkDLAAOptions::CornerSearch);
   program->SetUniformi("runEnds", 2);
   program->SetUniformi("crossingLength", vtkDLAAOptions::CornerCrossing);
+  program->SetUniformi("cornerRun", vtkDLAAOptions::CornerRun);
   TimedStage stage(frame.Window, stageName);
   if (vertexShader)
   {

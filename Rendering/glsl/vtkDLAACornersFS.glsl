@@ -12,7 +12,7 @@
 // to 8; where they cross a side that meets the edge at a corner (the end of a bar, a junction of
 // voxels), they bring the next shape's colour into a side that was exact. A boundary is such a
 // side when its colours differ by more than `sideContrast` in some channel the luminosity reads,
-// the pair of luminosities it separates runs on across it for 4 pixels or more (within
+// the pair of luminosities it separates runs on across it for cornerRun (4) pixels or more (within
 // half their difference, looked at up to 8 pixels each way) and, at each end within those 8, the
 // pair does not go on one pixel over (as a staircase's run goes on at each of its steps) and the
 // side crossing there goes on for 4 pixels (a shorter one, such as the end of a line one pixel
@@ -49,6 +49,7 @@ uniform float sideContrast;
 uniform int cornerSearch;
 uniform int runEnds;
 uniform int crossingLength;
+uniform int cornerRun; // vtkDLAAOptions::CornerRun (4): the shortest run of a corner's side
 
 //VTK::DLAA::Luma
 
@@ -156,7 +157,7 @@ bool cornerSide(ivec2 p, ivec2 along, ivec2 across)
     }
     ends[n] = end;
   }
-  bool corner = ends[0] + ends[1] - 1 >= 4; // (a run of 1 to 3 pixels is none)
+  bool corner = ends[0] + ends[1] - 1 >= cornerRun;
   for (int n = 0; corner && n < runEnds; ++n)
   {
     int side = 2 * n - 1;
