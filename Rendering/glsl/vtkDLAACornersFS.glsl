@@ -53,7 +53,9 @@ uniform int cornerRun; // vtkDLAAOptions::CornerRun (4): the shortest run of a c
 
 //VTK::DLAA::Luma
 
-ivec2 last;
+// The last pixel of the image, set by main before any read. (Initialised here only so that
+// compilers that check globals in source order, as Mesa's does, see it set.)
+ivec2 last = ivec2(0);
 
 vec4 colorAt(ivec2 q)
 {

@@ -49,7 +49,9 @@ uniform int padding;
 uniform sampler2D cornersTexture; // the sides of corners (vtkDLAACornersFS)
 //VTK::DLAA::Luma
 
-ivec2 last;
+// The last pixel of the image, set by main before any read. (Initialised here only so that
+// compilers that check globals in source order, as Mesa's does, see it set.)
+ivec2 last = ivec2(0);
 
 vec4 colorAt(ivec2 q)
 {

@@ -89,7 +89,9 @@ uniform sampler2D staircaseCountsTexture;
 const int maxSearchSteps = MLAA_MAX_SEARCH_STEPS;
 const int cellSize = 2 * MLAA_MAX_SEARCH_STEPS + 1; // D, the area texture's cell size
 
-vec2 edgesSize;
+// The edges texture's size, set by main before any read. (Initialised here only so that
+// compilers that check globals in source order, as Mesa's does, see it set.)
+vec2 edgesSize = vec2(0.0);
 
 // Bilinear read of the edges texture at a position in texels (texel i covers [i, i + 1]). At
 // level 0 explicitly: the reads are made in loops and branches that differ between neighbouring

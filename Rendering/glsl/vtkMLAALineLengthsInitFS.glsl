@@ -48,7 +48,9 @@ in vec2 texCoord;
 
 uniform sampler2D edgesTexture; // RG8, red = left edgel, green = top edgel (texelFetch only)
 
-ivec2 size;
+// The edges texture's size, set by main before any read. (Initialised here only so that
+// compilers that check globals in source order, as Mesa's does, see it set.)
+ivec2 size = ivec2(0);
 
 vec2 edgelsAt(ivec2 p)
 {
