@@ -149,6 +149,20 @@ inline vtkIdType TextureBytes(vtkTextureObject* texture, int bytesPerTexel)
     : 0;
 }
 
+// The start of a depth mask in the bound framebuffer (the MLAA pass's change mask, the DLAA
+// pass's corner candidates): colour and depth cleared to 0, then the depth test on with ALWAYS
+// and depth writes, so that the fragments a marking draw keeps write their depth and the others
+// leave 0. A later draw tested LESS with the quad at depth 0 then shades the marked pixels only.
+inline void BeginDepthMask(vtkOpenGLState* ostate)
+{
+  ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+  ostate->vtkglClearDepth(0.0);
+  ostate->vtkglDepthMask(GL_TRUE);
+  ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_ALWAYS);
+}
+
 // The state for writing a result into the target's viewport (x, y, width, height): colour writes
 // on; with `over`, premultiplied "over" blending (result + (1 - its alpha) * what lower layers
 // drew: where the renderer drew nothing, transparent black, the framebuffer keeps its pixels

@@ -170,12 +170,7 @@ bool vtkOpenGLDLAAPass::ComputeCorners(const Frame& frame)
   const std::string defines =
     Define("DLAA_LUMA", this->Options->GetLumaFunction()) + Define("DLAA_TILED", tiled);
   const char* vertexShader = tiled ? vtkDLAATilesVS : nullptr;
-  ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
-  ostate->vtkglClearDepth(0.0);
-  ostate->vtkglDepthMask(GL_TRUE);
-  ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  ostate->vtkglEnable(GL_DEPTH_TEST);
-  ostate->vtkglDepthFunc(GL_ALWAYS);
+  BeginDepthMask(ostate);
   ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   bool ready = this->DrawCorners(frame, this->CornerCandidatesQuad,
     defines + Define("DLAA_CORNER_CANDIDATES", true), vertexShader, "corner candidates");

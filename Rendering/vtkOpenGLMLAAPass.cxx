@@ -229,12 +229,7 @@ bool vtkOpenGLMLAAPass::ComputeEdgesAndWeights(
     // or upper neighbour write depth 1, the others keep 0 (with `markBlended`, those that differ
     // from their right or lower neighbour only write 1/4: the blending may change them, and
     // the edge detection finds nothing there).
-    ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
-    ostate->vtkglClearDepth(0.0);
-    ostate->vtkglDepthMask(GL_TRUE);
-    ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    ostate->vtkglEnable(GL_DEPTH_TEST);
-    ostate->vtkglDepthFunc(GL_ALWAYS);
+    BeginDepthMask(ostate);
     // The mask compares whole pixels (and depths in depth mode): neither alpha's part nor the
     // threshold and Lab's table matter to it.
     if (!this->ReadyQuad(renWin, this->ChangeMaskQuad, vtkMLAAEdgeDetectionFS,
