@@ -18,8 +18,10 @@
 //   and the pass itself (replaced, removed, set again) change at random, in four rounds of 500
 //   that make the same changes; after each render, no GL error; after each round the same
 //   configuration is rendered, and the pass's GetTargetMemorySize must not grow by more than 1 MB
-//   over the last two rounds, nor resident memory by more than 1 MB in the smaller of the last two
-//   rounds' growths (a leak grows in each);
+//   over the last two rounds, nor resident memory by more than 256 kB over them where the driver's
+//   own memory is steady (llvmpipe drawing in the calling thread: CTest sets LP_NUM_THREADS=0),
+//   or elsewhere by more than 1 MB in the smaller of the last two rounds' growths (a leak grows
+//   in each);
 // - shared: one pass set on the renderers of two windows showing the same scene, rendered in
 //   turn: each window's image equals that of a pass of its own, exactly, in every mode but
 //   temporal (whose history a shared pass restarts at each switch of window);
@@ -30,7 +32,7 @@
 // Every message that VTK prints (any object, destructors included) fails the case.
 #include "vtkAntialiasingRenderTestUtilities.h"
 
-#include "vtkAntialiasingOpenGL.h" // For glGetError
+#include "vtkAntialiasingOpenGL.h" // For glGetError, glGetString
 #include "vtkMLAAOptions.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOutputWindow.h"
@@ -41,6 +43,7 @@
 #include <malloc.h> // For malloc_trim
 #endif
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -122,6 +125,19 @@ void RenderChecked(vtkRenderWindow* window, const std::string& when)
     ++errors;
   }
   Check(errors == 0, ("no GL error, " + when).c_str(), __FILE__, __LINE__);
+}
+
+// Whether the driver's own memory is steady from one reading to the next: llvmpipe drawing in
+// the calling thread (LP_NUM_THREADS=0). Its rasterizer threads otherwise keep pools of scene
+// memory whose size at a reading depends on their timing: readings after rounds of the same
+// renders then differ by up to 4 MB either way, with no trend over 12,000 renders (VTK 9.6, EGL;
+// the same kind of steps on Debian 12). In the calling thread they repeat within 50 kB.
+bool SteadyDriverMemory(vtkRenderWindow* window)
+{
+  window->MakeCurrent();
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const char* threads = std::getenv("LP_NUM_THREADS");
+  return renderer && std::strstr(renderer, "llvmpipe") && threads && std::strcmp(threads, "0") == 0;
 }
 
 // The modes of PassMethods()'s passes that the cases cycle through.
@@ -354,11 +370,22 @@ void Session(RecordingOutputWindow* output, int renders)
   }
   std::cout << "; over the second half " << resident[4] - resident[2] << " kB; targets "
             << targets[1] << " -> " << targets[3] << " bytes" << std::endl;
-  // What leaks grows in every round alike; a table or pool that grows to its size once does not
-  // grow again (steps of 1.5 to 3 MB, in one round only, are seen in some runs, on VTK 9.1 and
-  // 9.6 alike, not traced): the smaller growth of the last two rounds must be within 1 MB.
-  CheckGrowth(std::min(resident[3] - resident[2], resident[4] - resident[3]), 1024,
-    "resident memory in each of the last two rounds");
+  if (SteadyDriverMemory(window))
+  {
+    // Every round renders the same: a leak of 128 bytes a render grows the last two rounds by
+    // 128 kB (readings on llvmpipe in one thread: 24 to 44 kB over them, Debian 12 and VTK 9.6).
+    CheckGrowth(resident[4] - resident[2], 256, "resident memory over the last two rounds");
+  }
+  else
+  {
+    // What leaks grows in every round alike; the driver's pools, whose size varies with timing
+    // (see SteadyDriverMemory), step up and down by 1 to 2 MB: the smaller growth of the last
+    // two rounds must be within 1 MB.
+    std::cout << "(the driver's memory is not known to be steady here: the looser check)"
+              << std::endl;
+    CheckGrowth(std::min(resident[3] - resident[2], resident[4] - resident[3]), 1024,
+      "resident memory in each of the last two rounds");
+  }
   MLAA_CHECK(targets[3] - targets[1] <= 1024 * 1024);
   MLAA_CHECK(targets[1] > 0);
   // Nothing is printed (samples and temporal combine).
