@@ -360,20 +360,20 @@ private:
   // is the side of a shape that shows no step of a staircase, and is left alone. The area table
   // reads every crossing edge on one side of an end as a one-pixel step (section 4.3.2). At a
   // corner of a shape (CornerEnd, and not CrossingEndsInStep) it is not: the crossing edge is a
-  // side of its own; nor is the end of a bar one pixel wide (ThinEnd: an axis-aligned line, a tick,
-  // a chart's axis). Where the other end is no step either (a corner or a bar's end too, a junction
-  // of wider shapes, the image border, no crossing edge, or beyond the search's reach), nothing
-  // seen tells that the side leaves the pixel boundary, and the chapter's U, Z or L ramp from the
-  // corner would blur a side that is right (axis-aligned rectangles, voxels seen straight on, bars,
-  // legends, viewport borders). A side whose true course is a fraction of a pixel off the boundary
-  // looks the same, and no reading of these pixels tells which way it is off: no ramp is also the
-  // estimate of an offset equally likely either way. A line of one pixel keeps the chapter's
-  // reading (the Z of a step of the staircase across it, the U of a one-pixel bar's end), and so
-  // does a small shape: a side shorter than MinimumSideLength (within the reach: an end beyond it
-  // makes the side longer than the search sees) whose corners' sides are that short too, a rendered
-  // point of 2 or 3 pixels, which the U shapes round as its supersampled image is; small cells of a
-  // grid (voxels of 2 or 3 pixels) have sides that run on past their corners. A corner at one end
-  // and a step at the other keeps the chapter's reading (or CornerExtrapolation's).
+  // side of its own. Where the other end is no step either (a corner too, a junction of wider
+  // shapes, the image border, no crossing edge, or beyond the search's reach), nothing seen
+  // tells that the side leaves the pixel
+  // boundary, and the chapter's U, Z or L ramp from the corner would blur a side that is right
+  // (axis-aligned rectangles, voxels seen straight on, bars, legends, viewport borders). A side
+  // whose true course is a fraction of a pixel off the boundary looks the same, and no reading
+  // of these pixels tells which way it is off: no ramp is also the estimate of an offset equally
+  // likely either way. A line of one pixel keeps the chapter's reading (the Z of a step of the
+  // staircase across it, the U of a one-pixel bar's end), and so does a small shape: a side
+  // shorter than MinimumSideLength (within the reach: an end beyond it makes the side longer
+  // than the search sees) whose corners' sides are that short too, a rendered point of 2 or 3
+  // pixels, which the U shapes round as its supersampled image is; small cells of a grid (voxels
+  // of 2 or 3 pixels) have sides that run on past their corners. A corner at one end and a step
+  // at the other keeps the chapter's reading (or CornerExtrapolation's).
   // Must match sideWithoutSteps in vtkMLAABlendingWeightsFS.glsl.
   static constexpr int MinimumSideLength = 4;
   template <bool V>
@@ -384,18 +384,12 @@ private:
     {
       return false;
     }
-    const bool thin1 = this->ThinEnd(l, -1, e1, d1);
-    const bool thin2 = this->ThinEnd(l, +1, e2, d2);
-    const bool corner1 = thin1 || this->CornerEnd(l, -1, e1, d1);
-    const bool corner2 = thin2 || this->CornerEnd(l, +1, e2, d2);
+    const bool corner1 = this->CornerEnd(l, -1, e1, d1);
+    const bool corner2 = this->CornerEnd(l, +1, e2, d2);
     if (!((corner1 || corner2) && (corner1 || e1 == 0 || this->WideJunction(l, -1, e1, d1)) &&
           (corner2 || e2 == 0 || this->WideJunction(l, +1, e2, d2))))
     {
       return false;
-    }
-    if (thin1 || thin2)
-    {
-      return length >= MinimumSideLength; // a bar's crossing edge is one pixel: no run to follow
     }
     int run1 = 0, run2 = 0;
     if ((corner1 && this->CrossingEndsInStep(l, -1, e1, d1, run1)) ||
@@ -424,47 +418,6 @@ private:
     const int crossing = s < 0 ? beyond + 1 : beyond;
     return !this->AlongInside(l, beyond, code == 3 ? -1 : 1) &&
       this->CrossingGoesOn(l, crossing, 0, code);
-  }
-
-  // Whether the end of l's line in direction s, `distance` pixels away with crossing code `code`,
-  // is the end of a bar one pixel wide: a crossing edge on one side only (1 or 3) that is one
-  // pixel long, beyond which the bar's other side comes back alongside the line (an edgel one
-  // row, or column, over at the line's last pixel), and no edgel along the line in the bar's row
-  // (column) or either next to it for ThinEndGap pixels past the end. The chapter reads such an
-  // end as a step of a staircase. A slanted line one pixel thin has its next run just past the
-  // step, one row over; one thinner than a pixel breaks into dashes, and its next dash lies past
-  // a gap, in the same row or the next (the `thin` scene's sub-pixel tubes and power lines,
-  // whose AAR fell from 0.652 to 0.572 when only the pixel just past the end was looked at).
-  // With nothing there, the end is that of an axis-aligned line, a tick or a bar chart's
-  // one-pixel axis: a corner of a shape as CornerEnd's are (issue 50). Edgels outside the image
-  // are none. Must match thinEnd in vtkMLAABlendingWeightsFS.glsl.
-  static constexpr int ThinEndGap = 8;
-  template <bool V>
-  bool ThinEnd(const Line<V>& l, int s, int code, int distance) const
-  {
-    if (code != 1 && code != 3)
-    {
-      return false;
-    }
-    const int beyond = s * (distance + 1); // the pixel just past the end
-    const int crossing = s < 0 ? beyond + 1 : beyond;
-    const int side = code == 3 ? -1 : 1; // where the bar's other side lies
-    if (this->AlongInside(l, beyond, side) || this->CrossingGoesOn(l, crossing, 0, code) ||
-      !this->AlongInside(l, s * distance, side))
-    {
-      return false;
-    }
-    for (int k = 1; k <= ThinEndGap; ++k)
-    {
-      for (int v = -1; v <= 1; ++v)
-      {
-        if (this->AlongInside(l, s * (distance + k), v))
-        {
-          return false;
-        }
-      }
-    }
-    return true;
   }
 
   // Whether the crossing edge of such a corner, followed away from the line within the search's

@@ -393,38 +393,6 @@ bool cornerEnd(ivec2 p, bool vertical, int s, int code, int distance)
     crossingGoesOn(p, vertical, crossing, 0, code);
 }
 
-// Whether that end is the end of a bar one pixel wide: a crossing edge on one side only, one
-// pixel long, the bar's other side alongside the line at its last pixel, and no line along the
-// bar's row (column) or either next to it for ThinEndGap pixels past the end (the next run of a
-// slanted thin line, or its next dash). Issue 50; WeightsComputer::ThinEnd.
-const int thinEndGap = 8; // WeightsComputer::ThinEndGap
-bool thinEnd(ivec2 p, bool vertical, int s, int code, int distance)
-{
-  if (code != 1 && code != 3)
-  {
-    return false;
-  }
-  int beyond = s * (distance + 1);
-  int crossing = s < 0 ? beyond + 1 : beyond;
-  int side = code == 3 ? -1 : 1;
-  if (alongAt(p, vertical, beyond, side) || crossingGoesOn(p, vertical, crossing, 0, code) ||
-    !alongAt(p, vertical, s * distance, side))
-  {
-    return false;
-  }
-  // Nothing goes on within the gap past the end: a dash of a thin line broken into dashes has
-  // its next dash there.
-  for (int k = 1; k <= thinEndGap; ++k)
-  {
-    int u = s * (distance + k);
-    if (alongAt(p, vertical, u, -1) || alongAt(p, vertical, u, 0) || alongAt(p, vertical, u, 1))
-    {
-      return false;
-    }
-  }
-  return true;
-}
-
 // Whether a run of crossing edgels of the pixels at u = crossing begins at v, where the run one
 // column (row) over ended, for two pixels or more away from the line: none at v - away, beside
 // that run (WeightsComputer::CrossingEndsInStep).
@@ -465,10 +433,10 @@ bool wideJunction(ivec2 p, bool vertical, int s, int code, int distance)
 }
 
 // Whether p's line is the side of a shape that shows no step of a staircase (a shape shorter than
-// four pixels in both directions, a rendered point, excepted): a corner or a one-pixel bar's end
-// (thinEnd) at one end, and no step at the other (a corner, a bar's end, a junction of wider
-// shapes, the image border, no crossing edge, or beyond the reach). It is left alone: nothing
-// seen tells that it leaves the pixel boundary (issue 50; WeightsComputer::SideWithoutSteps).
+// four pixels in both directions, a rendered point, excepted): a corner at one end, and no step
+// at the other (a corner, a junction of wider shapes, the image border, no crossing edge, or
+// beyond the reach). It is left alone: nothing seen tells that it leaves the pixel boundary
+// (issue 50; WeightsComputer::SideWithoutSteps).
 bool sideWithoutSteps(ivec2 p, bool vertical, int e1, int e2, int d1, int d2)
 {
   int length = d1 + d2 + 1;
@@ -476,18 +444,12 @@ bool sideWithoutSteps(ivec2 p, bool vertical, int e1, int e2, int d1, int d2)
   {
     return false; // a step of the staircase across it, or the end of a one-pixel bar
   }
-  bool thin1 = thinEnd(p, vertical, -1, e1, d1);
-  bool thin2 = thinEnd(p, vertical, 1, e2, d2);
-  bool corner1 = thin1 || cornerEnd(p, vertical, -1, e1, d1);
-  bool corner2 = thin2 || cornerEnd(p, vertical, 1, e2, d2);
+  bool corner1 = cornerEnd(p, vertical, -1, e1, d1);
+  bool corner2 = cornerEnd(p, vertical, 1, e2, d2);
   if (!((corner1 || corner2) && (corner1 || e1 == 0 || wideJunction(p, vertical, -1, e1, d1)) &&
         (corner2 || e2 == 0 || wideJunction(p, vertical, 1, e2, d2))))
   {
     return false;
-  }
-  if (thin1 || thin2)
-  {
-    return length >= 4; // the end of a one-pixel bar
   }
   int run1 = 0, run2 = 0;
   if ((corner1 && crossingEndsInStep(p, vertical, -1, e1, d1, run1)) ||
